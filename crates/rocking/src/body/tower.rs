@@ -1,0 +1,240 @@
+//! The rocking block (the tower above the springing level): mass, inertia about
+//! a base corner, `R`, `α` and restitution (model.md, "Bodies and symbols").
+
+use crate::error::{non_negative, positive, Error};
+
+/// Cross-section of a tower given by its outer dimensions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Section {
+    /// A uniform rectangular prism `B × D × H`.
+    Solid,
+    /// A uniform rectangular tube, outer `B × D`, open at both ends.
+    Hollow {
+        /// Wall thickness `t` (m), `0 < 2t < min(B, D)`.
+        wall_thickness: f64,
+    },
+}
+
+/// How the mass of a tower given by its geometry is known.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassInput {
+    /// The mass `m2` itself (kg), > 0.
+    Mass(f64),
+    /// The density (kg/m³), > 0; the mass is density × volume of the section.
+    Density(f64),
+}
+
+/// A tower described by its outer dimensions; turned into a [`Tower`] by
+/// [`Tower::from_geometry`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TowerGeometry {
+    /// Width `B` (m) in the plane of rocking, > 0.
+    pub width: f64,
+    /// Height `H` (m) above the rocking base, > 0.
+    pub height: f64,
+    /// Depth `D` (m) out of the plane, > 0 (default: the width).
+    pub depth: Option<f64>,
+    /// Solid or hollow section.
+    pub section: Section,
+    /// The mass, directly or as a density.
+    pub mass: MassInput,
+    /// Moment of inertia about a base corner (kg·m²); overrides the section's value.
+    pub inertia_pivot: Option<f64>,
+    /// Coefficient of restitution of the angular velocity, in `[0, 1]`; overrides Housner's.
+    pub restitution: Option<f64>,
+}
+
+/// A rigid rocking block, valid by construction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tower {
+    mass: f64,
+    inertia_pivot: f64,
+    radius: f64,
+    alpha: f64,
+    restitution: f64,
+}
+
+impl Tower {
+    /// A tower from its outer dimensions, section and mass or density
+    /// (model.md: solid `I_O = m (B² + H²) / 3`; hollow: outer prism minus inner
+    /// prism about the centroid, then `I_O = I_c + m R²`).
+    pub fn from_geometry(geometry: &TowerGeometry) -> Result<Self, Error> {
+        let width = positive("tower.width", geometry.width)?;
+        let height = positive("tower.height", geometry.height)?;
+        let depth = positive("tower.depth", geometry.depth.unwrap_or(width))?;
+        // Areas and centroidal "width² + H²" sums of the outer and (for a tube) inner prisms.
+        let (area, inertia_per_density) = match geometry.section {
+            Section::Solid => (width * depth, width * depth * height * (width * width + height * height) / 12.0),
+            Section::Hollow { wall_thickness } => {
+                let t = positive("tower.wall_thickness", wall_thickness)?;
+                if 2.0 * t >= width.min(depth) {
+                    return Err(Error::InvalidParameter {
+                        name: "tower.wall_thickness",
+                        reason: format!("{t} m leaves no hollow: twice the wall must be less than the width and the depth"),
+                    });
+                }
+                let (wi, di) = (width - 2.0 * t, depth - 2.0 * t);
+                let outer = width * depth * height * (width * width + height * height) / 12.0;
+                let inner = wi * di * height * (wi * wi + height * height) / 12.0;
+                (width * depth - wi * di, outer - inner)
+            }
+        };
+        let volume = area * height;
+        let (mass, density) = match geometry.mass {
+            MassInput::Mass(m) => {
+                let m = positive("tower.mass", m)?;
+                (m, m / volume)
+            }
+            MassInput::Density(rho) => {
+                let rho = positive("tower.density", rho)?;
+                (rho * volume, rho)
+            }
+        };
+        let (b, h) = (width / 2.0, height / 2.0);
+        let radius = b.hypot(h);
+        let inertia_pivot = match geometry.inertia_pivot {
+            Some(i) => positive("tower.inertia_pivot", i)?,
+            None => density * inertia_per_density + mass * radius * radius,
+        };
+        Self::from_properties(mass, inertia_pivot, radius, b.atan2(h), geometry.restitution)
+    }
+
+    /// A tower from its mechanical properties: mass `m2` (kg), inertia about a
+    /// base corner `I_O` (kg·m², > `m2 R²`), `R` (m) and `α` (rad, in (0, π/2)),
+    /// and optionally the restitution `r` (default: Housner's
+    /// `1 − 2 m2 R² sin²α / I_O`).
+    pub fn from_properties(mass: f64, inertia_pivot: f64, radius: f64, alpha: f64, restitution: Option<f64>) -> Result<Self, Error> {
+        let mass = positive("tower.mass", mass)?;
+        let inertia_pivot = positive("tower.inertia_pivot", inertia_pivot)?;
+        let radius = positive("tower.radius", radius)?;
+        let alpha = positive("tower.alpha", alpha)?;
+        if alpha >= std::f64::consts::FRAC_PI_2 {
+            return Err(Error::InvalidParameter {
+                name: "tower.alpha",
+                reason: format!("must be below π/2, got {alpha}"),
+            });
+        }
+        let point_inertia = mass * radius * radius;
+        if inertia_pivot <= point_inertia {
+            return Err(Error::InvalidParameter {
+                name: "tower.inertia_pivot",
+                reason: format!("{inertia_pivot} kg·m² is not above m R² = {point_inertia} kg·m² (parallel-axis theorem)"),
+            });
+        }
+        let housner = 1.0 - 2.0 * point_inertia * alpha.sin().powi(2) / inertia_pivot;
+        let restitution = match restitution {
+            Some(r) => {
+                let r = non_negative("tower.restitution", r)?;
+                if r > 1.0 {
+                    return Err(Error::InvalidParameter {
+                        name: "tower.restitution",
+                        reason: format!("must be at most 1, got {r}"),
+                    });
+                }
+                r
+            }
+            None if housner < 0.0 => {
+                return Err(Error::InvalidParameter {
+                    name: "tower.restitution",
+                    reason: format!("Housner's value {housner:.4} is negative for this squat block: give one in [0, 1]"),
+                })
+            }
+            None => housner,
+        };
+        Ok(Self {
+            mass,
+            inertia_pivot,
+            radius,
+            alpha,
+            restitution,
+        })
+    }
+
+    /// Mass `m2` (kg).
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+    /// Moment of inertia about a base corner `I_O` (kg·m²).
+    pub fn inertia_pivot(&self) -> f64 {
+        self.inertia_pivot
+    }
+    /// Distance `R` from a base corner to the centre of mass (m).
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// Slenderness angle `α = atan(b/h)` (rad).
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+    /// Half width `b = R sin α` (m).
+    pub fn half_width(&self) -> f64 {
+        self.radius * self.alpha.sin()
+    }
+    /// Height `H = 2 R cos α` (m).
+    pub fn height(&self) -> f64 {
+        2.0 * self.radius * self.alpha.cos()
+    }
+    /// Ratio of angular velocities after and before an impact, `θ̇⁺ = r θ̇⁻`.
+    /// (The ratio of kinetic energies is its square.)
+    pub fn restitution(&self) -> f64 {
+        self.restitution
+    }
+    /// Frequency parameter `p = sqrt(m2 g R / I_O)` (rad/s) for gravity `g` (m/s²).
+    pub fn frequency_parameter(&self, g: f64) -> f64 {
+        (self.mass * g * self.radius / self.inertia_pivot).sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    fn solid(width: f64, height: f64, mass: f64) -> TowerGeometry {
+        TowerGeometry {
+            width,
+            height,
+            depth: None,
+            section: Section::Solid,
+            mass: MassInput::Mass(mass),
+            inertia_pivot: None,
+            restitution: None,
+        }
+    }
+
+    /// Solid rectangle: I_O = (4/3) m R² and r = 1 − 1.5 sin²α (paper eq. 3).
+    #[test]
+    fn solid_rectangle_matches_housner() {
+        let t = Tower::from_geometry(&solid(4.0, 12.0, 1.5e5)).unwrap();
+        let r = 2f64.hypot(6.0);
+        assert_relative_eq!(t.radius(), r, max_relative = 1e-15);
+        assert_relative_eq!(t.inertia_pivot(), 4.0 / 3.0 * 1.5e5 * r * r, max_relative = 1e-14);
+        assert_relative_eq!(t.restitution(), 1.0 - 1.5 * t.alpha().sin().powi(2), max_relative = 1e-14);
+        assert_relative_eq!(t.frequency_parameter(9.81), (3.0 * 9.81 / (4.0 * r)).sqrt(), max_relative = 1e-14);
+    }
+
+    /// A tube with walls of vanishing thickness tends to a thin shell; with a
+    /// wall of half the width it would be solid. Check an intermediate one by
+    /// hand: B = D = 4, t = 1, H = 12, ρ = 1 → outer 192 kg, inner 48 kg.
+    #[test]
+    fn hollow_section_by_hand() {
+        let mut g = solid(4.0, 12.0, 1.0);
+        g.section = Section::Hollow { wall_thickness: 1.0 };
+        g.mass = MassInput::Density(1.0);
+        let t = Tower::from_geometry(&g).unwrap();
+        assert_relative_eq!(t.mass(), 144.0, max_relative = 1e-15);
+        let ic = 192.0 * (16.0 + 144.0) / 12.0 - 48.0 * (4.0 + 144.0) / 12.0;
+        assert_relative_eq!(t.inertia_pivot(), ic + 144.0 * 40.0, max_relative = 1e-14);
+    }
+
+    #[test]
+    fn rejects_bad_values() {
+        assert!(Tower::from_geometry(&solid(-1.0, 12.0, 1.0)).is_err());
+        assert!(Tower::from_geometry(&solid(1.0, f64::NAN, 1.0)).is_err());
+        let mut g = solid(4.0, 12.0, 1.0);
+        g.section = Section::Hollow { wall_thickness: 2.0 };
+        assert!(Tower::from_geometry(&g).is_err());
+        assert!(Tower::from_properties(1.0, 0.5, 1.0, 0.2, None).is_err());
+        assert!(Tower::from_properties(1.0, 2.0, 1.0, 0.2, Some(1.5)).is_err());
+    }
+}

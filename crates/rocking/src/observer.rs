@@ -1,0 +1,131 @@
+//! Observers: how a run reports its steps and events without knowing about
+//! files, plots or progress bars (argmin's `Observe` pattern).
+
+use crate::event::Event;
+use crate::ground::Piece;
+use crate::integrator::DenseOutput;
+use crate::model::Kernel;
+use crate::regime::{Motion, Pivot, Regime, State, TowerRegime};
+
+/// Receives the steps and events of a run. Every method has a no-op default.
+pub trait Observer {
+    /// Whether [`Observer::on_step`] is wanted; when false the run skips building
+    /// the dense output it would need.
+    fn wants_steps(&self) -> bool {
+        false
+    }
+    /// One stretch `[t0, t1]` of smooth motion in one regime.
+    fn on_step(&mut self, _step: &Step<'_>) {}
+    /// A regime change.
+    fn on_event(&mut self, _event: &Event) {}
+}
+
+/// The observer that observes nothing.
+impl Observer for () {}
+
+impl<A: Observer, B: Observer> Observer for (A, B) {
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps() || self.1.wants_steps()
+    }
+    fn on_step(&mut self, step: &Step<'_>) {
+        self.0.on_step(step);
+        self.1.on_step(step);
+    }
+    fn on_event(&mut self, event: &Event) {
+        self.0.on_event(event);
+        self.1.on_event(event);
+    }
+}
+
+impl<O: Observer + ?Sized> Observer for &mut O {
+    fn wants_steps(&self) -> bool {
+        (**self).wants_steps()
+    }
+    fn on_step(&mut self, step: &Step<'_>) {
+        (**self).on_step(step);
+    }
+    fn on_event(&mut self, event: &Event) {
+        (**self).on_event(event);
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Interpolant {
+    Constant([f64; 4]),
+    Dense(DenseOutput<4>),
+}
+
+/// A stretch of smooth motion: evaluate the response anywhere in `[t0, t1]`.
+#[derive(Debug, Clone, Copy)]
+pub struct Step<'a> {
+    pub(crate) kernel: &'a Kernel,
+    pub(crate) piece: Piece,
+    pub(crate) interpolant: Interpolant,
+    /// Start (s).
+    pub t0: f64,
+    /// End (s).
+    pub t1: f64,
+    /// Regime throughout the step.
+    pub regime: Regime,
+}
+
+/// The response at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// Time (s).
+    pub t: f64,
+    /// Ground acceleration (m/s²).
+    pub ground_acc: f64,
+    /// Rotation, angular velocity, slip and slip velocity.
+    pub state: State,
+    /// `θ̈` (rad/s²).
+    pub theta_ddot: f64,
+    /// `ü` (m/s²).
+    pub slip_acc: f64,
+    /// Horizontal displacement of the top centre relative to the building (m).
+    pub top_dx: f64,
+    /// Absolute horizontal acceleration of the top centre (m/s²).
+    pub top_abs_acc: f64,
+    /// Combined motion.
+    pub motion: Motion,
+    pivot: Option<Pivot>,
+}
+
+impl Step<'_> {
+    /// The response at `t` in `[t0, t1]`.
+    pub fn sample(&self, t: f64) -> Sample {
+        let y = match self.interpolant {
+            Interpolant::Constant(y) => y,
+            Interpolant::Dense(d) => d.state(t),
+        };
+        let a_g = self.piece.eval(t);
+        let acc = self.kernel.accelerations(self.regime, a_g, &y);
+        let pivot = match self.regime.tower {
+            TowerRegime::Rest => None,
+            TowerRegime::Rocking(p) => Some(p),
+        };
+        let (top_dx, top_abs_acc) = self.kernel.point(pivot, 0.0, self.kernel.height, &y, acc, a_g);
+        Sample {
+            t,
+            ground_acc: a_g,
+            state: State::from_array(y),
+            theta_ddot: acc.theta,
+            slip_acc: acc.slip,
+            top_dx,
+            top_abs_acc,
+            motion: self.regime.motion(),
+            pivot,
+        }
+    }
+
+    /// Displacement relative to the building (m) and absolute horizontal
+    /// acceleration (m/s²) of the tower point `(x, y)` (m, origin at the base
+    /// centre) in `sample`, which must come from this step.
+    pub fn point(&self, sample: &Sample, x: f64, y: f64) -> (f64, f64) {
+        let acc = crate::model::Accelerations {
+            theta: sample.theta_ddot,
+            slip: sample.slip_acc,
+        };
+        self.kernel.point(sample.pivot, x, y, &sample.state.to_array(), acc, sample.ground_acc)
+    }
+}

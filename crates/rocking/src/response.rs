@@ -1,0 +1,148 @@
+//! The summary of a run: peaks located on the dense output, counts and times.
+
+use crate::model::{Accelerations, Kernel};
+use crate::regime::{Motion, Regime, TowerRegime};
+
+/// Why a run ended (diffsol's `OdeSolverStopReason`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EndReason {
+    /// The requested duration was reached.
+    EndOfDuration,
+    /// The tower overturned (`|θ| = π/2`).
+    Overturned,
+}
+
+/// What a run found. Angles in rad, lengths in m, times in s, accelerations in m/s².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Summary {
+    /// Peak `|θ|`, located where `θ̇ = 0` (rad).
+    pub max_abs_theta: f64,
+    /// Largest and smallest `θ` (rad).
+    pub theta_range: (f64, f64),
+    /// Peak `|u|` (m).
+    pub max_abs_slip: f64,
+    /// `u` at the end of the run (m).
+    pub final_slip: f64,
+    /// Number of impacts.
+    pub impacts: u64,
+    /// When the tower overturned, if it did.
+    pub overturn_time: Option<f64>,
+    /// First uplift of the tower.
+    pub first_uplift_time: Option<f64>,
+    /// First slip of the building.
+    pub first_slip_time: Option<f64>,
+    /// Peak `|top_dx|`, horizontal displacement of the top centre relative to the building (m).
+    pub max_top_displacement: f64,
+    /// Peak absolute horizontal acceleration of the top centre (m/s²).
+    pub max_top_abs_acceleration: f64,
+    /// Peak `|f_x| / f_y` at the pivot (Shenton's demand on the tower's own friction).
+    pub max_pivot_friction_demand: f64,
+    /// Whether the vertical pivot reaction `f_y` became negative (the tower would fly).
+    pub tower_uplift_detected: bool,
+    /// Time spent in each [`Motion`], indexed by [`Motion::index`] (s).
+    pub time_in_motion: [f64; 4],
+    /// End of the run (s).
+    pub end_time: f64,
+    /// Why it ended.
+    pub end_reason: EndReason,
+    /// Number of regime changes.
+    pub events: u64,
+    /// Right-hand side evaluations.
+    pub evaluations: u64,
+}
+
+impl Summary {
+    /// Whether the tower overturned.
+    pub fn overturned(&self) -> bool {
+        self.end_reason == EndReason::Overturned
+    }
+    /// Time in one motion (s).
+    pub fn time_in(&self, motion: Motion) -> f64 {
+        self.time_in_motion[motion.index()]
+    }
+}
+
+/// Accumulates the summary during a run.
+#[derive(Debug, Clone)]
+pub(crate) struct Tracker {
+    pub(crate) summary: Summary,
+}
+
+impl Tracker {
+    pub(crate) fn new() -> Self {
+        Self {
+            summary: Summary {
+                max_abs_theta: 0.0,
+                theta_range: (0.0, 0.0),
+                max_abs_slip: 0.0,
+                final_slip: 0.0,
+                impacts: 0,
+                overturn_time: None,
+                first_uplift_time: None,
+                first_slip_time: None,
+                max_top_displacement: 0.0,
+                max_top_abs_acceleration: 0.0,
+                max_pivot_friction_demand: 0.0,
+                tower_uplift_detected: false,
+                time_in_motion: [0.0; 4],
+                end_time: 0.0,
+                end_reason: EndReason::EndOfDuration,
+                events: 0,
+                evaluations: 0,
+            },
+        }
+    }
+
+    /// A value of `θ` and `u` reached (at a step end, an extremum or an event).
+    #[inline]
+    pub(crate) fn displacement(&mut self, theta: f64, slip: f64) {
+        let s = &mut self.summary;
+        s.max_abs_theta = s.max_abs_theta.max(theta.abs());
+        s.theta_range = (s.theta_range.0.min(theta), s.theta_range.1.max(theta));
+        s.max_abs_slip = s.max_abs_slip.max(slip.abs());
+    }
+
+    /// The instantaneous checks: top acceleration and pivot reactions.
+    #[inline]
+    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, y: &[f64; 4], acc: Accelerations) {
+        self.displacement(y[0], y[2]);
+        if !kernel.has_tower {
+            return;
+        }
+        let pivot = match regime.tower {
+            TowerRegime::Rest => None,
+            TowerRegime::Rocking(p) => Some(p),
+        };
+        let (_, top_acc) = kernel.point(pivot, 0.0, kernel.height, y, acc, a_g);
+        let (fx, fy) = kernel.pivot_reaction(pivot, y, acc, a_g);
+        let s = &mut self.summary;
+        s.max_top_abs_acceleration = s.max_top_abs_acceleration.max(top_acc.abs());
+        if fy > 0.0 {
+            s.max_pivot_friction_demand = s.max_pivot_friction_demand.max(fx.abs() / fy);
+        } else {
+            s.tower_uplift_detected = true;
+        }
+    }
+
+    /// Time spent in one motion.
+    #[inline]
+    pub(crate) fn time(&mut self, motion: Motion, dt: f64) {
+        self.summary.time_in_motion[motion.index()] += dt;
+    }
+
+    /// Closes the summary at the end of the run.
+    pub(crate) fn finish(mut self, kernel: &Kernel, t: f64, y: &[f64; 4]) -> Summary {
+        self.displacement(y[0], y[2]);
+        let s = &mut self.summary;
+        s.end_time = t;
+        s.final_slip = y[2];
+        // The top displacement relative to the building grows monotonically with θ
+        // for |θ| < π/2, so its peaks are at the extremes of θ.
+        let top = |theta: f64| {
+            let b = kernel.half_width * theta.signum();
+            b * (1.0 - theta.cos()) + kernel.height * theta.sin()
+        };
+        s.max_top_displacement = top(s.theta_range.0).abs().max(top(s.theta_range.1).abs());
+        self.summary
+    }
+}
