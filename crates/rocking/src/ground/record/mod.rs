@@ -4,6 +4,7 @@
 mod at2;
 mod csv;
 mod esm;
+mod scan;
 
 use super::{Piece, Segment};
 
@@ -200,5 +201,59 @@ impl Record {
             piece: Piece::Linear { t0, a0: self.values[k], slope },
             end: t1,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// A file of the shared El Centro 1940 record, or `None` (with a note) when it is absent.
+    fn elcentro(extension: &str) -> Option<String> {
+        let path = format!("{}/../../../shared/data/records/elcentro_1940_ns.{extension}", env!("CARGO_MANIFEST_DIR"));
+        match std::fs::read_to_string(&path) {
+            Ok(text) => Some(text),
+            Err(e) => {
+                eprintln!("skipped: cannot read {path}: {e}");
+                None
+            }
+        }
+    }
+
+    #[test]
+    fn el_centro_at2() {
+        let Some(text) = elcentro("AT2") else { return };
+        assert_eq!(Record::guess_format(&text), Ok(RecordFormat::At2));
+        let record = Record::parse(&text, None, &CsvOptions::default(), 9.81).expect("valid AT2");
+        assert_eq!(record.len(), 1559);
+        assert_relative_eq!(record.time_step().expect("uniform"), 0.02, max_relative = 1e-12);
+        let (peak, t) = record.peak();
+        assert_relative_eq!(peak / 9.81, 0.31882, max_relative = 1e-12);
+        assert_relative_eq!(t, 2.02, max_relative = 1e-12);
+        // The peak is negative: -0.31882 g, sample 101.
+        assert_relative_eq!(record.values()[101] / 9.81, -0.31882, max_relative = 1e-12);
+    }
+
+    #[test]
+    fn el_centro_esm_equals_at2() {
+        let (Some(at2), Some(esm)) = (elcentro("AT2"), elcentro("ASC")) else { return };
+        assert_eq!(Record::guess_format(&esm), Ok(RecordFormat::Esm));
+        let at2 = Record::parse(&at2, Some(RecordFormat::At2), &CsvOptions::default(), 9.81).expect("valid AT2");
+        let esm = Record::parse(&esm, None, &CsvOptions::default(), 9.81).expect("valid ESM");
+        assert_eq!(esm.len(), 1559);
+        assert_relative_eq!(esm.time_step().expect("uniform"), 0.02, max_relative = 1e-12);
+        // Both in g: the ESM file was written with 981 cm/s² per g.
+        for (e, a) in esm.values().iter().zip(at2.values()) {
+            assert_relative_eq!(e * 100.0 / 981.0, a / 9.81, max_relative = 1e-6);
+        }
+    }
+
+    #[test]
+    fn guesses_each_format() {
+        assert_eq!(Record::guess_format("a\nb\nc\nNPTS=  2, DT= .01 SEC\n1.0 2.0\n"), Ok(RecordFormat::At2));
+        assert_eq!(Record::guess_format("EVENT_NAME: X\nSAMPLING_INTERVAL_S: 0.01\n"), Ok(RecordFormat::Esm));
+        assert_eq!(Record::guess_format("time,acc\n0.0,0.1\n"), Ok(RecordFormat::Csv));
+        assert!(matches!(Record::guess_format("some text\nmore text\n"), Err(RecordError::Invalid(_))));
     }
 }
