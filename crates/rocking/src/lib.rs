@@ -41,6 +41,7 @@ pub mod reference;
 mod regime;
 mod response;
 mod simulate;
+mod trig;
 
 pub use body::{Building, MassInput, NormalForce, Section, Tower, TowerGeometry};
 pub use error::Error;

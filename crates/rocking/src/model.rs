@@ -12,6 +12,7 @@
 use crate::body::{Building, NormalForce, Tower};
 use crate::error::{positive, Error};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, TowerRegime};
+use crate::trig::sin_cos;
 
 /// A tower, a building, or both, under gravity `g`. Valid by construction.
 #[derive(Debug, Clone, PartialEq)]
@@ -159,7 +160,7 @@ impl Kernel {
             },
             (TowerRegime::Rocking(pivot), BuildingRegime::Stick) => {
                 let s = pivot.sign();
-                let (sin_phi, cos_phi) = (self.alpha - s * y[0]).sin_cos();
+                let (sin_phi, cos_phi) = sin_cos(self.alpha - s * y[0]);
                 // (T) with Ẍ_p = a_g: Housner's equation.
                 Accelerations {
                     theta: -self.k * (s * self.g * sin_phi + a_g * cos_phi),
@@ -173,7 +174,7 @@ impl Kernel {
     /// (T)–(B) with `F = −μk σ N`: a linear 2×2 system in `(θ̈, Ẍ_p)`, solved directly.
     #[inline]
     fn rocking_on_slip(&self, s: f64, sigma: f64, a_g: f64, y: &[f64; 4]) -> Accelerations {
-        let (sin_phi, cos_phi) = (self.alpha - s * y[0]).sin_cos();
+        let (sin_phi, cos_phi) = sin_cos(self.alpha - s * y[0]);
         let w2 = y[1] * y[1];
         let c = self.m2r * cos_phi;
         let friction = self.mu_k * sigma;
@@ -200,7 +201,7 @@ impl Kernel {
             TowerRegime::Rest => (self.total * a_g, self.total * self.g),
             TowerRegime::Rocking(pivot) => {
                 let s = pivot.sign();
-                let (sin_phi, cos_phi) = (self.alpha - s * y[0]).sin_cos();
+                let (sin_phi, cos_phi) = sin_cos(self.alpha - s * y[0]);
                 let w2 = y[1] * y[1];
                 let theta_dd = -self.k * (s * self.g * sin_phi + a_g * cos_phi);
                 let force = self.total * a_g + self.m2r * (cos_phi * theta_dd + s * sin_phi * w2);
@@ -238,7 +239,7 @@ impl Kernel {
         let base = a_g + acc.slip;
         let Some(pivot) = pivot else { return (0.0, base) };
         let xr = x - pivot.sign() * self.half_width;
-        let (sin_t, cos_t) = state[0].sin_cos();
+        let (sin_t, cos_t) = sin_cos(state[0]);
         let dx = cos_t * xr + sin_t * yp - xr;
         let lever = -sin_t * xr + cos_t * yp;
         let centripetal = cos_t * xr + sin_t * yp;
@@ -252,7 +253,7 @@ impl Kernel {
         let acc_pivot = a_g + acc.slip;
         let Some(pivot) = pivot else { return (acc_pivot, self.g) };
         let s = pivot.sign();
-        let (sin_phi, cos_phi) = (self.alpha - s * state[0]).sin_cos();
+        let (sin_phi, cos_phi) = sin_cos(self.alpha - s * state[0]);
         let w2 = state[1] * state[1];
         let fx = acc_pivot + self.radius * (cos_phi * acc.theta + s * sin_phi * w2);
         let fy = self.g + self.radius * (s * sin_phi * acc.theta - cos_phi * w2);

@@ -49,6 +49,9 @@ impl<O: Observer + ?Sized> Observer for &mut O {
     }
 }
 
+/// How a step's states are evaluated. Lives on the stack for one call, so the
+/// size difference of the variants costs nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Interpolant {
     Constant([f64; 4]),

@@ -55,6 +55,29 @@ pub fn sliding_block_rectangular_pulse(a0: f64, td: f64, mu_kinetic: f64, g: f64
     -(excess * td * td / 2.0 + (excess * td).powi(2) / (2.0 * mu_kinetic * g))
 }
 
+/// The shortest rectangular pulse `a0 = ratio · g` (towards `+x`, `ratio > tan α`)
+/// that overturns a block at rest on a fixed base (s).
+///
+/// During the pulse, with `ψ = −θ >= 0` (no impact can occur: `ψ` grows),
+/// energy gives `½ ψ̇² = p² [a (sin α − sin(α − ψ)) + cos α − cos(α − ψ)]`, `a = a0/g`.
+/// After it, free rocking overturns iff `½ ψ̇² + p² cos(α − ψ) >= p²`, which at
+/// the pulse's end holds with equality for `sin(α − ψ1) = sin α − (1 − cos α)/a`.
+/// The critical duration is the time to reach `ψ1`, by quadrature (substitution
+/// `ψ = ψ1 v²` removes the start's `1/sqrt(ψ)` singularity).
+pub fn rectangular_pulse_overturning_duration(p: f64, alpha: f64, ratio: f64) -> f64 {
+    let psi1 = alpha - (alpha.sin() - (1.0 - alpha.cos()) / ratio).asin();
+    let speed2 = |psi: f64| 2.0 * p * p * (ratio * (alpha.sin() - (alpha - psi).sin()) + alpha.cos() - (alpha - psi).cos());
+    let integrand = |v: f64| {
+        if v == 0.0 {
+            // ψ̇² ≈ 2 p² (a cos α − sin α) ψ near ψ = 0.
+            2.0 * psi1.sqrt() / (2.0 * p * p * (ratio * alpha.cos() - alpha.sin())).sqrt()
+        } else {
+            2.0 * psi1 * v / speed2(psi1 * v * v).sqrt()
+        }
+    };
+    gauss_legendre(integrand, 0.0, 1.0, 40)
+}
+
 /// Composite 5-point Gauss–Legendre rule on `[a, b]` with `panels` panels.
 fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
     const X: [f64; 5] = [

@@ -312,7 +312,8 @@ impl<O: Observer> Run<'_, O> {
                 continue;
             }
             let d = *dense.get_or_insert_with(|| self.stepper.dense(&mut rhs));
-            let value = |t: f64| condition_value(&kernel, c, regime, piece.eval(t), &d.state(t));
+            let ground = c.uses_ground();
+            let value = |t: f64| condition_value(&kernel, c, regime, if ground { piece.eval(t) } else { 0.0 }, &d.state(t));
             let tb = if v0 < 0.0 {
                 find_crossing(value, t0, v0, t1, v1).tb
             } else {
@@ -502,6 +503,12 @@ impl<O: Observer> Run<'_, O> {
 }
 
 impl Condition {
+    /// Whether the condition depends on the ground acceleration (else it is
+    /// evaluated without computing `a_g`, which saves a sine in root finding).
+    fn uses_ground(self) -> bool {
+        !matches!(self, Condition::Impact | Condition::Overturn | Condition::SlipStop)
+    }
+
     fn name(self) -> &'static str {
         match self {
             Condition::UpliftNegative | Condition::UpliftPositive => "uplift",

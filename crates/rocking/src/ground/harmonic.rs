@@ -2,7 +2,7 @@
 //! for `0 <= t < duration`, then zero.
 
 use super::{next_periodic, Piece, Segment};
-use crate::error::{finite, non_negative, positive, Error};
+use crate::error::{finite, positive, Error};
 use std::f64::consts::PI;
 
 /// `a_g = A sin(2π f t + φ)` during `duration`, zero afterwards.
@@ -15,10 +15,11 @@ pub struct Harmonic {
 }
 
 impl Harmonic {
-    /// Amplitude `A` (m/s², >= 0), frequency `f` (Hz, > 0), duration (s, > 0), phase `φ` (rad).
+    /// Amplitude `A` (m/s², any sign: a negative one mirrors the motion),
+    /// frequency `f` (Hz, > 0), duration (s, > 0), phase `φ` (rad).
     pub fn new(amplitude: f64, frequency: f64, duration: f64, phase: f64) -> Result<Self, Error> {
         Ok(Self {
-            amplitude: non_negative("ground.amplitude", amplitude)?,
+            amplitude: finite("ground.amplitude", amplitude)?,
             frequency: positive("ground.frequency", frequency)?,
             duration: positive("ground.duration", duration)?,
             phase: finite("ground.phase", phase)?,

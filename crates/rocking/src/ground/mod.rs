@@ -52,7 +52,7 @@ impl Piece {
     pub(crate) fn eval(&self, t: f64) -> f64 {
         match *self {
             Piece::Constant(a) => a,
-            Piece::Sine { amplitude, omega, phase } => amplitude * (omega * t + phase).sin(),
+            Piece::Sine { amplitude, omega, phase } => amplitude * crate::trig::sin(omega * t + phase),
             Piece::Linear { t0, a0, slope } => a0 + slope * (t - t0),
             Piece::Ricker { amplitude, pi_f, t0 } => {
                 let x = (pi_f * (t - t0)).powi(2);

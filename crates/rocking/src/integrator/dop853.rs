@@ -10,6 +10,9 @@
 //!
 //! The state is a fixed-size array: no allocation in the inner loop.
 
+// Component loops index several arrays at once; iterators would hide the formulas.
+#![allow(clippy::needless_range_loop)]
+
 use super::dop853_tableau::{A, B, C, D, E3, E5};
 
 /// Number of stages of the 8(5,3) pair.
@@ -18,8 +21,6 @@ const STAGES: usize = 12;
 const SAFETY: f64 = 0.9;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 10.0;
-/// The controller's error exponent, `-1/(order + 1)` for the 7th-order estimate.
-const ERROR_EXPONENT: f64 = -1.0 / 8.0;
 
 /// Why a step could not be taken.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -78,7 +79,8 @@ pub(crate) struct Dop853<const N: usize> {
     /// Stages of the last accepted step; index 12 is `f` at its end, 13..15 the dense stages.
     k: [[f64; N]; 16],
     dense: Option<DenseOutput<N>>,
-    /// Number of right-hand side evaluations so far.
+    /// Number of right-hand side evaluations so far by the stepping itself (the
+    /// dense output's extra stages are not counted: they depend on what is observed).
     pub(crate) evaluations: u64,
 }
 
@@ -156,10 +158,15 @@ impl<const N: usize> Dop853<N> {
                 return Err(StepFailure::StepSizeTooSmall { time: t });
             }
             self.k[0] = self.f;
-            for s in 1..STAGES {
-                let ys = self.combine(s, h);
-                self.k[s] = rhs(t + C[s] * h, &ys);
+            // Stage by stage with constant indices, so the compiler drops the zero
+            // entries of the tableau.
+            macro_rules! stages {
+                ($($s:literal)*) => {$(
+                    let ys = combine::<N, $s>(&self.y, &self.k, h);
+                    self.k[$s] = rhs(t + C[$s] * h, &ys);
+                )*};
             }
+            stages!(1 2 3 4 5 6 7 8 9 10 11);
             let mut y_new = self.y;
             for (s, b) in B.iter().enumerate() {
                 for j in 0..N {
@@ -182,7 +189,7 @@ impl<const N: usize> Dop853<N> {
                 let mut factor = if err == 0.0 {
                     MAX_FACTOR
                 } else {
-                    (SAFETY * err.powf(ERROR_EXPONENT)).min(MAX_FACTOR)
+                    (SAFETY * error_factor(err)).min(MAX_FACTOR)
                 };
                 if rejected {
                     factor = factor.min(1.0);
@@ -197,23 +204,9 @@ impl<const N: usize> Dop853<N> {
                 self.dense = None;
                 return Ok(());
             }
-            self.h = h * (SAFETY * err.powf(ERROR_EXPONENT)).max(MIN_FACTOR);
+            self.h = h * (SAFETY * error_factor(err)).max(MIN_FACTOR);
             rejected = true;
         }
-    }
-
-    /// `y + h Σ a_si k_i` for stage `s`.
-    #[inline]
-    fn combine(&self, s: usize, h: f64) -> [f64; N] {
-        let mut ys = self.y;
-        for (i, a) in A[s][..s].iter().enumerate() {
-            if *a != 0.0 {
-                for j in 0..N {
-                    ys[j] += h * a * self.k[i][j];
-                }
-            }
-        }
-        ys
     }
 
     /// Hairer's combined 5th/3rd-order error estimate, scaled by `atol + rtol |y|`.
@@ -255,18 +248,13 @@ impl<const N: usize> Dop853<N> {
         }
         // The step's stages were computed from y_old; `combine` works from `self.y`,
         // so form the extra stages explicitly.
-        for s in STAGES + 1..16 {
-            let mut ys = self.y_old;
-            for (i, a) in A[s][..s].iter().enumerate() {
-                if *a != 0.0 {
-                    for j in 0..N {
-                        ys[j] += h * a * self.k[i][j];
-                    }
-                }
-            }
-            self.k[s] = rhs(self.t_old + C[s] * h, &ys);
+        macro_rules! stages {
+            ($($s:literal)*) => {$(
+                let ys = combine::<N, $s>(&self.y_old, &self.k, h);
+                self.k[$s] = rhs(self.t_old + C[$s] * h, &ys);
+            )*};
         }
-        self.evaluations += 3;
+        stages!(13 14 15);
         let mut f = [[0.0; N]; 7];
         for j in 0..N {
             let dy = self.y[j] - self.y_old[j];
@@ -292,6 +280,28 @@ impl<const N: usize> Dop853<N> {
         self.dense = Some(d);
         d
     }
+}
+
+/// `y + h Σ_i a_Si k_i`, the argument of stage `S`.
+#[inline(always)]
+fn combine<const N: usize, const S: usize>(y: &[f64; N], k: &[[f64; N]; 16], h: f64) -> [f64; N] {
+    let mut ys = *y;
+    for i in 0..S {
+        let a = A[S][i];
+        if a != 0.0 {
+            for j in 0..N {
+                ys[j] += h * a * k[i][j];
+            }
+        }
+    }
+    ys
+}
+
+/// `err^(-1/8)`, the controller's exponent `-1/(order + 1)` for the 7th-order
+/// estimate, as three square roots (cheaper than `powf`).
+#[inline]
+fn error_factor(err: f64) -> f64 {
+    1.0 / err.sqrt().sqrt().sqrt()
 }
 
 /// Root mean square of a small array.

@@ -109,8 +109,8 @@ fn check_times(rows: &[(usize, Vec<f64>)]) -> Result<(), RecordError> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use super::super::AccelerationUnit;
+    use super::*;
     use approx::assert_relative_eq;
 
     const G: f64 = 9.81;

@@ -172,7 +172,7 @@ impl Record {
     pub fn duration(&self) -> f64 {
         self.times[self.times.len() - 1]
     }
-    /// Peak `|a|` (m/s²), with its sign kept, and its time (s): `(|peak|, t)`.
+    /// Peak `|a|` (m/s²) and its time (s); the sign is in [`Record::values`].
     pub fn peak(&self) -> (f64, f64) {
         let (k, v) = self
             .values
