@@ -1,0 +1,140 @@
+//! `rocking check SCENARIO.toml`: validates a scenario (reading its record, if
+//! any) and prints the derived quantities, without running it.
+
+use crate::format::sig;
+use rocking::NormalForce;
+use rocking_scenario::{record_format_name, Case, GroundKind};
+use std::fmt::Write;
+use std::path::PathBuf;
+
+/// Arguments of `rocking check`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The scenario file (TOML).
+    pub scenario: PathBuf,
+}
+
+/// Validates and prints.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let scenario = super::load_scenario(&args.scenario)?;
+    let case = scenario.build()?;
+    super::print(&describe(&case))
+}
+
+/// The derived quantities of a case, one topic per paragraph.
+fn describe(case: &Case) -> String {
+    let mut out = String::new();
+    let g = case.model.gravity();
+    let deg = 180.0 / std::f64::consts::PI;
+    // Writing to a String cannot fail.
+    let _ = writeln!(out, "scenario    {} ({})", case.name, case.file.display());
+    let d = case.model.derived();
+    match case.model.tower() {
+        Some(t) => {
+            let _ = writeln!(out, "tower       m2 = {} kg, I_O = {} kg·m²", sig(t.mass(), 6), sig(t.inertia_pivot(), 6));
+            let _ = writeln!(
+                out,
+                "            α = {} rad = {}°, R = {} m, p = {} rad/s, r = {}",
+                sig(t.alpha(), 6),
+                sig(t.alpha() * deg, 6),
+                sig(t.radius(), 6),
+                sig(t.frequency_parameter(g), 6),
+                sig(t.restitution(), 6)
+            );
+            let tan = t.alpha().tan();
+            let _ = writeln!(out, "            uplift acceleration tan α = {} g = {} m/s²", sig(tan, 6), sig(tan * g, 6));
+            for (k, (x, y)) in case.points.iter().enumerate() {
+                let _ = writeln!(out, "            point p{} = ({}, {}) m", k + 1, sig(*x, 6), sig(*y, 6));
+            }
+        }
+        None => {
+            let _ = writeln!(out, "tower       none");
+        }
+    }
+    match case.model.building() {
+        Some(b) => {
+            let normal = match b.normal_force() {
+                NormalForce::Constant => "constant",
+                NormalForce::Dynamic => "dynamic",
+            };
+            let _ = writeln!(
+                out,
+                "building    m1 = {} kg, M = {} kg, μs = {}, μk = {}, normal force {normal}",
+                sig(b.mass(), 6),
+                sig(d.sliding_mass.unwrap_or(b.mass()), 6),
+                sig(b.mu_static(), 6),
+                sig(b.mu_kinetic(), 6)
+            );
+            let _ = writeln!(
+                out,
+                "            slip acceleration μs = {} g = {} m/s²",
+                sig(b.mu_static(), 6),
+                sig(b.mu_static() * g, 6)
+            );
+        }
+        None => {
+            let _ = writeln!(out, "building    none (fixed base)");
+        }
+    }
+    let info = &case.ground_info;
+    let mut motion = vec![info.kind.as_str().to_string()];
+    if let Some(a) = info.amplitude_g {
+        motion.push(format!("amplitude {} g = {} m/s²", sig(a, 6), sig(a * g, 6)));
+    }
+    if let Some(f) = info.frequency_hz {
+        motion.push(format!("frequency {} Hz", sig(f, 6)));
+    }
+    if let Some(phase) = info.phase_rad {
+        motion.push(format!("phase {} rad", sig(phase, 6)));
+    }
+    if let Some(t0) = info.t0_s {
+        motion.push(format!("t0 = {} s", sig(t0, 6)));
+    }
+    if let Some(end) = info.end_time_s {
+        motion.push(format!("until t = {} s", sig(end, 6)));
+    }
+    let _ = writeln!(out, "ground      {}", motion.join(", "));
+    if let Some(r) = &info.record {
+        let step = r
+            .time_step_s
+            .map_or_else(|| "uneven time step".to_string(), |dt| format!("dt = {} s", sig(dt, 6)));
+        let _ = writeln!(
+            out,
+            "            record {} ({}): {} samples, {step}, duration {} s, scale {}",
+            r.file.display(),
+            record_format_name(r.format),
+            r.samples,
+            sig(r.duration_s, 6),
+            sig(r.scale, 6)
+        );
+    }
+    if info.kind != GroundKind::None {
+        let (peak, at) = case.ground.peak();
+        let _ = writeln!(
+            out,
+            "            peak |a_g| = {} g = {} m/s² at t = {} s",
+            sig(peak / g, 6),
+            sig(peak, 6),
+            sig(at, 6)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "initial     θ = {} rad, θ̇ = {} rad/s",
+        sig(case.initial.theta, 6),
+        sig(case.initial.theta_dot, 6)
+    );
+    let s = &case.settings;
+    let rows = (s.duration / case.output_dt + 1e-9).floor() + 1.0;
+    let _ = writeln!(
+        out,
+        "simulation  duration {} s, g = {} m/s², output every {} s ({} history rows), rtol {}, atol {}",
+        sig(s.duration, 6),
+        sig(g, 6),
+        sig(case.output_dt, 6),
+        rows,
+        sig(s.rtol, 3),
+        sig(s.atol, 3)
+    );
+    out
+}

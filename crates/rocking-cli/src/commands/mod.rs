@@ -1,0 +1,25 @@
+//! One file per subcommand; each has its clap `Args` and an `execute`.
+
+pub mod check;
+pub mod run;
+
+use anyhow::Context;
+use rocking_scenario::Scenario;
+use std::io::Write;
+use std::path::Path;
+
+/// Reads and validates a scenario file.
+pub fn load_scenario(path: &Path) -> anyhow::Result<Scenario> {
+    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    // The scenario's errors already name the file, the key and the cause.
+    Ok(Scenario::from_toml_str(&text, path)?)
+}
+
+/// Writes `text` to stdout; a closed pipe (`rocking check x.toml | head -1`) is not an error.
+pub fn print(text: &str) -> anyhow::Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e).context("writing to stdout"),
+        _ => Ok(()),
+    }
+}

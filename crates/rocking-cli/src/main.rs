@@ -1,0 +1,56 @@
+//! `rocking`: the seismic response of a rigid tower rocking on a building that
+//! may slide on its foundation (Housner's rocking block on a Coulomb slider).
+//!
+//! ```text
+//! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
+//! rocking check SCENARIO.toml                      # validate, print derived quantities
+//! ```
+//!
+//! Exit status: 0 on success, 1 on an input or physics error (one line on
+//! stderr naming the file, the key and what is wrong), 2 on bad usage.
+
+mod commands;
+mod format;
+mod output;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Rocking of a slender rigid tower on a building that may slide on its foundation, under horizontal ground acceleration.
+#[derive(Debug, Parser)]
+#[command(name = "rocking", version, about, long_about = None)]
+#[command(after_help = "Exit status: 0 on success, 1 on an input or physics error (one line on stderr), 2 on bad usage.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run one scenario: writes summary.json, history.csv and events.csv.
+    Run(commands::run::Args),
+    /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
+    Check(commands::check::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // --help and --version print to stdout and exit 0; usage errors exit 2.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
+    let result = match &cli.command {
+        Command::Run(args) => commands::run::execute(args),
+        Command::Check(args) => commands::check::execute(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,216 @@
+//! Errors of a scenario: each names the file, the dotted key and what is wrong,
+//! on one line (`examples/tower.toml: tower.width: must be a finite number > 0, got -4`).
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A scenario that cannot be read, built or run.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {fault}", .file.display())]
+pub struct Error {
+    /// The scenario file (or the origin given for a table or a JSON value).
+    pub file: PathBuf,
+    /// The key and what is wrong with it.
+    pub fault: Fault,
+}
+
+impl Error {
+    /// The dotted key at fault (`tower.width`), if there is one.
+    pub fn key(&self) -> Option<&str> {
+        self.fault.key.as_deref()
+    }
+    /// What is wrong.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.fault.kind
+    }
+}
+
+/// What is wrong with which key, before the file is known.
+#[derive(Debug, thiserror::Error)]
+pub struct Fault {
+    /// The dotted key (`ground.frequency`), `None` for a fault of the whole file (a syntax error).
+    pub key: Option<String>,
+    /// What is wrong.
+    pub kind: ErrorKind,
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.key {
+            Some(key) => write!(f, "{key}: {}", self.kind),
+            None => write!(f, "{}", self.kind),
+        }
+    }
+}
+
+impl Fault {
+    /// A fault of `key`.
+    pub(crate) fn new(key: impl Into<String>, kind: ErrorKind) -> Self {
+        Self { key: Some(key.into()), kind }
+    }
+    /// `key` has a value out of its range.
+    pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
+        Self::new(key, ErrorKind::Invalid(reason.into()))
+    }
+    /// The error of this fault in `file`.
+    pub(crate) fn in_file(self, file: &Path) -> Error {
+        Error {
+            file: file.to_path_buf(),
+            fault: self,
+        }
+    }
+}
+
+/// The classes of scenario errors.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// The file is not valid TOML (or the JSON value not an object).
+    #[error("line {line}, column {column}: {message}")]
+    Syntax {
+        /// 1-based line.
+        line: usize,
+        /// 1-based column (in characters).
+        column: usize,
+        /// What the parser found, on one line.
+        message: String,
+    },
+    /// A value of the wrong TOML type.
+    #[error("expected {expected}, got {got}")]
+    WrongType {
+        /// What the key takes ("a number").
+        expected: &'static str,
+        /// What it was given ("a string").
+        got: &'static str,
+    },
+    /// A key that no section of this kind has (a typo).
+    #[error("unknown key{}; valid keys: {}", did_you_mean(.suggestion), .valid.join(", "))]
+    UnknownKey {
+        /// The closest valid key, if one is close.
+        suggestion: Option<&'static str>,
+        /// The keys the section takes.
+        valid: Vec<&'static str>,
+    },
+    /// A section the scenario does not have.
+    #[error("unknown section{}; valid sections: {}", did_you_mean(.suggestion), .valid.join(", "))]
+    UnknownSection {
+        /// The closest valid section, if one is close.
+        suggestion: Option<&'static str>,
+        /// The sections a scenario takes.
+        valid: Vec<&'static str>,
+    },
+    /// A required key or section is absent.
+    #[error("{0}")]
+    Missing(String),
+    /// A key that exists but does not apply here (`frequency` with `type = "record"`),
+    /// or two keys that exclude each other.
+    #[error("{0}")]
+    NotApplicable(String),
+    /// A value outside its valid range.
+    #[error("{0}")]
+    Invalid(String),
+    /// An input file (a ground-motion record) cannot be read.
+    #[error("cannot read {}: {reason}", .path.display())]
+    Read {
+        /// The file, resolved against the scenario's folder.
+        path: PathBuf,
+        /// Why (the operating system's message).
+        reason: String,
+    },
+    /// A ground-motion record is malformed.
+    #[error("{}: {source}", .path.display())]
+    Record {
+        /// The file, resolved against the scenario's folder.
+        path: PathBuf,
+        /// What is wrong, with the line where there is one.
+        source: rocking::RecordError,
+    },
+    /// The simulation failed (a numerical failure, not an input error).
+    #[error(transparent)]
+    Simulation(rocking::Error),
+}
+
+fn did_you_mean(s: &Option<&'static str>) -> String {
+    s.map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+}
+
+impl From<rocking::Error> for Fault {
+    /// A library error: its parameter name is already the dotted scenario key.
+    fn from(e: rocking::Error) -> Self {
+        match e {
+            rocking::Error::InvalidParameter { name, reason } => Fault::invalid(name, reason),
+            other => Fault {
+                key: None,
+                kind: ErrorKind::Simulation(other),
+            },
+        }
+    }
+}
+
+/// The message of an I/O error without Rust's ` (os error 2)` suffix.
+pub(crate) fn io_reason(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.find(" (os error ") {
+        Some(i) => text[..i].to_string(),
+        None => text,
+    }
+}
+
+/// The closest of `candidates` to `word` within two edits, for "did you mean".
+pub(crate) fn closest(word: &str, candidates: &[&'static str]) -> Option<&'static str> {
+    candidates
+        .iter()
+        .map(|&c| (edit_distance(word, c), c))
+        .filter(|&(d, c)| d <= 2 && d < c.chars().count())
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
+/// Levenshtein distance with adjacent transpositions counted as one edit (`hieght` → `height`).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for (j, cell) in d[0].iter_mut().enumerate() {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut best = (d[i - 1][j] + 1).min(d[i][j - 1] + 1).min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                best = best.min(d[i - 2][j - 2] + 1);
+            }
+            d[i][j] = best;
+        }
+    }
+    d[a.len()][b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transposition_is_one_edit() {
+        assert_eq!(edit_distance("hieght", "height"), 1);
+        assert_eq!(edit_distance("widht", "width"), 1);
+        assert_eq!(edit_distance("mass", "mass"), 0);
+        assert_eq!(edit_distance("", "abc"), 3);
+    }
+
+    #[test]
+    fn closest_only_when_close() {
+        assert_eq!(closest("hieght", &["width", "height"]), Some("height"));
+        assert_eq!(closest("colour", &["width", "height"]), None);
+    }
+
+    #[test]
+    fn io_reason_drops_os_error_suffix() {
+        let e = std::io::Error::from_raw_os_error(2);
+        assert_eq!(io_reason(&e), "No such file or directory");
+    }
+}

@@ -1,0 +1,381 @@
+//! `[ground]`: the horizontal ground acceleration.
+//!
+//! Amplitudes are given in g (converted with `simulation.g`) or as
+//! `amplitude_ratio = a_p / (g tan α)`; frequencies in Hz or as
+//! `frequency_ratio = ω / p`. A record is read from `file`, resolved against the
+//! scenario file's folder, when the scenario is built.
+
+use crate::error::{io_reason, ErrorKind, Fault};
+use crate::read::{finite, non_negative, positive, Section};
+use rocking::{AccelerationUnit, CsvOptions, GroundMotion, Harmonic, Pulse, PulseShape, Record, RecordFormat, Ricker, Tower};
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+
+/// The types of ground motion, as written in `type`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GroundKind {
+    /// No ground motion (free rocking or sliding from the initial state).
+    None,
+    /// `A sin(2π f t + φ)` for `duration` seconds.
+    Harmonic,
+    /// One sine cycle.
+    SinePulse,
+    /// One cosine cycle.
+    CosinePulse,
+    /// A constant acceleration for `duration` seconds.
+    RectangularPulse,
+    /// A Ricker wavelet.
+    Ricker,
+    /// A recorded accelerogram.
+    Record,
+}
+
+const KINDS: &[(&str, GroundKind)] = &[
+    ("harmonic", GroundKind::Harmonic),
+    ("sine-pulse", GroundKind::SinePulse),
+    ("cosine-pulse", GroundKind::CosinePulse),
+    ("rectangular-pulse", GroundKind::RectangularPulse),
+    ("ricker", GroundKind::Ricker),
+    ("record", GroundKind::Record),
+    ("none", GroundKind::None),
+];
+
+/// Every key of `[ground]`, whatever the type.
+const ALL_KEYS: &[&str] = &[
+    "type",
+    "amplitude",
+    "amplitude_ratio",
+    "frequency",
+    "frequency_ratio",
+    "duration",
+    "phase",
+    "t0",
+    "file",
+    "format",
+    "scale",
+    "units",
+    "dt",
+];
+
+impl GroundKind {
+    /// The name used in `type`.
+    pub fn as_str(self) -> &'static str {
+        KINDS.iter().find(|(_, k)| *k == self).map_or("none", |(name, _)| name)
+    }
+
+    /// The keys this type takes.
+    fn keys(self) -> &'static [&'static str] {
+        match self {
+            GroundKind::None => &["type"],
+            GroundKind::Harmonic => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "duration", "phase"],
+            GroundKind::SinePulse | GroundKind::CosinePulse => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio"],
+            GroundKind::RectangularPulse => &["type", "amplitude", "amplitude_ratio", "duration"],
+            GroundKind::Ricker => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "t0"],
+            GroundKind::Record => &["type", "file", "format", "scale", "units", "dt"],
+        }
+    }
+}
+
+/// The ground motion as resolved from the scenario, for reports (`rocking check`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroundInfo {
+    /// The `type`.
+    pub kind: GroundKind,
+    /// Amplitude (in g), after `amplitude_ratio` is resolved.
+    pub amplitude_g: Option<f64>,
+    /// Frequency (Hz), after `frequency_ratio` is resolved.
+    pub frequency_hz: Option<f64>,
+    /// Time after which the ground is still (s); `None` for no motion.
+    pub end_time_s: Option<f64>,
+    /// Phase (rad) of a harmonic.
+    pub phase_rad: Option<f64>,
+    /// Centre of a Ricker wavelet (s).
+    pub t0_s: Option<f64>,
+    /// The record, for `type = "record"`.
+    pub record: Option<RecordInfo>,
+}
+
+/// What was read from a record file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RecordInfo {
+    /// The file, resolved against the scenario's folder.
+    pub file: PathBuf,
+    /// Its layout, given or guessed.
+    pub format: RecordFormat,
+    /// Number of samples.
+    pub samples: usize,
+    /// Time step (s) if the samples are evenly spaced.
+    pub time_step_s: Option<f64>,
+    /// Time of the last sample (s).
+    pub duration_s: f64,
+    /// The factor applied to every value.
+    pub scale: f64,
+}
+
+/// A record still to be read (when the scenario is built).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct RecordSpec {
+    file: PathBuf,
+    format: Option<RecordFormat>,
+    scale: f64,
+    csv: CsvOptions,
+    /// Keys given that apply to CSV files only.
+    csv_keys: Vec<&'static str>,
+}
+
+/// `[ground]` once parsed: a ready motion, or a record to read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum GroundSpec {
+    Ready(GroundMotion, GroundInfo),
+    Record(RecordSpec),
+}
+
+/// What the ratios need from the rest of the scenario.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Context<'a> {
+    pub(crate) tower: Option<&'a Tower>,
+    pub(crate) g: f64,
+    /// The simulated time (s): a harmonic without `duration` shakes throughout.
+    pub(crate) duration: f64,
+    /// The folder against which a relative record path is resolved.
+    pub(crate) folder: &'a Path,
+}
+
+/// Parses `[ground]`.
+pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fault> {
+    let names: Vec<String> = KINDS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+    let kind = s
+        .choice("type", KINDS)?
+        .ok_or_else(|| Fault::new(s.key("type"), ErrorKind::Missing(format!("required: one of {}", names.join(", ")))))?;
+    let valid = kind.keys();
+    for key in s.keys() {
+        if ALL_KEYS.contains(&key) && !valid.contains(&key) {
+            return Err(Fault::new(
+                s.key(key),
+                ErrorKind::NotApplicable(format!("does not apply to type = \"{}\" (its keys: {})", kind.as_str(), valid.join(", "))),
+            ));
+        }
+    }
+    s.only(valid)?;
+    s.exclusive("amplitude", "amplitude_ratio")?;
+    s.exclusive("frequency", "frequency_ratio")?;
+    let mut info = GroundInfo {
+        kind,
+        amplitude_g: None,
+        frequency_hz: None,
+        end_time_s: None,
+        phase_rad: None,
+        t0_s: None,
+        record: None,
+    };
+    let g = cx.g;
+    let motion = match kind {
+        GroundKind::None => GroundMotion::None,
+        GroundKind::Record => return parse_record(s, cx.folder).map(GroundSpec::Record),
+        GroundKind::Harmonic => {
+            let a = amplitude(s, cx, true)?;
+            let f = frequency(s, cx)?;
+            let duration = positive(&s.key("duration"), s.number("duration")?.unwrap_or(cx.duration))?;
+            let phase = finite(&s.key("phase"), s.number("phase")?.unwrap_or(0.0))?;
+            info.phase_rad = Some(phase);
+            (info.amplitude_g, info.frequency_hz) = (Some(a), Some(f));
+            GroundMotion::Harmonic(Harmonic::new(a * g, f, duration, phase)?)
+        }
+        GroundKind::SinePulse | GroundKind::CosinePulse => {
+            let a = amplitude(s, cx, false)?;
+            let f = frequency(s, cx)?;
+            let shape = if kind == GroundKind::SinePulse {
+                PulseShape::Sine
+            } else {
+                PulseShape::Cosine
+            };
+            (info.amplitude_g, info.frequency_hz) = (Some(a), Some(f));
+            GroundMotion::Pulse(Pulse::cycle(shape, a * g, f)?)
+        }
+        GroundKind::RectangularPulse => {
+            let a = amplitude(s, cx, false)?;
+            let key = s.key("duration");
+            let duration = s
+                .number("duration")?
+                .ok_or_else(|| Fault::new(&key, ErrorKind::Missing("required for type = \"rectangular-pulse\": its length in s".into())))?;
+            info.amplitude_g = Some(a);
+            GroundMotion::Pulse(Pulse::rectangular(a * g, positive(&key, duration)?)?)
+        }
+        GroundKind::Ricker => {
+            let a = amplitude(s, cx, false)?;
+            let f = frequency(s, cx)?;
+            let t0 = s.number("t0")?.map(|t0| positive(&s.key("t0"), t0)).transpose()?;
+            (info.amplitude_g, info.frequency_hz) = (Some(a), Some(f));
+            info.t0_s = Some(t0.unwrap_or(1.5 / f));
+            GroundMotion::Ricker(Ricker::new(a * g, f, t0)?)
+        }
+    };
+    info.end_time_s = (kind != GroundKind::None).then(|| motion.end_time());
+    Ok(GroundSpec::Ready(motion, info))
+}
+
+/// The amplitude in g, from `amplitude` or `amplitude_ratio · tan α`.
+/// A harmonic takes `>= 0` (its phase gives the sign); a pulse any sign.
+fn amplitude(s: &Section<'_>, cx: &Context<'_>, non_negative_only: bool) -> Result<f64, Fault> {
+    let check = |key: &str, v: f64| if non_negative_only { non_negative(key, v) } else { finite(key, v) };
+    if let Some(a) = s.number("amplitude")? {
+        return check(&s.key("amplitude"), a);
+    }
+    let key = s.key("amplitude_ratio");
+    let Some(ratio) = s.number("amplitude_ratio")? else {
+        return Err(Fault::new(
+            s.key("amplitude"),
+            ErrorKind::Missing("required: the peak ground acceleration in g (or amplitude_ratio)".into()),
+        ));
+    };
+    let ratio = check(&key, ratio)?;
+    let tower = cx.tower.ok_or_else(|| {
+        Fault::new(
+            &key,
+            ErrorKind::NotApplicable("needs a [tower]: it is a multiple of the tower's uplift acceleration g tan α".into()),
+        )
+    })?;
+    Ok(ratio * tower.alpha().tan())
+}
+
+/// The frequency in Hz, from `frequency` or `frequency_ratio · p / 2π`.
+fn frequency(s: &Section<'_>, cx: &Context<'_>) -> Result<f64, Fault> {
+    if let Some(f) = s.number("frequency")? {
+        return positive(&s.key("frequency"), f);
+    }
+    let key = s.key("frequency_ratio");
+    let Some(ratio) = s.number("frequency_ratio")? else {
+        return Err(Fault::new(
+            s.key("frequency"),
+            ErrorKind::Missing("required: the frequency in Hz (or frequency_ratio)".into()),
+        ));
+    };
+    let ratio = positive(&key, ratio)?;
+    let tower = cx.tower.ok_or_else(|| {
+        Fault::new(
+            &key,
+            ErrorKind::NotApplicable("needs a [tower]: it is a multiple of the tower's frequency parameter p".into()),
+        )
+    })?;
+    Ok(ratio * tower.frequency_parameter(cx.g) / (2.0 * PI))
+}
+
+fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
+    let file = s
+        .string("file")?
+        .ok_or_else(|| Fault::new(s.key("file"), ErrorKind::Missing("required for type = \"record\": the record's path".into())))?;
+    if file.is_empty() {
+        return Err(Fault::invalid(s.key("file"), "must not be empty"));
+    }
+    let format = s.choice("format", &[("at2", RecordFormat::At2), ("esm", RecordFormat::Esm), ("csv", RecordFormat::Csv)])?;
+    let units = s.choice(
+        "units",
+        &[
+            ("g", AccelerationUnit::G),
+            ("m/s2", AccelerationUnit::MetersPerSecond2),
+            ("cm/s2", AccelerationUnit::CentimetersPerSecond2),
+        ],
+    )?;
+    let dt = s.number("dt")?.map(|dt| positive(&s.key("dt"), dt)).transpose()?;
+    let csv_keys: Vec<&'static str> = [("units", units.is_some()), ("dt", dt.is_some())]
+        .into_iter()
+        .filter(|&(_, given)| given)
+        .map(|(k, _)| k)
+        .collect();
+    if let (Some(f), Some(key)) = (format, csv_keys.first()) {
+        if f != RecordFormat::Csv {
+            return Err(csv_only(s, key, f));
+        }
+    }
+    Ok(RecordSpec {
+        file: folder.join(file),
+        format,
+        scale: finite(&s.key("scale"), s.number("scale")?.unwrap_or(1.0))?,
+        csv: CsvOptions {
+            units: units.unwrap_or_default(),
+            dt,
+        },
+        csv_keys,
+    })
+}
+
+/// The name of a record format as written in `format`.
+pub fn record_format_name(format: RecordFormat) -> &'static str {
+    match format {
+        RecordFormat::Csv => "csv",
+        RecordFormat::At2 => "at2",
+        RecordFormat::Esm => "esm",
+    }
+}
+
+fn csv_only(s: &Section<'_>, key: &str, format: RecordFormat) -> Fault {
+    Fault::new(
+        s.key(key),
+        ErrorKind::NotApplicable(format!(
+            "applies only to format = \"csv\", not \"{}\" (whose files carry their units and time step)",
+            record_format_name(format)
+        )),
+    )
+}
+
+impl RecordSpec {
+    /// The record file (resolved).
+    pub(crate) fn file(&self) -> &Path {
+        &self.file
+    }
+
+    /// Reads the record: the motion (m/s²) and what was read.
+    pub(crate) fn load(&self, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
+        let key = "ground.file";
+        let text = std::fs::read_to_string(&self.file).map_err(|e| {
+            Fault::new(
+                key,
+                ErrorKind::Read {
+                    path: self.file.clone(),
+                    reason: io_reason(&e),
+                },
+            )
+        })?;
+        let malformed = |source| {
+            Fault::new(
+                key,
+                ErrorKind::Record {
+                    path: self.file.clone(),
+                    source,
+                },
+            )
+        };
+        let format = match self.format {
+            Some(f) => f,
+            None => Record::guess_format(&text).map_err(malformed)?,
+        };
+        if let (RecordFormat::At2 | RecordFormat::Esm, Some(k)) = (format, self.csv_keys.first()) {
+            return Err(Fault::new(
+                format!("ground.{k}"),
+                ErrorKind::NotApplicable(format!(
+                    "applies only to CSV records, and {} reads as \"{}\" (whose files carry their units and time step)",
+                    self.file.display(),
+                    record_format_name(format)
+                )),
+            ));
+        }
+        let record = Record::parse(&text, Some(format), &self.csv, g).map_err(malformed)?.scaled(self.scale);
+        let info = GroundInfo {
+            kind: GroundKind::Record,
+            amplitude_g: None,
+            frequency_hz: None,
+            end_time_s: Some(record.duration()),
+            phase_rad: None,
+            t0_s: None,
+            record: Some(RecordInfo {
+                file: self.file.clone(),
+                format,
+                samples: record.len(),
+                time_step_s: record.time_step(),
+                duration_s: record.duration(),
+                scale: self.scale,
+            }),
+        };
+        Ok((GroundMotion::Record(record), info))
+    }
+}

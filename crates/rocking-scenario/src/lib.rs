@@ -1,0 +1,57 @@
+//! # rocking-scenario
+//!
+//! Scenario files of the `rocking` simulator (interface.md, "Scenario file"):
+//! TOML (or JSON) in, a validated [`rocking::Model`], ground motion, initial
+//! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
+//! No printing, no command line: the `rocking` binary and the bindings use it.
+//!
+//! Every error is one line naming the file, the dotted key and what is wrong:
+//!
+//! ```
+//! use rocking_scenario::{summary_json, RunOptions, Scenario};
+//! use std::path::Path;
+//!
+//! let text = r#"
+//!     [tower]
+//!     width = 4
+//!     height = 12.0
+//!     mass = 1.5e5
+//!
+//!     [ground]
+//!     type = "sine-pulse"
+//!     amplitude = 0.6   # g: above tan α = 1/3, the tower rocks
+//!     frequency = 1.0
+//!
+//!     [simulation]
+//!     duration = 3.0
+//! "#;
+//! let scenario = Scenario::from_toml_str(text, Path::new("block.toml"))?;
+//! let outcome = scenario.build()?.run(RunOptions::SUMMARY)?;
+//! let summary = summary_json(&outcome, 0.0);
+//! assert!(summary["max_theta_over_alpha"].as_f64().is_some_and(|x| x > 0.0));
+//! assert!(summary["max_abs_slip_m"].is_null()); // no building
+//!
+//! let bad = Scenario::from_toml_str(&text.replace("width = 4", "width = -4"), Path::new("block.toml"));
+//! assert_eq!(bad.map(|_| ()).map_err(|e| e.to_string()), Err("block.toml: tower.width: must be a finite number > 0, got -4".to_string()));
+//! # Ok::<(), rocking_scenario::Error>(())
+//! ```
+
+mod building;
+mod dotted;
+mod error;
+mod ground;
+mod json;
+mod read;
+mod run;
+mod scenario;
+mod simulation;
+mod summary;
+mod tower;
+
+pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
+pub use error::{Error, ErrorKind, Fault};
+pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
+pub use run::{Outcome, RunOptions};
+pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
+pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
+pub use summary::{summary_json, summary_scalars};

@@ -1,0 +1,77 @@
+//! Running a case: the summary, the derived quantities, and the history and
+//! events when asked for.
+
+use crate::error::{Error, Fault};
+use crate::scenario::Case;
+use rocking::{simulate, Derived, Event, EventLog, History, Observer, Step, Summary};
+
+/// What to record besides the summary.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct RunOptions {
+    /// Sample the response every `output_dt` (for `history.csv`).
+    pub history: bool,
+    /// Keep every event (for `events.csv`).
+    pub events: bool,
+}
+
+impl RunOptions {
+    /// Everything: history and events.
+    pub const ALL: Self = Self { history: true, events: true };
+    /// The summary only (a sweep).
+    pub const SUMMARY: Self = Self { history: false, events: false };
+}
+
+/// The result of a run.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// The scenario's name.
+    pub name: String,
+    /// What the run found.
+    pub summary: Summary,
+    /// α, R, p, r, … (`None` for an absent body).
+    pub derived: Derived,
+    /// The time history, if asked for.
+    pub history: Option<History>,
+    /// Every event, if asked for (else empty).
+    pub events: Vec<Event>,
+}
+
+/// The observer of a run: a history and an event log, each optional.
+struct Recorder {
+    history: Option<History>,
+    events: Option<EventLog>,
+}
+
+impl Observer for Recorder {
+    fn wants_steps(&self) -> bool {
+        self.history.is_some()
+    }
+    fn on_step(&mut self, step: &Step<'_>) {
+        if let Some(h) = &mut self.history {
+            h.on_step(step);
+        }
+    }
+    fn on_event(&mut self, event: &Event) {
+        if let Some(log) = &mut self.events {
+            log.on_event(event);
+        }
+    }
+}
+
+impl Case {
+    /// Runs the case. A failure of the integration names the scenario file.
+    pub fn run(&self, options: RunOptions) -> Result<Outcome, Error> {
+        let mut recorder = Recorder {
+            history: options.history.then(|| History::new(self.output_dt, self.points.clone())),
+            events: options.events.then(EventLog::default),
+        };
+        let summary = simulate(&self.model, &self.ground, self.initial, &self.settings, &mut recorder).map_err(|e| Fault::from(e).in_file(&self.file))?;
+        Ok(Outcome {
+            name: self.name.clone(),
+            summary,
+            derived: self.model.derived(),
+            history: recorder.history,
+            events: recorder.events.map(|log| log.events).unwrap_or_default(),
+        })
+    }
+}

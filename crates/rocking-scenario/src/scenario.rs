@@ -1,0 +1,216 @@
+//! A scenario: parsed and validated from a TOML table, then built into the
+//! library's model, ground motion, initial state and settings.
+
+use crate::error::{Error, ErrorKind, Fault};
+use crate::ground::{self, GroundInfo, GroundSpec};
+use crate::read::{with_article, Section};
+use crate::{building, simulation, tower};
+use rocking::{GroundMotion, Initial, Model, Settings};
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// The sections of a scenario.
+pub const SECTIONS: &[&str] = &["tower", "building", "ground", "initial", "simulation"];
+/// The keys of a scenario outside any section.
+pub const TOP_LEVEL_KEYS: &[&str] = &["name"];
+
+/// A validated scenario. Every value is checked when it is parsed; only a
+/// ground-motion record is read later, by [`Scenario::build`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scenario {
+    origin: PathBuf,
+    name: String,
+    model: Model,
+    points: Vec<(f64, f64)>,
+    ground: GroundSpec,
+    initial: Initial,
+    settings: Settings,
+    output_dt: f64,
+}
+
+/// A scenario built into the library's objects, ready to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// The scenario's `name` (default: the file stem).
+    pub name: String,
+    /// The scenario file (or origin).
+    pub file: PathBuf,
+    /// Tower, building and gravity.
+    pub model: Model,
+    /// The ground acceleration (m/s²).
+    pub ground: GroundMotion,
+    /// The ground motion as resolved from the scenario (for reports).
+    pub ground_info: GroundInfo,
+    /// Initial rotation and angular velocity.
+    pub initial: Initial,
+    /// Duration and tolerances.
+    pub settings: Settings,
+    /// Spacing of the history rows (s).
+    pub output_dt: f64,
+    /// Extra points `(x, y)` of the tower (m, tower coordinates) to report.
+    pub points: Vec<(f64, f64)>,
+    /// Input files read besides the scenario (a ground-motion record).
+    pub inputs: Vec<PathBuf>,
+}
+
+/// Parses TOML text into a table, with a syntax error reported on one line
+/// with its line and column.
+pub fn parse_toml(text: &str, origin: &Path) -> Result<Table, Error> {
+    text.parse::<Table>().map_err(|e| syntax_fault(text, &e).in_file(origin))
+}
+
+fn syntax_fault(text: &str, e: &toml::de::Error) -> Fault {
+    let message = e.message().lines().map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join("; ");
+    let kind = match e.span() {
+        Some(span) => {
+            let before = text.get(..span.start).unwrap_or(text);
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            ErrorKind::Syntax {
+                line: before.matches('\n').count() + 1,
+                column: before[line_start..].chars().count() + 1,
+                message,
+            }
+        }
+        None => ErrorKind::Invalid(message),
+    };
+    Fault { key: None, kind }
+}
+
+impl Scenario {
+    /// Parses and validates the TOML text of a scenario file. `origin` is the
+    /// file: it names the file in errors and is the folder of relative record paths.
+    pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
+        Self::from_table(parse_toml(text, origin)?, origin)
+    }
+
+    /// Validates a scenario given as a TOML table (a sweep sets dotted keys with
+    /// [`crate::set_dotted`] first).
+    pub fn from_table(table: Table, origin: &Path) -> Result<Self, Error> {
+        Self::parse(&table, origin).map_err(|f| f.in_file(origin))
+    }
+
+    /// Validates a scenario given as a JSON object with the same structure as
+    /// the TOML file (`null` stands for an absent key).
+    pub fn from_json(value: serde_json::Value, origin: &Path) -> Result<Self, Error> {
+        let table = crate::json::to_table(value).map_err(|f| f.in_file(origin))?;
+        Self::from_table(table, origin)
+    }
+
+    fn parse(table: &Table, origin: &Path) -> Result<Self, Fault> {
+        for (key, value) in table {
+            if TOP_LEVEL_KEYS.contains(&key.as_str()) || SECTIONS.contains(&key.as_str()) {
+                continue;
+            }
+            let kind = if value.is_table() {
+                ErrorKind::UnknownSection {
+                    suggestion: crate::error::closest(key, SECTIONS),
+                    valid: SECTIONS.to_vec(),
+                }
+            } else {
+                let mut valid = TOP_LEVEL_KEYS.to_vec();
+                valid.extend(SECTIONS.iter().copied());
+                ErrorKind::UnknownKey {
+                    suggestion: crate::error::closest(key, &valid),
+                    valid,
+                }
+            };
+            return Err(Fault::new(key, kind));
+        }
+        let section = |name: &'static str| table.get(name).map(|v| Section::new(name, v)).transpose();
+        let name = match table.get("name") {
+            None => origin.file_stem().map_or_else(|| "scenario".to_string(), |s| s.to_string_lossy().into_owned()),
+            Some(Value::String(s)) => s.clone(),
+            Some(other) => {
+                return Err(Fault::new(
+                    "name",
+                    ErrorKind::WrongType {
+                        expected: "a string",
+                        got: with_article(other),
+                    },
+                ))
+            }
+        };
+        let (tower_section, building_section, ground_section) = (section("tower")?, section("building")?, section("ground")?);
+        let Some(ground_section) = ground_section else {
+            return Err(Fault::new(
+                "ground",
+                ErrorKind::Missing("missing section [ground]: give its type (\"harmonic\", \"record\", …; \"none\" for free motion from [initial])".into()),
+            ));
+        };
+        let sim = simulation::parse(section("simulation")?.as_ref())?;
+        let (tower, points) = match &tower_section {
+            Some(s) => {
+                let (t, p) = tower::parse(s)?;
+                (Some(t), p)
+            }
+            None => (None, Vec::new()),
+        };
+        let building = building_section.as_ref().map(building::parse).transpose()?;
+        if tower.is_none() && building.is_none() {
+            return Err(Fault::new(
+                "tower",
+                ErrorKind::Missing("a scenario needs a [tower], a [building], or both".into()),
+            ));
+        }
+        let model = Model::new(tower, building, sim.g)?;
+        let folder = origin.parent().unwrap_or(Path::new(""));
+        let cx = ground::Context {
+            tower: tower.as_ref(),
+            g: sim.g,
+            duration: sim.settings.duration,
+            folder,
+        };
+        let ground = ground::parse(&ground_section, &cx)?;
+        let initial = simulation::parse_initial(section("initial")?.as_ref(), tower.as_ref())?;
+        Ok(Self {
+            origin: origin.to_path_buf(),
+            name,
+            model,
+            points,
+            ground,
+            initial,
+            settings: sim.settings,
+            output_dt: sim.output_dt,
+        })
+    }
+
+    /// The scenario's name (default: the file stem).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// The file (or origin) the scenario came from.
+    pub fn origin(&self) -> &Path {
+        &self.origin
+    }
+    /// Tower, building and gravity.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+    /// The record file the scenario reads, if any (resolved against its folder).
+    pub fn record_file(&self) -> Option<&Path> {
+        match &self.ground {
+            GroundSpec::Record(r) => Some(r.file()),
+            GroundSpec::Ready(..) => None,
+        }
+    }
+
+    /// Builds the case: reads the ground-motion record if there is one.
+    pub fn build(&self) -> Result<Case, Error> {
+        let (ground, ground_info) = match &self.ground {
+            GroundSpec::Ready(motion, info) => (motion.clone(), info.clone()),
+            GroundSpec::Record(spec) => spec.load(self.model.gravity()).map_err(|f| f.in_file(&self.origin))?,
+        };
+        Ok(Case {
+            name: self.name.clone(),
+            file: self.origin.clone(),
+            model: self.model.clone(),
+            ground,
+            ground_info,
+            initial: self.initial,
+            settings: self.settings,
+            output_dt: self.output_dt,
+            points: self.points.clone(),
+            inputs: self.record_file().map(Path::to_path_buf).into_iter().collect(),
+        })
+    }
+}

@@ -1,0 +1,98 @@
+//! `[tower]`: the rocking block, by its outer dimensions (`width`, `height`,
+//! `mass` or `density`, `section`, …) or by its mechanical properties
+//! (`mass`, `inertia_pivot`, `radius`, `alpha`).
+
+use crate::error::{ErrorKind, Fault};
+use crate::read::Section;
+use rocking::{MassInput, Section as TowerSection, Tower, TowerGeometry};
+
+/// Every key of `[tower]`.
+pub(crate) const KEYS: &[&str] = &[
+    "width",
+    "height",
+    "mass",
+    "density",
+    "depth",
+    "section",
+    "wall_thickness",
+    "inertia_pivot",
+    "restitution",
+    "points",
+    "radius",
+    "alpha",
+];
+
+/// Keys of the geometric description that a tower given by `radius` and `alpha` does not take.
+const GEOMETRY_ONLY: &[&str] = &["width", "height", "density", "depth", "section", "wall_thickness"];
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SectionKind {
+    Solid,
+    Hollow,
+}
+
+/// The tower and the extra points (x, y) in m, tower coordinates, to report.
+pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> {
+    s.only(KEYS)?;
+    let required = |key: &str, what: &str| -> Result<f64, Fault> {
+        s.number(key)?
+            .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))
+    };
+    let restitution = s.number("restitution")?;
+    let tower = if s.has("radius") || s.has("alpha") {
+        if let Some(k) = GEOMETRY_ONLY.iter().find(|k| s.has(k)) {
+            return Err(Fault::new(
+                s.key(k),
+                ErrorKind::NotApplicable("does not apply to a tower given by radius and alpha (give either width and height, or radius and alpha)".into()),
+            ));
+        }
+        let mass = required("mass", "the tower's mass in kg")?;
+        let inertia = required("inertia_pivot", "the moment of inertia about a base corner in kg·m², with radius and alpha")?;
+        let radius = required("radius", "R in m, the distance from a base corner to the centre of mass")?;
+        let alpha = required("alpha", "the slenderness angle α = atan(b/h) in rad")?;
+        Tower::from_properties(mass, inertia, radius, alpha, restitution)?
+    } else {
+        let width = required("width", "the tower's width B in m (or give radius and alpha)")?;
+        let height = required("height", "the tower's height H in m (or give radius and alpha)")?;
+        s.exclusive("mass", "density")?;
+        let mass = match (s.number("mass")?, s.number("density")?) {
+            (Some(m), _) => MassInput::Mass(m),
+            (None, Some(rho)) => MassInput::Density(rho),
+            (None, None) => {
+                return Err(Fault::new(
+                    s.key("mass"),
+                    ErrorKind::Missing("required: the tower's mass in kg (or its density in kg/m³)".into()),
+                ))
+            }
+        };
+        let kind = s.choice("section", &[("solid", SectionKind::Solid), ("hollow", SectionKind::Hollow)])?;
+        let wall = s.number("wall_thickness")?;
+        let section = match (kind.unwrap_or(SectionKind::Solid), wall) {
+            (SectionKind::Solid, None) => TowerSection::Solid,
+            (SectionKind::Solid, Some(_)) => {
+                return Err(Fault::new(
+                    s.key("wall_thickness"),
+                    ErrorKind::NotApplicable("applies only to section = \"hollow\"".into()),
+                ))
+            }
+            (SectionKind::Hollow, Some(t)) => TowerSection::Hollow { wall_thickness: t },
+            (SectionKind::Hollow, None) => {
+                return Err(Fault::new(
+                    s.key("wall_thickness"),
+                    ErrorKind::Missing("required for section = \"hollow\": the wall thickness in m".into()),
+                ))
+            }
+        };
+        Tower::from_geometry(&TowerGeometry {
+            width,
+            height,
+            depth: s.number("depth")?,
+            section,
+            mass,
+            inertia_pivot: s.number("inertia_pivot")?,
+            restitution,
+        })?
+    };
+    let points = s.pairs("points")?.unwrap_or_default();
+    Ok((tower, points))
+}
