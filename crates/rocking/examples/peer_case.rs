@@ -16,7 +16,7 @@ fn main() -> Result<(), rocking::Error> {
         rtol: 1e-8,
         atol: 1e-10,
     };
-    let n = 200;
+    let n: usize = std::env::var("REPEAT").ok().and_then(|v| v.parse().ok()).unwrap_or(200);
     let start = std::time::Instant::now();
     let mut s = simulate(&model, &ground, Initial::default(), &settings, &mut ())?;
     for _ in 1..n {

@@ -1,5 +1,5 @@
 //! Shared builders for the physics tests.
-#![allow(dead_code, clippy::unwrap_used)]
+#![allow(dead_code, missing_docs, clippy::unwrap_used)]
 
 use rocking::{reference::solid_block, simulate, Building, EventLog, GroundMotion, History, Initial, Model, NormalForce, Settings, Summary, Tower};
 

@@ -13,7 +13,7 @@
 // Component loops index several arrays at once; iterators would hide the formulas.
 #![allow(clippy::needless_range_loop)]
 
-use super::dop853_tableau::{A, B, C, D, E3, E5};
+use super::dop853_tableau::{A, C, D, E3, E5};
 
 /// Number of stages of the 8(5,3) pair.
 const STAGES: usize = 12;
@@ -42,6 +42,17 @@ pub(crate) struct DenseOutput<const N: usize> {
 }
 
 impl<const N: usize> DenseOutput<N> {
+    /// The same polynomial over `(θ, θ̇, u, u̇)`, the missing components zero.
+    pub(crate) fn widen(&self) -> DenseOutput<4> {
+        let pad = |v: &[f64; N]| -> [f64; 4] { std::array::from_fn(|i| if i < N { v[i] } else { 0.0 }) };
+        DenseOutput {
+            t_old: self.t_old,
+            h: self.h,
+            y_old: pad(&self.y_old),
+            f: std::array::from_fn(|r| pad(&self.f[r])),
+        }
+    }
+
     /// The interpolated state at `t` (meant for `t` within the step).
     #[inline]
     pub(crate) fn state(&self, t: f64) -> [f64; N] {
@@ -167,12 +178,8 @@ impl<const N: usize> Dop853<N> {
                 )*};
             }
             stages!(1 2 3 4 5 6 7 8 9 10 11);
-            let mut y_new = self.y;
-            for (s, b) in B.iter().enumerate() {
-                for j in 0..N {
-                    y_new[j] += h * b * self.k[s][j];
-                }
-            }
+            // Row 12 of the extended tableau holds the weights B.
+            let y_new = combine::<N, 12>(&self.y, &self.k, h);
             let f_new = rhs(t_new, &y_new);
             self.evaluations += STAGES as u64;
             self.k[STAGES] = f_new;
@@ -211,18 +218,28 @@ impl<const N: usize> Dop853<N> {
 
     /// Hairer's combined 5th/3rd-order error estimate, scaled by `atol + rtol |y|`.
     fn error_norm(&self, h: f64, y_new: &[f64; N]) -> f64 {
+        let mut e5 = [0.0; N];
+        let mut e3 = [0.0; N];
+        // Constant indices: the zero weights drop out at compile time.
+        macro_rules! accumulate {
+            ($($s:literal)*) => {$(
+                for j in 0..N {
+                    if E5[$s] != 0.0 {
+                        e5[j] += E5[$s] * self.k[$s][j];
+                    }
+                    if E3[$s] != 0.0 {
+                        e3[j] += E3[$s] * self.k[$s][j];
+                    }
+                }
+            )*};
+        }
+        accumulate!(0 1 2 3 4 5 6 7 8 9 10 11 12);
         let mut err5 = 0.0;
         let mut err3 = 0.0;
         for j in 0..N {
             let scale = self.atol + self.y[j].abs().max(y_new[j].abs()) * self.rtol;
-            let mut e5 = 0.0;
-            let mut e3 = 0.0;
-            for s in 0..=STAGES {
-                e5 += E5[s] * self.k[s][j];
-                e3 += E3[s] * self.k[s][j];
-            }
-            err5 += (e5 / scale).powi(2);
-            err3 += (e3 / scale).powi(2);
+            err5 += (e5[j] / scale).powi(2);
+            err3 += (e3[j] / scale).powi(2);
         }
         if err5 == 0.0 && err3 == 0.0 {
             return 0.0;

@@ -18,15 +18,16 @@ pub(crate) struct Bracket {
     pub(crate) tb: f64,
 }
 
-/// Narrows `[ta, tb]`, given `fa = f(ta) < 0 <= fb = f(tb)`, until `tb - ta` is a
-/// few units in the last place of `tb`, or `f(tb)` is exactly zero.
-pub(crate) fn find_crossing(mut f: impl FnMut(f64) -> f64, mut ta: f64, mut fa: f64, mut tb: f64, mut fb: f64) -> Bracket {
+/// Narrows `[ta, tb]`, given `fa = f(ta) < 0 <= fb = f(tb)`, until `tb - ta` is
+/// below `xtol` (s) or a few units in the last place of `tb`, or `f(tb)` is
+/// exactly zero.
+pub(crate) fn find_crossing(mut f: impl FnMut(f64) -> f64, mut ta: f64, mut fa: f64, mut tb: f64, mut fb: f64, xtol: f64) -> Bracket {
     debug_assert!(fa < 0.0 && fb >= 0.0);
     // Which end moved last (-1: a, +1: b), to detect a stalled side.
     let mut side = 0i32;
     let mut stalled = 0u32;
     for _ in 0..200 {
-        let tol = 4.0 * f64::EPSILON * ta.abs().max(tb.abs()).max(1e-300);
+        let tol = (4.0 * f64::EPSILON * ta.abs().max(tb.abs()).max(1e-300)).max(xtol);
         if tb - ta <= tol || fb == 0.0 {
             break;
         }
@@ -80,7 +81,7 @@ mod tests {
     #[test]
     fn brackets_a_transcendental_root() {
         let f = |t: f64| t.cos() - 0.5;
-        let b = find_crossing(f, 4.0, f(4.0), 6.0, f(6.0));
+        let b = find_crossing(f, 4.0, f(4.0), 6.0, f(6.0), 0.0);
         let root = 5.0 * std::f64::consts::PI / 3.0;
         assert!(f(b.ta) < 0.0 && f(b.tb) >= 0.0);
         assert!(b.ta <= root + 1e-15 && b.tb >= root - 1e-15);
@@ -92,7 +93,7 @@ mod tests {
     fn root_near_the_left_end() {
         let root = 1e-9;
         let f = |t: f64| (t - root) * (1.0 + 1e3 * t);
-        let b = find_crossing(f, 1e-12, f(1e-12), 1.0, f(1.0));
+        let b = find_crossing(f, 1e-12, f(1e-12), 1.0, f(1.0), 0.0);
         assert!((b.tb - root).abs() < 1e-22, "tb {}", b.tb);
     }
 }
