@@ -48,6 +48,9 @@ mod simulation;
 mod summary;
 mod tower;
 
+#[cfg(test)]
+mod tests;
+
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
 pub use error::{Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
