@@ -51,10 +51,11 @@ fn sliding_block_under_rectangular_pulse() {
     assert!(s.final_slip.abs() < 1e-300);
 }
 
-/// Frictionless building, no ground motion, tower released tilted: horizontal
-/// momentum `M u̇ + m2 R cos φ θ̇` stays zero and the energy
-/// `½ M u̇² + m2 R cos φ θ̇ u̇ + ½ I_O θ̇² + m2 g R cos φ` is constant between
-/// impacts (to the integration tolerance), for both normal-force laws.
+/// Frictionless building, no ground motion, tower released tilted: between
+/// impacts, horizontal momentum `M u̇ + m2 R cos φ θ̇` and energy
+/// `½ M u̇² + m2 R cos φ θ̇ u̇ + ½ I_O θ̇² + m2 g R cos φ` are constant (to the
+/// integration tolerance), for both normal-force laws. Momentum starts at zero;
+/// at an impact `u̇` is continuous, so it jumps by `m2 R cos α (θ̇⁺ − θ̇⁻)`.
 #[test]
 fn frictionless_building_conserves_momentum_and_energy() {
     let tower = block();
@@ -73,33 +74,51 @@ fn frictionless_building_conserves_momentum_and_energy() {
             0.002,
         );
         let mr = tower.mass() * tower.radius();
-        let impacts: Vec<f64> = log.events.iter().filter(|e| e.kind == EventKind::Impact).map(|e| e.time).collect();
+        let impacts: Vec<_> = log.events.iter().filter(|e| e.kind == EventKind::Impact).collect();
         assert!(impacts.len() >= 2, "{normal:?}");
-        let mut energies = vec![];
-        for s in &history.samples {
-            let x = s.state;
+        let momentum_energy = |x: rocking::State| {
             let phi = tower.alpha() - x.theta.abs();
             let momentum = total * x.slip_vel + mr * phi.cos() * x.theta_dot;
-            // Scale: m2 R θ̇ of the order of 1 kg m/s here; rtol 1e-11.
-            assert!(momentum.abs() < 1e-8 * mr, "{normal:?}: momentum {momentum:e} at t = {}", s.t);
-            energies.push((
-                s.t,
-                0.5 * total * x.slip_vel.powi(2)
-                    + mr * phi.cos() * x.theta_dot * x.slip_vel
-                    + 0.5 * tower.inertia_pivot() * x.theta_dot.powi(2)
-                    + mr * G * phi.cos(),
-            ));
+            let energy = 0.5 * total * x.slip_vel.powi(2)
+                + mr * phi.cos() * x.theta_dot * x.slip_vel
+                + 0.5 * tower.inertia_pivot() * x.theta_dot.powi(2)
+                + mr * G * phi.cos();
+            (momentum, energy)
+        };
+        let mut expected_momentum = 0.0;
+        let mut start = 0.0;
+        for (k, end) in impacts.iter().map(|e| e.time).chain([3.0]).enumerate() {
+            let inside: Vec<(f64, f64)> = history
+                .samples
+                .iter()
+                .filter(|s| s.t > start && s.t < end)
+                .map(|s| momentum_energy(s.state))
+                .collect();
+            assert!(inside.len() > 10);
+            for (p, _) in &inside {
+                // m2 R θ̇ is of the order of 100 kg·m/s here; rtol 1e-11.
+                assert!(
+                    (p - expected_momentum).abs() < 1e-7 * mr,
+                    "{normal:?}: momentum {p:e}, expected {expected_momentum:e}"
+                );
+            }
+            let (lo, hi) = inside.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &(_, e)| (lo.min(e), hi.max(e)));
+            assert!(hi - lo < 1e-8 * mr * G, "{normal:?}: energy spread {:e}", hi - lo);
+            if let Some(e) = impacts.get(k) {
+                expected_momentum += mr * tower.alpha().cos() * (e.after.theta_dot - e.before.theta_dot);
+                assert_eq!(e.after.slip_vel.to_bits(), e.before.slip_vel.to_bits());
+            }
+            start = end;
         }
-        let first: Vec<f64> = energies.iter().filter(|(t, _)| *t < impacts[0]).map(|e| e.1).collect();
-        let spread = first.iter().cloned().fold(f64::MIN, f64::max) - first.iter().cloned().fold(f64::MAX, f64::min);
-        assert!(spread < 1e-9 * mr * G, "{normal:?}: energy spread {spread:e}");
-        // The building moves opposite to the tower's lean: momentum balance.
+        // The building moves opposite to the tower's lean.
         assert!(history.samples.iter().any(|s| s.state.slip.abs() > 1e-4));
     }
 }
 
 /// A very rough foundation (μs = μk = 50) never slips: the response equals the
-/// fixed-base one (same equations, same steps), to rounding.
+/// fixed-base one. The equations are the same; the building's run integrates
+/// four components instead of two, so its steps differ and the two agree to
+/// the integration tolerance (rtol 1e-8), not to rounding.
 #[test]
 fn very_rough_foundation_gives_the_fixed_base_answer() {
     let tower = block();
@@ -112,7 +131,7 @@ fn very_rough_foundation_gives_the_fixed_base_answer() {
     for normal in [NormalForce::Constant, NormalForce::Dynamic] {
         let rough = run(&on_building(tower, 1.0e4, 50.0, 50.0, normal), &ground, Initial::default(), &settings);
         assert_eq!(rough.first_slip_time, None);
-        assert_relative_eq!(rough.max_abs_theta, fixed_base.max_abs_theta, max_relative = 1e-12);
+        assert_relative_eq!(rough.max_abs_theta, fixed_base.max_abs_theta, max_relative = 1e-7);
         assert_eq!(rough.impacts, fixed_base.impacts);
     }
 }
