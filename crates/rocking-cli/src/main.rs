@@ -18,7 +18,7 @@ use std::process::ExitCode;
 
 /// Rocking of a slender rigid tower on a building that may slide on its foundation, under horizontal ground acceleration.
 #[derive(Debug, Parser)]
-#[command(name = "rocking", version, about, long_about = None)]
+#[command(name = "rocking", version)]
 #[command(after_help = "Exit status: 0 on success, 1 on an input or physics error (one line on stderr), 2 on bad usage.")]
 struct Cli {
     #[command(subcommand)]

@@ -1,1 +1,9 @@
-//! Integration tests.
+//! Integration tests of the `rocking` binary: the real executable on real files
+//! in temporary folders (one test binary, ripgrep style).
+
+mod util;
+
+mod check;
+mod errors;
+mod guard;
+mod run;

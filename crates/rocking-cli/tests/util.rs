@@ -1,0 +1,94 @@
+//! Running the binary and writing scenario files.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// What a run of the binary gave.
+#[derive(Debug)]
+pub struct Output {
+    /// Exit code (`None` if killed by a signal).
+    pub code: Option<i32>,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+/// Runs `rocking args…` in `cwd` with backtraces on, so that a panic would show.
+pub fn rocking_in(cwd: &Path, args: &[&str]) -> Output {
+    let out = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(args)
+        .current_dir(cwd)
+        .env("RUST_BACKTRACE", "1")
+        .output()
+        .unwrap_or_else(|e| panic!("cannot start rocking: {e}"));
+    Output {
+        code: out.status.code(),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+/// Runs `rocking args…` in the repository root (where `examples/` is).
+pub fn rocking(args: &[&str]) -> Output {
+    rocking_in(&root(), args)
+}
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// An example scenario of the repository.
+pub fn example(name: &str) -> PathBuf {
+    root().join("examples").join(name)
+}
+
+/// A fresh temporary folder.
+pub fn tempdir() -> tempfile::TempDir {
+    tempfile::tempdir().unwrap_or_else(|e| panic!("cannot create a temporary folder: {e}"))
+}
+
+/// Writes `text` to `dir/name` and returns the path.
+pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
+    path
+}
+
+/// Reads a file the binary wrote.
+pub fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
+}
+
+/// `path` as a `&str` argument.
+pub fn arg(path: &Path) -> &str {
+    path.to_str().unwrap_or_else(|| panic!("non-UTF-8 path {}", path.display()))
+}
+
+/// A small scenario of the tower on its church: 1 s of a 0.6 g, 5 Hz harmonic.
+pub const SCENARIO: &str = r#"name = "small"
+
+[tower]
+width = 4.0
+height = 12.0
+mass = 1.5e5
+
+[building]
+mass = 2.0e6
+mu_static = 1.25
+mu_kinetic = 1.0
+
+[ground]
+type = "harmonic"
+amplitude = 0.6
+frequency = 5.0
+
+[simulation]
+duration = 1.0
+output_dt = 0.003
+"#;
+
+/// `SCENARIO` with `from` replaced by `to` (which must occur).
+pub fn scenario_with(from: &str, to: &str) -> String {
+    assert!(SCENARIO.contains(from), "{from:?} is not in the scenario");
+    SCENARIO.replacen(from, to, 1)
+}
