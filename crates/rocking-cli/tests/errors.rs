@@ -26,6 +26,7 @@ fn bad(name: &str, text: &str, needles: &[&str]) {
         assert!(!lower.contains("panicked") && !lower.contains("backtrace"), "{context}");
         assert!(r.stdout.is_empty(), "{context}");
     }
+    assert!(!dir.path().join("out").exists(), "a failed run created its output folder");
 }
 
 #[test]

@@ -5,6 +5,27 @@
 //! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
 //! No printing, no command line: the `rocking` binary and the bindings use it.
 //!
+//! ## Keys: what is required, what defaults
+//!
+//! | section | required | optional (default) |
+//! |---|---|---|
+//! | top level | | `name` (the file stem) |
+//! | `[tower]` by geometry | `width`, `height`, `mass` or `density` | `depth` (= width), `section` ("solid"), `wall_thickness` (required for "hollow", refused for "solid"), `inertia_pivot` (the section's), `restitution` (Housner's), `points` (none) |
+//! | `[tower]` by properties | `mass`, `inertia_pivot`, `radius`, `alpha` | `restitution`, `points` |
+//! | `[building]` | `mass`, `mu_static` | `mu_kinetic` (= mu_static), `normal_force` ("constant") |
+//! | `[ground]` | `type`; then per type below | |
+//! | "harmonic" | `amplitude` or `amplitude_ratio`, `frequency` or `frequency_ratio` | `duration` (simulation.duration), `phase` (0) |
+//! | "sine-pulse", "cosine-pulse" | amplitude, frequency (or their ratios) | |
+//! | "ricker" | amplitude, frequency (or their ratios) | `t0` (1.5 / frequency) |
+//! | "rectangular-pulse" | amplitude (or ratio), `duration` | |
+//! | "record" | `file` | `format` (guessed), `scale` (1), `units` ("g", CSV only), `dt` (CSV only) |
+//! | "none" | | |
+//! | `[initial]` | | `theta` or `theta_over_alpha` (0), `theta_dot` (0) |
+//! | `[simulation]` | | `duration` (20 s), `g` (9.81), `output_dt` (0.005 s), `rtol` (1e-8), `atol` (1e-10) |
+//!
+//! `[ground]` is required, and so is a `[tower]` or a `[building]` (or both).
+//! A key of another ground type, an unknown key or an unknown section is an error.
+//!
 //! Every error is one line naming the file, the dotted key and what is wrong:
 //!
 //! ```
