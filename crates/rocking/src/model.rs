@@ -188,6 +188,15 @@ impl Kernel {
         };
         let rhs_b = -s * self.m2r * sin_phi * w2 - friction * normal_static;
         let det = self.inertia * self.total - c * a21;
+        if det <= 0.0 {
+            // Painlevé's paradox of the dynamic normal force (a light building, high
+            // friction): no acceleration satisfies both equations. NaN stops the
+            // integrator, which reports the time.
+            return Accelerations {
+                theta: f64::NAN,
+                slip: f64::NAN,
+            };
+        }
         let theta = (rhs_t * self.total - c * rhs_b) / det;
         let acc_pivot = (self.inertia * rhs_b - a21 * rhs_t) / det;
         Accelerations { theta, slip: acc_pivot - a_g }

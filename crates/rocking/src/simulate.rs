@@ -328,7 +328,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
             StepFailure::NonFinite { time } => Error::Singular {
                 time,
-                reason: "the equations of motion became singular".into(),
+                reason: "the equations of motion have no solution (with the dynamic normal force, a building this light cannot carry this friction: Painlevé's paradox)".into(),
             },
         })?;
         let (t0, t1, y1) = (self.stepper.t_old, self.stepper.t, wide(&self.stepper.y));
