@@ -620,3 +620,13 @@ fn the_origin_names_the_file_in_every_error() {
         Some("elsewhere/x.toml: tower: a scenario needs a [tower], a [building], or both")
     );
 }
+
+/// A sweep runs without a history, `rocking run` with one: their summaries must agree exactly.
+#[test]
+fn recording_the_history_does_not_change_the_summary() {
+    let case = ok(&[("ground.amplitude", Some("1.5"))]).build().unwrap_or_else(|e| panic!("{e}"));
+    let with = case.run(RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"));
+    let without = case.run(RunOptions::SUMMARY).unwrap_or_else(|e| panic!("{e}"));
+    assert!(with.summary.first_slip_time.is_some(), "1.5 g: both bodies move");
+    assert_eq!(summary_json(&with, 0.0), summary_json(&without, 0.0));
+}
