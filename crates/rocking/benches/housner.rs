@@ -5,6 +5,9 @@
 //! `cargo bench -p rocking --bench housner`; compare with
 //! `python3 ../shared/bench/scipy_peer.py 0.5 2.0 20 1e-8 0.5 2.0` (see the README).
 
+// criterion_group! generates an undocumented function.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use rocking::{reference::solid_block, simulate, Building, GroundMotion, Harmonic, Initial, Model, NormalForce, Settings};
 use std::hint::black_box;
