@@ -12,6 +12,7 @@
 mod commands;
 mod format;
 mod output;
+mod plot;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

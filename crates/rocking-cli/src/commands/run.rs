@@ -50,7 +50,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     output::write_events(&files[2], &outcome.events)?;
     super::print(&report(&outcome, wall, &dir))?;
     if args.plot {
-        eprintln!("plots are not available yet");
+        crate::plot::run_figures(&dir, &outcome).context("drawing the figures")?;
     }
     Ok(())
 }
