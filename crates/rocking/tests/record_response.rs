@@ -3,6 +3,8 @@
 //! instants, scaled exactly, or mirrored gives the expected response. Uses the
 //! 1940 El Centro record of the shared material (skipped when `../shared` is absent).
 
+#![allow(clippy::unwrap_used)]
+
 mod common;
 
 use common::*;
