@@ -149,7 +149,7 @@ impl Kernel {
     }
 
     /// `θ̈` and `ü` in `regime` for ground acceleration `a_g` and state `y = [θ, θ̇, u, u̇]`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn accelerations(&self, regime: Regime, a_g: f64, y: &[f64; 4]) -> Accelerations {
         match (regime.tower, regime.building) {
             (TowerRegime::Rest, BuildingRegime::Stick) => Accelerations::default(),

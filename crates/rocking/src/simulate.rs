@@ -271,6 +271,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// Moves to the next segment end, or to the first instant on the way where a
     /// condition is met (root finding on `a_g`, monotone on the segment).
     fn advance_static(&mut self) -> Result<(), Error> {
+        // The next extremum of a_g may lie beyond the current segment's end if the
+        // run was rocking or sliding until now: take the segment from here.
+        self.segment = self.ground.segment(self.t);
         let t1 = self.segment.end.min(self.end);
         let (list, n) = conditions(&self.kernel, self.regime);
         let (regime, y, piece) = (self.regime, self.y, self.segment.piece);
@@ -299,7 +302,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// After reaching a new instant: enter the next segment of the input if its
     /// end was reached, then apply every condition that already holds.
     fn next_instant(&mut self) -> Result<(), Error> {
-        if self.t >= self.segment.end {
+        if self.t >= self.segment.kink {
             // A kink or jump of the input: new expression, conditions re-checked at once.
             self.segment = self.ground.segment(self.t);
             self.restart = true;
@@ -323,7 +326,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
             self.restart = false;
         }
-        let bound = self.segment.end.min(self.end);
+        // Steps land on kinks and jumps of the input; its extrema matter only
+        // while nothing moves (`advance_static`).
+        let bound = self.segment.kink.min(self.end);
         self.stepper.step(&mut rhs, bound).map_err(|e| match e {
             StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
             StepFailure::NonFinite { time } => Error::Singular {
@@ -395,7 +400,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.tracker.instant(&kernel, regime, a1, &y1, acc);
         // Within a segment the conditions were just checked on the step; only a
         // new segment (a kink or jump of the input) can make one hold at once.
-        if self.t >= self.segment.end {
+        if self.t >= self.segment.kink {
             self.next_instant()?;
         }
         Ok(())

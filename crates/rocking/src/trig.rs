@@ -57,7 +57,7 @@ fn kernel_cos(x: f64) -> f64 {
 }
 
 /// `(sin x, cos x)`.
-#[inline]
+#[inline(always)]
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() <= std::f64::consts::FRAC_PI_4 {
         return (kernel_sin(x), kernel_cos(x));
@@ -78,7 +78,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
 }
 
 /// `sin x`.
-#[inline]
+#[inline(always)]
 pub(crate) fn sin(x: f64) -> f64 {
     if x.abs() <= std::f64::consts::FRAC_PI_4 {
         return kernel_sin(x);

@@ -53,6 +53,7 @@ impl Harmonic {
                 phase: self.phase,
             },
             end: extremum.min(self.duration),
+            kink: self.duration,
         })
     }
 }

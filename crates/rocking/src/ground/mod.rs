@@ -68,6 +68,8 @@ pub(crate) struct Segment {
     pub(crate) piece: Piece,
     /// The next instant where the motion has a kink, a jump or an extremum (`+∞` if none).
     pub(crate) end: f64,
+    /// The next kink or jump (`>= end`): the piece holds up to here.
+    pub(crate) kink: f64,
 }
 
 /// The first of a periodic family of instants `(k + offset) period` strictly after `t`
@@ -88,6 +90,7 @@ impl GroundMotion {
         let zero = Segment {
             piece: Piece::Constant(0.0),
             end: f64::INFINITY,
+            kink: f64::INFINITY,
         };
         match self {
             GroundMotion::None => zero,

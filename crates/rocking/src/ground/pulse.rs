@@ -73,6 +73,10 @@ impl Pulse {
             PulseShape::Rectangular => (Piece::Constant(self.amplitude), &[]),
         };
         let end = inner.iter().map(|x| x * self.duration).find(|&e| e > t).unwrap_or(self.duration);
-        Some(Segment { piece, end })
+        Some(Segment {
+            piece,
+            end,
+            kink: self.duration,
+        })
     }
 }

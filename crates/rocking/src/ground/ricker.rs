@@ -47,6 +47,7 @@ impl Ricker {
                 t0: self.t0,
             },
             end,
+            kink: self.duration(),
         })
     }
 }

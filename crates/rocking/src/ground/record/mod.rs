@@ -191,6 +191,7 @@ impl Record {
             return Some(Segment {
                 piece: Piece::Constant(0.0),
                 end: self.times[0],
+                kink: self.times[0],
             });
         }
         // The sample interval [t_k, t_k+1) that holds t.
@@ -200,6 +201,7 @@ impl Record {
         Some(Segment {
             piece: Piece::Linear { t0, a0: self.values[k], slope },
             end: t1,
+            kink: t1,
         })
     }
 }
