@@ -3,6 +3,8 @@
 //! motions adds up to the run, and the summary holds no NaN and respects its
 //! own bounds.
 
+#![allow(clippy::unwrap_used)]
+
 mod common;
 
 use common::*;
