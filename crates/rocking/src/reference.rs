@@ -3,7 +3,11 @@
 
 use crate::body::{MassInput, Section, Tower, TowerGeometry};
 
-/// A solid rectangular block `width × height` (m) of 1000 kg, depth = width.
+/// A solid rectangular block `width × height` (m) of 1000 kg, depth = width:
+/// the test block of the closed forms.
+///
+/// # Panics
+/// If `width` or `height` is not a finite positive number (a test-setup error).
 pub fn solid_block(width: f64, height: f64) -> Tower {
     let geometry = TowerGeometry {
         width,
