@@ -41,7 +41,7 @@ const KINDS: &[(&str, GroundKind)] = &[
 ];
 
 /// Every key of `[ground]`, whatever the type.
-const ALL_KEYS: &[&str] = &[
+pub(crate) const ALL_KEYS: &[&str] = &[
     "type",
     "amplitude",
     "amplitude_ratio",

@@ -4,6 +4,8 @@
 //! TOML (or JSON) in, a validated [`rocking::Model`], ground motion, initial
 //! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
 //! No printing, no command line: the `rocking` binary and the bindings use it.
+//! A [`Sweep`] (interface.md, "Sweep file") runs every combination of values
+//! of some keys in parallel, one [`Row`] per case in a fixed order.
 //!
 //! ## Keys: what is required, what defaults
 //!
@@ -67,6 +69,7 @@ mod run;
 mod scenario;
 mod simulation;
 mod summary;
+mod sweep;
 mod tower;
 
 #[cfg(test)]
@@ -79,3 +82,4 @@ pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
 pub use summary::{summary_json, summary_scalars};
+pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};

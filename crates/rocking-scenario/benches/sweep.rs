@@ -1,0 +1,70 @@
+//! Speed of a sweep on the grid of `bench/scipy_peer.py`: the 0.5 m × 2 m
+//! block on a fixed base, 10 s of harmonic shaking at rtol 1e-8 (atol 1e-10,
+//! the peer's `rtol · 1e-2`), amplitudes 0.3, 0.5, 0.7, 0.9 g × frequencies
+//! 1, 2, …, 7 Hz (28 cases), on 1 and on 2 threads.
+//!
+//! `cargo bench -p rocking-scenario --bench sweep`; the time per iteration
+//! divided by 28 is the time per case. Compare with
+//! `python3 ../shared/bench/scipy_peer.py 0.5 2.0 10 1e-8 "0.3,0.5,0.7,0.9" "1,2,3,4,5,6,7"`,
+//! or run both with `scripts/sweep-vs-peer.sh`.
+
+// criterion_group! generates an undocumented function.
+#![allow(missing_docs)]
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use rocking_scenario::Sweep;
+use std::convert::Infallible;
+use std::path::Path;
+use std::sync::atomic::AtomicBool;
+
+/// The peer's block and grid; `mass` does not change the rotation of a fixed-base block.
+const PEER_GRID: &str = r#"
+name = "peer grid"
+
+[tower]
+width = 0.5
+height = 2.0
+mass = 1000.0
+
+[ground]
+type = "harmonic"
+amplitude = 0.5
+frequency = 2.0
+duration = 10.0
+
+[simulation]
+duration = 10.0
+rtol = 1e-8
+atol = 1e-10
+
+[sweep]
+"ground.amplitude" = [0.3, 0.5, 0.7, 0.9]
+"ground.frequency" = { from = 1.0, to = 7.0, step = 1.0 }
+"#;
+
+fn sweep(c: &mut Criterion) {
+    let sweep = match Sweep::from_toml_str(PEER_GRID, Path::new("peer-grid.toml")) {
+        Ok(s) => s,
+        Err(e) => panic!("{e}"),
+    };
+    let mut group = c.benchmark_group("sweep_peer_grid_28_cases_10s");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(sweep.len() as u64));
+    for threads in [1usize, 2] {
+        group.bench_with_input(BenchmarkId::new("threads", threads), &threads, |b, &threads| {
+            let cancel = AtomicBool::new(false);
+            b.iter(|| {
+                let mut sum = 0.0;
+                let done = sweep.run(Some(threads), &cancel, |row| {
+                    sum += row.cells.iter().filter_map(|c| c.as_f64()).sum::<f64>();
+                    Ok::<(), Infallible>(())
+                });
+                (done.map(|d| d.written).ok(), sum)
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, sweep);
+criterion_main!(benches);

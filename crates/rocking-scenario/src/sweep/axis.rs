@@ -1,0 +1,420 @@
+//! One axis of a sweep: a scalar scenario key and its values, given as a list
+//! or as an evenly spaced range (interface.md, "Sweep file"); the rules are on [`AxisSpec`].
+
+use crate::error::{closest, ErrorKind, Fault};
+use crate::read::{as_number, with_article};
+use toml::Value;
+
+/// At most this many values on one axis (a `step` far too small for its range
+/// is an error, not an allocation of gigabytes).
+pub const MAX_AXIS_VALUES: usize = 1_000_000;
+
+/// The scalar keys of a scenario that a sweep can vary, as dotted keys. A unit
+/// test checks this list against the keys every section accepts.
+pub const SWEEPABLE_KEYS: &[&str] = &[
+    "name",
+    "tower.width",
+    "tower.height",
+    "tower.mass",
+    "tower.density",
+    "tower.depth",
+    "tower.section",
+    "tower.wall_thickness",
+    "tower.inertia_pivot",
+    "tower.restitution",
+    "tower.radius",
+    "tower.alpha",
+    "building.mass",
+    "building.mu_static",
+    "building.mu_kinetic",
+    "building.normal_force",
+    "ground.type",
+    "ground.amplitude",
+    "ground.amplitude_ratio",
+    "ground.frequency",
+    "ground.frequency_ratio",
+    "ground.duration",
+    "ground.phase",
+    "ground.t0",
+    "ground.file",
+    "ground.format",
+    "ground.scale",
+    "ground.units",
+    "ground.dt",
+    "initial.theta",
+    "initial.theta_over_alpha",
+    "initial.theta_dot",
+    "simulation.duration",
+    "simulation.g",
+    "simulation.output_dt",
+    "simulation.rtol",
+    "simulation.atol",
+];
+
+/// The sweepable keys whose values are strings; every other one takes a number.
+pub(crate) const STRING_KEYS: &[&str] = &[
+    "name",
+    "tower.section",
+    "building.normal_force",
+    "ground.type",
+    "ground.file",
+    "ground.format",
+    "ground.units",
+];
+
+/// Keys that are alternatives of each other: an axis on one removes the other
+/// from the base scenario (a scenario giving `amplitude` can be swept over
+/// `amplitude_ratio`), and two axes on the same pair are an error.
+pub(crate) const ALTERNATIVES: &[(&str, &str)] = &[
+    ("ground.amplitude", "ground.amplitude_ratio"),
+    ("ground.frequency", "ground.frequency_ratio"),
+    ("initial.theta", "initial.theta_over_alpha"),
+    ("tower.mass", "tower.density"),
+];
+
+/// The alternative of `key` (`ground.amplitude` ↔ `ground.amplitude_ratio`), if it has one.
+pub(crate) fn alternative(key: &str) -> Option<&'static str> {
+    ALTERNATIVES.iter().find_map(|&(a, b)| match key {
+        k if k == a => Some(b),
+        k if k == b => Some(a),
+        _ => None,
+    })
+}
+
+/// What a key takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum KeyType {
+    Number,
+    Text,
+}
+
+/// How the values of one axis are given (interface.md, "Sweep file"):
+///
+/// - `[v1, v2, …]`: those values, in that order (numbers for a numeric key,
+///   strings for a string key such as `building.normal_force`).
+/// - `{ from, to, steps }`: `steps` values (an integer >= 1) evenly spaced from
+///   `from` to `to`, both included, like NumPy's `linspace`: value `i` is
+///   `(from·(steps−1−i) + to·i) / (steps−1)`. `steps = 1` needs `from = to`.
+/// - `{ from, to, step }`: `from, from ± step, …, to` (`step > 0`; the values
+///   descend when `to < from`). The step must divide `to − from` to within 1e-9
+///   of a step; one that does not is an error naming the key, rather than a
+///   range that silently stops short of `to`. The values are those of
+///   `steps = |to − from| / step + 1`.
+///
+/// Every range value is then rounded to the shortest decimal of at most 12
+/// significant digits that lies within `4 ε max(|from|, |to|)` of it (a few
+/// roundings of the arithmetic above), if there is one: `{ from = 3, to = 7,
+/// steps = 41 }` gives 3.1, not 3.1000000000000001, and the value in
+/// `sweep.csv` is the one a scenario file with `frequency = 3.1` would give.
+/// `from` and `to` are kept exactly.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum AxisSpec {
+    /// These values, in this order (TOML numbers or strings).
+    List(Vec<Value>),
+    /// `steps` values evenly spaced from `from` to `to`, both included.
+    Steps {
+        /// First value.
+        from: f64,
+        /// Last value.
+        to: f64,
+        /// Number of values (>= 1; 1 needs `from = to`).
+        steps: i64,
+    },
+    /// `from, from ± step, …, to`; `step` (> 0) must divide `to − from`.
+    Step {
+        /// First value.
+        from: f64,
+        /// Last value.
+        to: f64,
+        /// Spacing (> 0).
+        step: f64,
+    },
+}
+
+/// One axis, expanded: the dotted key and its values in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    key: String,
+    values: Vec<Value>,
+}
+
+impl Axis {
+    /// The dotted scenario key (`ground.frequency`).
+    pub fn key(&self) -> &str {
+        &self.key
+    }
+    /// The values, in sweep order (floats or integers for a numeric key, strings for a string key).
+    pub fn values(&self) -> &[Value] {
+        &self.values
+    }
+    /// The number of values (>= 1).
+    pub fn len(&self) -> usize {
+        self.values.len()
+    }
+    /// Never true: an axis has at least one value.
+    pub fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+}
+
+/// How an axis key is written in an error: `sweep."ground.frequency"`.
+pub(crate) fn axis_name(key: &str) -> String {
+    format!("sweep.\"{key}\"")
+}
+
+/// Checks that `key` is a scalar scenario key and says what it takes.
+pub(crate) fn check_key(key: &str) -> Result<KeyType, Fault> {
+    if SWEEPABLE_KEYS.contains(&key) {
+        return Ok(if STRING_KEYS.contains(&key) { KeyType::Text } else { KeyType::Number });
+    }
+    let name = axis_name(key);
+    if key == "tower.points" {
+        return Err(Fault::new(
+            name,
+            ErrorKind::Invalid("is a list of points, not a scalar key: it cannot be swept".into()),
+        ));
+    }
+    if crate::scenario::SECTIONS.contains(&key) {
+        return Err(Fault::new(
+            name,
+            ErrorKind::Invalid(format!("is a section, not a scalar key: sweep one of its keys (\"{key}.…\")")),
+        ));
+    }
+    let section = key.split_once('.').map(|(s, _)| s);
+    let valid: Vec<&'static str> = match section {
+        Some(s) if crate::scenario::SECTIONS.contains(&s) => SWEEPABLE_KEYS
+            .iter()
+            .copied()
+            .filter(|k| k.split_once('.').is_some_and(|(p, _)| p == s))
+            .collect(),
+        _ => SWEEPABLE_KEYS.to_vec(),
+    };
+    Err(Fault::new(
+        name,
+        ErrorKind::UnknownKey {
+            suggestion: closest(key, &valid),
+            valid,
+        },
+    ))
+}
+
+impl AxisSpec {
+    /// Reads the value of `key` in `[sweep]`: a list, or a table
+    /// `{ from, to, steps }` / `{ from, to, step }`. Errors name
+    /// `sweep."key"` (and the range field or list item); the values themselves
+    /// are checked by [`crate::Sweep::from_parts`].
+    pub fn from_toml(key: &str, value: &Value) -> Result<Self, Fault> {
+        let name = axis_name(key);
+        match value {
+            Value::Array(items) => Ok(Self::List(items.clone())),
+            Value::Table(t) => {
+                const FIELDS: &[&str] = &["from", "to", "steps", "step"];
+                if let Some(k) = t.keys().find(|k| !FIELDS.contains(&k.as_str())) {
+                    return Err(Fault::new(
+                        format!("{name}.{k}"),
+                        ErrorKind::UnknownKey {
+                            suggestion: closest(k, FIELDS),
+                            valid: FIELDS.to_vec(),
+                        },
+                    ));
+                }
+                let number = |field: &str| -> Result<f64, Fault> {
+                    let fkey = format!("{name}.{field}");
+                    let v = t.get(field).ok_or_else(|| {
+                        Fault::new(
+                            &fkey,
+                            ErrorKind::Missing(format!(
+                                "required: a range is {{ from, to, steps }} or {{ from, to, step }}, and it has no {field}"
+                            )),
+                        )
+                    })?;
+                    let x = as_number(v).ok_or_else(|| {
+                        Fault::new(
+                            &fkey,
+                            ErrorKind::WrongType {
+                                expected: "a number",
+                                got: with_article(v),
+                            },
+                        )
+                    })?;
+                    if x.is_finite() {
+                        Ok(x)
+                    } else {
+                        Err(Fault::invalid(fkey, format!("must be a finite number, got {x}")))
+                    }
+                };
+                let (from, to) = (number("from")?, number("to")?);
+                match (t.get("steps"), t.get("step")) {
+                    (Some(_), Some(_)) => Err(Fault::new(
+                        format!("{name}.step"),
+                        ErrorKind::NotApplicable("give either steps (the number of values) or step (their spacing), not both".into()),
+                    )),
+                    (None, None) => Err(Fault::new(
+                        format!("{name}.steps"),
+                        ErrorKind::Missing("required: steps (the number of values) or step (their spacing)".into()),
+                    )),
+                    (Some(v), None) => match v {
+                        Value::Integer(steps) => Ok(Self::Steps { from, to, steps: *steps }),
+                        other => Err(Fault::new(
+                            format!("{name}.steps"),
+                            ErrorKind::WrongType {
+                                expected: "an integer (the number of values, >= 1)",
+                                got: with_article(other),
+                            },
+                        )),
+                    },
+                    (None, Some(_)) => Ok(Self::Step {
+                        from,
+                        to,
+                        step: number("step")?,
+                    }),
+                }
+            }
+            other => Err(Fault::new(
+                name,
+                ErrorKind::WrongType {
+                    expected: "a list of values or a range { from, to, steps } / { from, to, step }",
+                    got: with_article(other),
+                },
+            )),
+        }
+    }
+
+    /// The values of this axis for `key`, checked against what the key takes.
+    pub(crate) fn expand(&self, key: &str) -> Result<Axis, Fault> {
+        let kind = check_key(key)?;
+        let name = axis_name(key);
+        let values = match self {
+            Self::List(items) => {
+                if items.is_empty() {
+                    return Err(Fault::invalid(name, "the list of values is empty: give at least one"));
+                }
+                if items.len() > MAX_AXIS_VALUES {
+                    return Err(Fault::invalid(name, format!("{} values, more than {MAX_AXIS_VALUES}", items.len())));
+                }
+                for (i, item) in items.iter().enumerate() {
+                    check_item(&format!("{name}[{i}]"), kind, item)?;
+                }
+                items.clone()
+            }
+            Self::Steps { from, to, steps } => {
+                range_key(&name, kind)?;
+                let n = match usize::try_from(*steps) {
+                    Ok(n) if n >= 1 => n,
+                    _ => {
+                        return Err(Fault::invalid(
+                            format!("{name}.steps"),
+                            format!("must be an integer >= 1 (the number of values), got {steps}"),
+                        ))
+                    }
+                };
+                if n > MAX_AXIS_VALUES {
+                    return Err(Fault::invalid(format!("{name}.steps"), format!("{n} values, more than {MAX_AXIS_VALUES}")));
+                }
+                if n == 1 && !within_rounding(*from, *to) {
+                    return Err(Fault::invalid(
+                        format!("{name}.steps"),
+                        format!("steps = 1 gives the single value from = {from}, but to = {to}: give steps >= 2, or a list"),
+                    ));
+                }
+                linspace(*from, *to, n).map(Value::Float).collect()
+            }
+            Self::Step { from, to, step } => {
+                range_key(&name, kind)?;
+                if !(step.is_finite() && *step > 0.0) {
+                    return Err(Fault::invalid(format!("{name}.step"), format!("must be a finite number > 0, got {step}")));
+                }
+                let count = (to - from).abs() / step;
+                let k = count.round();
+                if !k.is_finite() || k >= MAX_AXIS_VALUES as f64 {
+                    return Err(Fault::invalid(
+                        format!("{name}.step"),
+                        format!("{step} over {from}..{to} gives {count:.3e} values, more than {MAX_AXIS_VALUES}"),
+                    ));
+                }
+                if (count - k).abs() > 1e-9 * k.max(1.0) {
+                    return Err(Fault::invalid(
+                        format!("{name}.step"),
+                        format!(
+                            "{step} does not divide to − from = {} ({count:.6} steps): choose a step that does, or give steps (the number of values)",
+                            to - from
+                        ),
+                    ));
+                }
+                // k is a whole number below MAX_AXIS_VALUES: the cast is exact.
+                linspace(*from, *to, k as usize + 1).map(Value::Float).collect()
+            }
+        };
+        Ok(Axis { key: key.to_string(), values })
+    }
+}
+
+fn range_key(name: &str, kind: KeyType) -> Result<(), Fault> {
+    match kind {
+        KeyType::Number => Ok(()),
+        KeyType::Text => Err(Fault::new(
+            name,
+            ErrorKind::WrongType {
+                expected: "a list of strings (the key takes a string, so a numeric range does not apply)",
+                got: "a range",
+            },
+        )),
+    }
+}
+
+fn check_item(name: &str, kind: KeyType, item: &Value) -> Result<(), Fault> {
+    let wrong = |expected| {
+        Err(Fault::new(
+            name,
+            ErrorKind::WrongType {
+                expected,
+                got: with_article(item),
+            },
+        ))
+    };
+    match (kind, item) {
+        (KeyType::Number, Value::Integer(_)) => Ok(()),
+        (KeyType::Number, Value::Float(x)) if x.is_finite() => Ok(()),
+        (KeyType::Number, Value::Float(x)) => Err(Fault::invalid(name, format!("must be a finite number, got {x}"))),
+        (KeyType::Number, _) => wrong("a number"),
+        (KeyType::Text, Value::String(_)) => Ok(()),
+        (KeyType::Text, _) => wrong("a string"),
+    }
+}
+
+/// Whether `a` and `b` are equal to within a few roundings.
+fn within_rounding(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 4.0 * f64::EPSILON * a.abs().max(b.abs())
+}
+
+/// `n` values evenly spaced from `from` to `to`, both kept exactly, the
+/// others rounded to a short decimal when one is within rounding (module docs).
+fn linspace(from: f64, to: f64, n: usize) -> impl Iterator<Item = f64> {
+    let tolerance = 4.0 * f64::EPSILON * from.abs().max(to.abs());
+    let last = n.saturating_sub(1);
+    (0..n).map(move |i| match i {
+        0 => from,
+        i if i == last => to,
+        i => {
+            // One rounding per product, one for the sum, one for the quotient.
+            let x = (from * (last - i) as f64 + to * i as f64) / last as f64;
+            shortest_nearby(x, tolerance)
+        }
+    })
+}
+
+/// The shortest decimal (at most 12 significant digits) within `tolerance` of `x`, or `x`.
+pub(crate) fn shortest_nearby(x: f64, tolerance: f64) -> f64 {
+    if x.abs() <= tolerance {
+        return 0.0;
+    }
+    for digits in 0..12 {
+        if let Ok(candidate) = format!("{x:.digits$e}").parse::<f64>() {
+            if (candidate - x).abs() <= tolerance {
+                return candidate;
+            }
+        }
+    }
+    x
+}

@@ -1,0 +1,388 @@
+//! Parametric sweeps (interface.md, "Sweep file"): a scenario plus a `[sweep]`
+//! table of dotted scenario keys and their values; every combination is one
+//! case, run in parallel, each giving one [`Row`] in a fixed order.
+//!
+//! The rules and an example are on [`Sweep`]; the order of rows and the
+//! memory bound on [`Sweep::run`].
+
+mod axis;
+mod engine;
+mod row;
+
+#[cfg(test)]
+mod tests;
+
+pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
+pub use engine::{Finished, RunError, WINDOW};
+pub use row::{csv_line, Cell, Row};
+
+use crate::error::{Error, ErrorKind, Fault};
+use crate::{set_dotted, summary_json, summary_scalars, Outcome, RunOptions, Scenario};
+use axis::{alternative, axis_name};
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// The field of `summary.json` that `sweep.csv` leaves out (it differs from run to run).
+pub const WALL_TIME_KEY: &str = "wall_time_s";
+/// The last column of `sweep.csv`: the message of a failed case, empty otherwise.
+pub const ERROR_COLUMN: &str = "error";
+
+/// A validated sweep: a base scenario and its axes; every combination of
+/// the axes' values is one case.
+///
+/// ```
+/// use rocking_scenario::{Cell, Sweep};
+/// use std::path::Path;
+/// use std::sync::atomic::AtomicBool;
+///
+/// let text = r#"
+///     [tower]
+///     width = 0.5
+///     height = 2.0
+///     mass = 500.0
+///
+///     [ground]
+///     type = "sine-pulse"
+///     amplitude = 0.5
+///     frequency = 2.0
+///
+///     [simulation]
+///     duration = 2.0
+///
+///     [sweep]
+///     "ground.amplitude" = [0.2, 0.5]                          # g: tan α = 0.25
+///     "ground.frequency" = { from = 1.0, to = 3.0, step = 1.0 } # Hz: 1, 2, 3
+/// "#;
+/// let sweep = Sweep::from_toml_str(text, Path::new("block-sweep.toml"))?;
+/// assert_eq!(sweep.len(), 6);
+/// let header = sweep.header();
+/// assert_eq!(&header[..3], ["ground.amplitude", "ground.frequency", "name"]);
+/// assert_eq!(header.last().map(String::as_str), Some("error"));
+///
+/// // Columns, in case order whatever the number of threads.
+/// let column = header.iter().position(|h| h == "max_theta_over_alpha").unwrap_or(0);
+/// let mut peaks = Vec::new();
+/// let cancel = AtomicBool::new(false);
+/// let done = sweep.run(Some(2), &cancel, |row| {
+///     peaks.push(row.cells[column].as_f64());
+///     Ok::<(), std::convert::Infallible>(())
+/// })?;
+/// assert_eq!((done.written, done.failed, done.cancelled), (6, 0, false));
+/// assert_eq!(peaks[..3], [Some(0.0), Some(0.0), Some(0.0)]); // 0.2 g < 0.25 g: no uplift
+/// assert!(peaks[3..].iter().all(|p| p.is_some_and(|p| p > 0.0)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// ## Rules
+///
+/// - Axis keys are the scalar keys of a scenario ([`SWEEPABLE_KEYS`]); an
+///   unknown key, a section, `tower.points`, a value of the wrong type, an
+///   empty list or a bad range is an error naming `sweep."key"`, found before
+///   anything runs. Keys may be quoted (`"ground.frequency" = …`) or written
+///   as TOML dotted keys (`ground.frequency = …`). Values are a list or a
+///   range; how a range is expanded (and a `step` that does not divide it) is
+///   on [`AxisSpec`].
+/// - An axis on a key with an alternative (`ground.amplitude` /
+///   `ground.amplitude_ratio`, `ground.frequency` / `ground.frequency_ratio`,
+///   `initial.theta` / `initial.theta_over_alpha`, `tower.mass` /
+///   `tower.density`) removes the other from the base scenario: a scenario
+///   giving `amplitude` can be swept over `amplitude_ratio`. Two axes on the
+///   same pair are an error.
+/// - Case `i` sets every axis to its value (the first axis varies slowest)
+///   with [`crate::set_dotted`], then parses, builds and runs the scenario. A
+///   case that fails (a bad combination such as `mu_kinetic > mu_static`, or a
+///   numerical failure) gives a row with its one-line message in `error` and
+///   every result empty; the others go on.
+/// - The sweep is refused before running when no case at all can be parsed
+///   and built (the base scenario itself is wrong: the error is that of the
+///   first case), or when the first case's record file cannot be read (and
+///   `ground.file` is not swept).
+/// - Columns ([`Sweep::header`]): the axis keys, then every scalar field of
+///   `summary.json` ([`crate::summary_scalars`]) except `wall_time_s`, then
+///   `error`. The wall time is left out so that the rows depend on nothing but
+///   the inputs: the same file whatever the number of threads.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    origin: PathBuf,
+    name: String,
+    base: Table,
+    axes: Vec<Axis>,
+    len: usize,
+    summary_keys: Vec<String>,
+    inputs: Vec<PathBuf>,
+}
+
+impl Sweep {
+    /// Parses and validates the TOML text of a sweep file: a scenario plus a
+    /// `[sweep]` table. `origin` names the file in errors and is the folder of
+    /// relative record paths.
+    pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
+        Self::from_table(crate::parse_toml(text, origin)?, origin)
+    }
+
+    /// A sweep from a table holding a scenario and its `[sweep]` table.
+    pub fn from_table(mut table: Table, origin: &Path) -> Result<Self, Error> {
+        let sweep = match table.remove("sweep") {
+            Some(Value::Table(t)) => t,
+            Some(other) => {
+                return Err(Fault::new(
+                    "sweep",
+                    ErrorKind::WrongType {
+                        expected: "a table (a [sweep] section)",
+                        got: crate::read::with_article(&other),
+                    },
+                )
+                .in_file(origin))
+            }
+            None => {
+                return Err(Fault::new(
+                    "sweep",
+                    ErrorKind::Missing("missing section [sweep]: give the swept keys and their values, e.g. \"ground.frequency\" = [3.0, 5.0]".into()),
+                )
+                .in_file(origin))
+            }
+        };
+        let mut axes = Vec::new();
+        flatten_axes(&sweep, "", &mut axes).map_err(|f| f.in_file(origin))?;
+        Self::from_parts(table, axes, origin)
+    }
+
+    /// A sweep from a JSON object with the structure of the TOML file (a
+    /// scenario plus a `sweep` object), as a Python dict gives it.
+    pub fn from_json(value: serde_json::Value, origin: &Path) -> Result<Self, Error> {
+        let table = crate::json::to_table(value).map_err(|f| f.in_file(origin))?;
+        Self::from_table(table, origin)
+    }
+
+    /// A sweep from a base scenario (without `[sweep]`) and its axes in order
+    /// (the first varies slowest). Checks every axis, then parses the cases in
+    /// order until one can be built: if none can, the first case's error.
+    pub fn from_parts(mut base: Table, axes: Vec<(String, AxisSpec)>, origin: &Path) -> Result<Self, Error> {
+        let fail = |f: Fault| f.in_file(origin);
+        if axes.is_empty() {
+            return Err(fail(Fault::new(
+                "sweep",
+                ErrorKind::Missing("no swept key: give at least one, e.g. \"ground.frequency\" = [3.0, 5.0]".into()),
+            )));
+        }
+        let mut expanded: Vec<Axis> = Vec::with_capacity(axes.len());
+        for (key, spec) in &axes {
+            if expanded.iter().any(|a| a.key() == key) {
+                return Err(fail(Fault::invalid(axis_name(key), "is swept twice")));
+            }
+            if let Some(other) = alternative(key).filter(|alt| expanded.iter().any(|a| a.key() == *alt)) {
+                return Err(fail(Fault::new(
+                    axis_name(key),
+                    ErrorKind::NotApplicable(format!("sweep either {other} or {key}, not both")),
+                )));
+            }
+            expanded.push(spec.expand(key).map_err(fail)?);
+        }
+        for a in &expanded {
+            if let Some(other) = alternative(a.key()) {
+                crate::remove_dotted(&mut base, other);
+            }
+        }
+        let len = expanded.iter().try_fold(1usize, |n, a| n.checked_mul(a.len())).ok_or_else(|| {
+            fail(Fault::invalid(
+                "sweep",
+                format!(
+                    "the axes have {} values: too many combinations to count",
+                    expanded.iter().map(Axis::len).product::<usize>()
+                ),
+            ))
+        })?;
+        let name = match base.get("name") {
+            Some(Value::String(s)) => s.clone(),
+            _ => origin.file_stem().map_or_else(|| "sweep".to_string(), |s| s.to_string_lossy().into_owned()),
+        };
+        let mut sweep = Self {
+            origin: origin.to_path_buf(),
+            name,
+            base,
+            axes: expanded,
+            len,
+            summary_keys: summary_keys().map_err(fail)?,
+            inputs: Vec::new(),
+        };
+        sweep.inputs = sweep.first_buildable_case()?;
+        Ok(sweep)
+    }
+
+    /// The input files of the first case that builds (a ground-motion record), for `--out` checks.
+    fn first_buildable_case(&self) -> Result<Vec<PathBuf>, Error> {
+        let mut first_error = None;
+        for index in 0..self.len {
+            match self.scenario(index).and_then(|s| s.build()) {
+                Ok(case) => return Ok(case.inputs),
+                Err(e) => {
+                    // A record that cannot be read fails every case that reads it: say so now.
+                    let file_level = matches!(e.kind(), ErrorKind::Read { .. } | ErrorKind::Record { .. });
+                    let swept = e.key().is_some_and(|k| self.axes.iter().any(|a| a.key() == k));
+                    if file_level && !swept {
+                        return Err(e);
+                    }
+                    first_error.get_or_insert(e);
+                }
+            }
+        }
+        Err(first_error.unwrap_or_else(|| Fault::invalid("sweep", "no case").in_file(&self.origin)))
+    }
+
+    /// The number of cases (the product of the axes' lengths, >= 1).
+    pub fn len(&self) -> usize {
+        self.len
+    }
+    /// Never true: a sweep has at least one case.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    /// The axes, in order (the first varies slowest).
+    pub fn axes(&self) -> &[Axis] {
+        &self.axes
+    }
+    /// The swept keys, in order.
+    pub fn axis_keys(&self) -> Vec<String> {
+        self.axes.iter().map(|a| a.key().to_string()).collect()
+    }
+    /// The base scenario's `name` (default: the file stem).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// The sweep file (or origin).
+    pub fn origin(&self) -> &Path {
+        &self.origin
+    }
+    /// Input files the cases read besides the sweep file (the first case's record).
+    pub fn inputs(&self) -> &[PathBuf] {
+        &self.inputs
+    }
+
+    /// The columns: the axis keys, the scalar fields of `summary.json`
+    /// (flattened: `time_in_regime_s.rest`, …) without `wall_time_s`, and `error`.
+    pub fn header(&self) -> Vec<String> {
+        let mut h = self.axis_keys();
+        h.extend(self.summary_keys.iter().cloned());
+        h.push(ERROR_COLUMN.to_string());
+        h
+    }
+
+    /// The header as one line of CSV.
+    pub fn csv_header(&self) -> String {
+        csv_line(self.header().iter().map(String::as_str))
+    }
+
+    /// The axis values of case `index` (`None` past the end).
+    pub fn case_values(&self, index: usize) -> Option<Vec<&Value>> {
+        if index >= self.len {
+            return None;
+        }
+        let mut rest = index;
+        let mut values = vec![None; self.axes.len()];
+        for (slot, axis) in values.iter_mut().zip(&self.axes).rev() {
+            *slot = axis.values().get(rest % axis.len());
+            rest /= axis.len();
+        }
+        values.into_iter().collect()
+    }
+
+    /// The scenario table of case `index`: the base with every axis set.
+    pub fn case_table(&self, index: usize) -> Result<Table, Error> {
+        let values = self
+            .case_values(index)
+            .ok_or_else(|| Fault::invalid("sweep", format!("case {index} does not exist: the sweep has {} cases", self.len)).in_file(&self.origin))?;
+        let mut table = self.base.clone();
+        for (axis, value) in self.axes.iter().zip(values) {
+            set_dotted(&mut table, axis.key(), value.clone()).map_err(|e| Fault::invalid(axis.key(), e.to_string()).in_file(&self.origin))?;
+        }
+        Ok(table)
+    }
+
+    /// The parsed scenario of case `index`.
+    pub fn scenario(&self, index: usize) -> Result<Scenario, Error> {
+        Scenario::from_table(self.case_table(index)?, &self.origin)
+    }
+
+    /// Runs case `index` on this thread: its row (with `error` filled if it failed).
+    pub fn run_case(&self, index: usize) -> Row {
+        let outcome = match self.outcome(index) {
+            Ok(outcome) => outcome,
+            // The file is the sweep's: the message names the key and what is wrong.
+            Err(e) => return self.failed_row(index, &e.fault.to_string()),
+        };
+        let mut cells = self.axis_cells(index);
+        let scalars = summary_scalars(&summary_json(&outcome, 0.0));
+        for key in &self.summary_keys {
+            cells.push(scalars.iter().find(|(k, _)| k == key).map_or(Cell::Empty, |(_, v)| Cell::from_json(v)));
+        }
+        cells.push(Cell::Empty);
+        Row { index, cells }
+    }
+
+    /// The row of case `index` that failed with `message`: its axis values, empty results, the message.
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        let mut cells = self.axis_cells(index);
+        cells.extend(std::iter::repeat_n(Cell::Empty, self.summary_keys.len()));
+        cells.push(Cell::Text(one_line(message)));
+        Row { index, cells }
+    }
+
+    fn axis_cells(&self, index: usize) -> Vec<Cell> {
+        let mut cells = Vec::with_capacity(self.axes.len() + self.summary_keys.len() + 1);
+        cells.extend(self.case_values(index).unwrap_or_default().into_iter().map(Cell::from_toml));
+        cells
+    }
+
+    fn outcome(&self, index: usize) -> Result<Outcome, Error> {
+        self.scenario(index)?.build()?.run(RunOptions::SUMMARY)
+    }
+}
+
+/// The axes of a `[sweep]` table. A quoted key (`"ground.frequency" = …`) is
+/// the dotted key itself; an unquoted one (`ground.frequency = …`) arrives as a
+/// nested table under a section name, and is flattened back.
+fn flatten_axes(table: &Table, prefix: &str, out: &mut Vec<(String, AxisSpec)>) -> Result<(), Fault> {
+    for (k, v) in table {
+        let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+        match v {
+            Value::Table(t) if prefix.is_empty() && crate::scenario::SECTIONS.contains(&k.as_str()) => flatten_axes(t, &key, out)?,
+            _ => {
+                if out.iter().any(|(existing, _)| *existing == key) {
+                    return Err(Fault::invalid(axis_name(&key), "is given twice"));
+                }
+                out.push((key.clone(), AxisSpec::from_toml(&key, v)?));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `text` on one line (a row of `sweep.csv` holds a one-line message).
+fn one_line(text: &str) -> String {
+    text.split(['\n', '\r']).map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
+}
+
+/// The scalar keys of `summary.json` in order, without `wall_time_s`: the keys
+/// do not depend on the outcome (absent quantities are `null`), so those of a
+/// trivial run (a building at rest for a millisecond) are those of every case.
+fn summary_keys() -> Result<Vec<String>, Fault> {
+    use rocking::{simulate, Building, GroundMotion, Initial, Model, NormalForce, Settings};
+    let model = Model::new(None, Some(Building::new(1.0, 0.5, 0.5, NormalForce::Constant)?), crate::DEFAULT_G)?;
+    let settings = Settings {
+        duration: 1e-3,
+        ..Settings::default()
+    };
+    let summary = simulate(&model, &GroundMotion::None, Initial::default(), &settings, &mut ())?;
+    let outcome = Outcome {
+        name: String::new(),
+        summary,
+        derived: model.derived(),
+        history: None,
+        events: Vec::new(),
+    };
+    Ok(summary_scalars(&summary_json(&outcome, 0.0))
+        .into_iter()
+        .map(|(k, _)| k)
+        .filter(|k| k != WALL_TIME_KEY)
+        .collect())
+}
