@@ -173,13 +173,50 @@ fn out_defaults_to_out_slash_the_stem_in_the_current_folder() {
 }
 
 #[test]
-fn plot_is_accepted_and_says_it_is_not_available() {
+fn plot_draws_the_two_figures_as_svg_and_png() {
     let out = tempdir();
     let file = write(out.path(), "s.toml", SCENARIO);
-    let r = rocking(&["run", arg(&file), "--out", arg(&out.path().join("o")), "--plot"]);
+    let dir = out.path().join("o");
+    let r = rocking(&["run", arg(&file), "--out", arg(&dir), "--plot"]);
     assert_eq!(r.code, Some(0), "{r:?}");
-    assert_eq!(r.stderr.trim(), "plots are not available yet");
-    assert!(out.path().join("o/summary.json").is_file());
+    assert!(r.stderr.is_empty(), "{r:?}");
+    assert!(r.stdout.contains("theta.svg, theta.png, slip.svg, slip.png"), "{}", r.stdout);
+    assert!(dir.join("summary.json").is_file());
+    for name in ["theta.svg", "theta.png", "slip.svg", "slip.png"] {
+        let bytes = std::fs::read(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(bytes.len() > 1000, "{name} has only {} bytes", bytes.len());
+        if name.ends_with(".png") {
+            assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "{name} does not start with the PNG signature");
+        }
+    }
+    // The title (the scenario's name), the axis labels with their units, the legend.
+    let theta = read(&dir.join("theta.svg"));
+    for text in [
+        "small",
+        "rotation θ/α (–)",
+        "a_g (g)",
+        "time t (s)",
+        "θ/α",
+        "impact",
+        "±tan α = ±0.333 g: uplift",
+    ] {
+        assert!(theta.contains(text), "theta.svg lacks {text:?}");
+    }
+    let slip = read(&dir.join("slip.svg"));
+    // 0.6 g < μs: the church does not slide; the top moves by some mm.
+    for text in ["small", "slip u (mm)", "top Δx (mm)", "time t (s)", "the building did not slide"] {
+        assert!(slip.contains(text), "slip.svg lacks {text:?}");
+    }
+}
+
+#[test]
+fn plot_never_overwrites_an_input_named_like_a_figure() {
+    let dir = tempdir();
+    let file = write(dir.path(), "theta.svg", SCENARIO);
+    let r = rocking(&["run", arg(&file), "--out", arg(dir.path()), "--plot"]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert!(r.stderr.contains("refusing to write"), "{}", r.stderr);
+    assert_eq!(read(&file), SCENARIO);
 }
 
 #[test]

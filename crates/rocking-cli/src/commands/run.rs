@@ -17,7 +17,8 @@ pub struct Args {
     /// overwritten; an input file (the scenario, a record) never is.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Also draw theta.svg and slip.svg (not available yet: prints a note).
+    /// Also draw the figures theta.svg/.png (θ/α and the ground acceleration
+    /// against time) and slip.svg/.png (building slip and top displacement).
     #[arg(long)]
     pub plot: bool,
 }
@@ -34,7 +35,10 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let case = scenario.build()?;
     let dir = args.out.clone().unwrap_or_else(|| default_out(&args.scenario));
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
-    let files = [output::SUMMARY, output::HISTORY, output::EVENTS].map(|f| dir.join(f));
+    let mut files: Vec<PathBuf> = [output::SUMMARY, output::HISTORY, output::EVENTS].iter().map(|f| dir.join(f)).collect();
+    if args.plot {
+        files.extend(crate::plot::RUN_FILES.iter().map(|f| dir.join(f)));
+    }
     let mut inputs = vec![args.scenario.clone()];
     inputs.extend(case.inputs.iter().cloned());
     output::refuse_to_overwrite_inputs(&files, &inputs)?;
@@ -50,7 +54,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     output::write_events(&files[2], &outcome.events)?;
     super::print(&report(&outcome, wall, &dir))?;
     if args.plot {
-        crate::plot::run_figures(&dir, &outcome).context("drawing the figures")?;
+        let figures = crate::plot::run_figures(&dir, &outcome).context("drawing the figures")?;
+        let names: Vec<String> = figures.iter().filter_map(|f| f.file_name()).map(|n| n.to_string_lossy().into_owned()).collect();
+        super::print(&format!("drew {} in {}\n", names.join(", "), dir.display()))?;
     }
     Ok(())
 }

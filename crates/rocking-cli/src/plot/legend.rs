@@ -1,0 +1,129 @@
+//! Legends drawn in a strip above a panel rather than inside it: a harmonic
+//! response fills its whole panel, and a legend box there would hide the curve.
+
+use super::style::{size, text, INK};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// How an entry of a legend looks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Swatch {
+    /// A solid line.
+    Line(RGBColor),
+    /// A dashed line.
+    Dashed(RGBColor),
+    /// A light band (`opacity` of the colour).
+    Band(RGBColor, f64),
+    /// A short vertical tick.
+    Tick(RGBColor),
+    /// A cross (×).
+    Cross(RGBColor),
+    /// A filled square.
+    Square(RGBColor),
+    /// A line with round markers.
+    LineDots(RGBColor),
+}
+
+/// One entry: its swatch and its text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    /// How it looks.
+    pub swatch: Swatch,
+    /// What it is.
+    pub label: String,
+}
+
+impl Entry {
+    /// An entry.
+    pub fn new(swatch: Swatch, label: impl Into<String>) -> Self {
+        Self { swatch, label: label.into() }
+    }
+}
+
+const SWATCH: i32 = 30;
+const GAP: i32 = 8;
+const SPACING: i32 = 26;
+const ROW: i32 = 24;
+
+/// The rows of `entries` in a strip `width` px wide starting at `left`, each
+/// entry with its x position, measured on `area`.
+fn layout<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, width: i32, entries: &[Entry]) -> anyhow::Result<Vec<Vec<(i32, usize)>>>
+where
+    DB::ErrorType: 'static,
+{
+    let style = text(size::LEGEND, INK);
+    let mut rows: Vec<Vec<(i32, usize)>> = vec![Vec::new()];
+    let mut x = left;
+    for (k, entry) in entries.iter().enumerate() {
+        let (w, _) = area.estimate_text_size(&entry.label, &style)?;
+        let w = SWATCH + GAP + i32::try_from(w).unwrap_or(0);
+        let row_is_empty = rows.last().is_none_or(Vec::is_empty);
+        if x + w > left + width && !row_is_empty {
+            rows.push(Vec::new());
+            x = left;
+        }
+        if let Some(row) = rows.last_mut() {
+            row.push((x, k));
+        }
+        x += w + SPACING;
+    }
+    Ok(rows)
+}
+
+/// The height (px) a strip of `entries` needs on `area` between `left` and the right edge.
+pub fn height<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<u32>
+where
+    DB::ErrorType: 'static,
+{
+    if entries.is_empty() {
+        return Ok(0);
+    }
+    let (w, _) = area.dim_in_pixel();
+    let rows = layout(area, left, i32::try_from(w).unwrap_or(0) - left - 16, entries)?.len();
+    Ok(u32::try_from(rows).unwrap_or(1) * ROW as u32 + 8)
+}
+
+/// Draws `entries` in `area` (a strip as high as [`height`] says), from `left`.
+pub fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let (w, _) = area.dim_in_pixel();
+    let rows = layout(area, left, i32::try_from(w).unwrap_or(0) - left - 16, entries)?;
+    let style = text(size::LEGEND, INK).pos(Pos::new(HPos::Left, VPos::Center));
+    for (r, row) in rows.iter().enumerate() {
+        let y = 4 + ROW / 2 + ROW * i32::try_from(r).unwrap_or(0);
+        for &(x, k) in row {
+            let entry = &entries[k];
+            swatch(area, (x, y), entry.swatch)?;
+            area.draw(&Text::new(entry.label.clone(), (x + SWATCH + GAP, y), style.clone()))?;
+        }
+    }
+    Ok(())
+}
+
+fn swatch<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, (x, y): (i32, i32), swatch: Swatch) -> anyhow::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let line = |color: RGBColor| PathElement::new(vec![(x, y), (x + SWATCH, y)], color.stroke_width(3));
+    match swatch {
+        Swatch::Line(c) => area.draw(&line(c))?,
+        Swatch::Dashed(c) => {
+            for k in 0..3 {
+                let x0 = x + k * 11;
+                area.draw(&PathElement::new(vec![(x0, y), (x0 + 7, y)], c.stroke_width(2)))?;
+            }
+        }
+        Swatch::Band(c, opacity) => area.draw(&Rectangle::new([(x, y - 8), (x + SWATCH, y + 8)], c.mix(opacity).filled()))?,
+        Swatch::Tick(c) => area.draw(&PathElement::new(vec![(x + SWATCH / 2, y - 8), (x + SWATCH / 2, y + 8)], c.stroke_width(2)))?,
+        Swatch::Cross(c) => area.draw(&Cross::new((x + SWATCH / 2, y), 6, c.stroke_width(3)))?,
+        Swatch::Square(c) => area.draw(&Rectangle::new([(x + 6, y - 9), (x + SWATCH - 6, y + 9)], c.filled()))?,
+        Swatch::LineDots(c) => {
+            area.draw(&line(c))?;
+            area.draw(&Circle::new((x + SWATCH / 2, y), 4, c.filled()))?;
+        }
+    }
+    Ok(())
+}

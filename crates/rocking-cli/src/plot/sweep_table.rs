@@ -1,0 +1,150 @@
+//! Reading a sweep's `sweep.csv` for its figures: the swept values of each
+//! case, its max θ/α, whether the tower overturned, and whether it failed
+//! (interface.md, "Sweep file": the swept keys first, then the scalar fields
+//! of summary.json, and an `error` column).
+
+use anyhow::{bail, Context};
+use std::path::Path;
+
+/// The column of the plotted value.
+pub const VALUE: &str = "max_theta_over_alpha";
+/// The column that says whether the tower overturned.
+pub const OVERTURNED: &str = "overturned";
+/// The column of a case's error message (empty if it ran).
+pub const ERROR: &str = "error";
+
+/// One case of a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Its values of the swept keys, as written, in the order of the axes.
+    pub keys: Vec<String>,
+    /// Max θ/α (`None`: no tower, or the case failed).
+    pub value: Option<f64>,
+    /// The tower overturned.
+    pub overturned: bool,
+    /// The case failed (its `error` is not empty).
+    pub failed: bool,
+}
+
+/// The cases of a sweep, in case order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepTable {
+    /// The swept keys, in order.
+    pub axes: Vec<String>,
+    /// The cases.
+    pub cases: Vec<Case>,
+}
+
+/// A value of a swept key as a number, if it is one.
+pub fn number(text: &str) -> Option<f64> {
+    text.trim().parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
+impl SweepTable {
+    /// Reads `path`; `axes` are the swept keys (the first columns).
+    pub fn read(path: &Path, axes: &[String]) -> anyhow::Result<Self> {
+        let file = std::fs::File::open(path).with_context(|| format!("cannot read {}", path.display()))?;
+        Self::from_reader(file, axes).with_context(|| format!("reading {}", path.display()))
+    }
+
+    /// Reads a `sweep.csv` from `reader`.
+    pub fn from_reader(reader: impl std::io::Read, axes: &[String]) -> anyhow::Result<Self> {
+        if axes.is_empty() {
+            bail!("a sweep needs at least one swept key to plot against");
+        }
+        let mut csv = csv::Reader::from_reader(reader);
+        let header = csv.headers().context("no header line")?.clone();
+        let column = |name: &str| header.iter().position(|h| h.trim() == name);
+        let mut axis_columns = Vec::new();
+        for key in axes {
+            match column(key) {
+                Some(c) => axis_columns.push(c),
+                None => bail!("no column {key} (a swept key) in the header"),
+            }
+        }
+        let Some(value_column) = column(VALUE) else {
+            bail!("no column {VALUE} in the header");
+        };
+        let (overturned_column, error_column) = (column(OVERTURNED), column(ERROR));
+        let mut cases = Vec::new();
+        for (k, record) in csv.records().enumerate() {
+            // Line k + 2: the header is line 1.
+            let record = record.with_context(|| format!("line {}", k + 2))?;
+            let field = |c: Option<usize>| c.and_then(|c| record.get(c)).unwrap_or("").trim();
+            let failed = !matches!(field(error_column), "" | "null");
+            let overturned = matches!(field(overturned_column).to_ascii_lowercase().as_str(), "true" | "1");
+            cases.push(Case {
+                keys: axis_columns.iter().map(|&c| field(Some(c)).to_string()).collect(),
+                value: if failed { None } else { number(field(Some(value_column))) },
+                overturned: overturned && !failed,
+                failed,
+            });
+        }
+        Ok(Self { axes: axes.to_vec(), cases })
+    }
+
+    /// The distinct values of axis `k` among `cases`, in order of first appearance.
+    pub fn values<'a>(cases: &[&'a Case], k: usize) -> Vec<&'a str> {
+        let mut out: Vec<&str> = Vec::new();
+        for case in cases {
+            if let Some(v) = case.keys.get(k) {
+                if !out.contains(&v.as_str()) {
+                    out.push(v);
+                }
+            }
+        }
+        out
+    }
+
+    /// The cases plotted: with more than two axes, those at the first value of
+    /// each further axis; and those fixed values as `(key, value)`.
+    pub fn selection(&self) -> (Vec<&Case>, Vec<(String, String)>) {
+        let all: Vec<&Case> = self.cases.iter().collect();
+        let fixed: Vec<(usize, String)> = (2..self.axes.len())
+            .filter_map(|k| Self::values(&all, k).first().map(|v| (k, v.to_string())))
+            .collect();
+        let chosen = all.into_iter().filter(|c| fixed.iter().all(|(k, v)| c.keys.get(*k) == Some(v))).collect();
+        let fixed = fixed.into_iter().map(|(k, v)| (self.axes[k].clone(), v)).collect();
+        (chosen, fixed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CSV: &str = "\
+ground.frequency,ground.amplitude,building.mu_static,max_theta_over_alpha,overturned,error
+3,0.5,1.25,0.4,false,
+3,0.5,1.0,0.5,false,
+5,0.5,1.25,,false,\"ground.frequency: bad, really\"
+5,0.9,1.25,4.9,true,
+";
+
+    fn axes() -> Vec<String> {
+        ["ground.frequency", "ground.amplitude", "building.mu_static"].map(String::from).to_vec()
+    }
+
+    #[test]
+    fn reads_cases_errors_and_overturning() -> anyhow::Result<()> {
+        let t = SweepTable::from_reader(CSV.as_bytes(), &axes())?;
+        assert_eq!(t.cases.len(), 4);
+        assert_eq!(t.cases[0].value, Some(0.4));
+        assert!(t.cases[2].failed && t.cases[2].value.is_none());
+        assert!(t.cases[3].overturned && !t.cases[0].overturned);
+        let (chosen, fixed) = t.selection();
+        assert_eq!(chosen.len(), 3, "μs = 1.0 left out");
+        assert_eq!(fixed, vec![("building.mu_static".to_string(), "1.25".to_string())]);
+        assert_eq!(SweepTable::values(&chosen, 1), vec!["0.5", "0.9"]);
+        Ok(())
+    }
+
+    #[test]
+    fn missing_columns_are_named() {
+        let e = SweepTable::from_reader(CSV.as_bytes(), &["tower.height".to_string()]).map(|_| ());
+        assert!(format!("{e:?}").contains("no column tower.height"), "{e:?}");
+        let e = SweepTable::from_reader("ground.frequency,overturned\n3,false\n".as_bytes(), &axes()[..1]).map(|_| ());
+        assert!(format!("{e:?}").contains("no column max_theta_over_alpha"), "{e:?}");
+        assert!(SweepTable::from_reader(CSV.as_bytes(), &[]).is_err());
+    }
+}

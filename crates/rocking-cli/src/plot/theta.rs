@@ -1,0 +1,182 @@
+//! `theta.svg`/`.png`: the tower's rotation θ/α against time (the paper's
+//! Figure 7) above the ground acceleration in g, sharing the time axis, with
+//! the impacts, the stretches where the building slides and the overturning
+//! marked.
+
+use super::legend::{self, Entry, Swatch};
+use super::scale;
+use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE, VERMILION};
+use super::timeline::{self, Timeline, PLOT_LEFT};
+use crate::format::sig;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use rocking::Sample;
+use rocking_scenario::Outcome;
+
+/// Size of the figure (px).
+pub const SIZE: (u32, u32) = (1000, 700);
+
+/// The figure of θ/α and a_g.
+pub struct ThetaFigure<'a> {
+    /// The run.
+    pub outcome: &'a Outcome,
+    /// Its samples.
+    pub samples: &'a [Sample],
+    /// Its marks.
+    pub timeline: &'a Timeline,
+}
+
+/// Gravity (m/s²) of the run, recovered from the tower's derived quantities
+/// (`p² = m₂ g R / I_O`); `None` without a tower. The outcome does not carry
+/// `simulation.g` itself.
+pub fn gravity(outcome: &Outcome) -> Option<f64> {
+    let d = &outcome.derived;
+    let (p, inertia, mass, radius) = (d.p?, d.inertia_pivot?, d.tower_mass?, d.radius?);
+    let g = p * p * inertia / (mass * radius);
+    (g.is_finite() && g > 0.0).then_some(g)
+}
+
+/// α of the tower, if there is one.
+fn alpha(outcome: &Outcome) -> Option<f64> {
+    outcome.derived.alpha.filter(|a| a.is_finite() && *a > 0.0)
+}
+
+impl ThetaFigure<'_> {
+    fn subtitle(&self) -> String {
+        let s = &self.outcome.summary;
+        let Some(a) = alpha(self.outcome) else {
+            return "no tower in this scenario: the ground acceleration only".into();
+        };
+        let fate = match s.overturn_time {
+            Some(t) => format!("OVERTURNED at t = {} s", sig(t, 4)),
+            None => "did not overturn".into(),
+        };
+        format!(
+            "max θ/α = {} · {} impacts · {fate} · α = {} rad (tan α = {})",
+            sig(s.max_abs_theta / a, 3),
+            s.impacts,
+            sig(a, 4),
+            sig(a.tan(), 3)
+        )
+    }
+
+    fn theta_panel<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> anyhow::Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let tl = self.timeline;
+        let Some(a) = alpha(self.outcome) else {
+            return Ok(());
+        };
+        let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.state.theta / a)).collect();
+        let peak = scale::max_abs(points.iter().map(|p| p.1));
+        let y = scale::symmetric(peak);
+        let mut entries = vec![Entry::new(Swatch::Line(BLUE), "θ/α")];
+        if !tl.impacts.is_empty() {
+            entries.push(Entry::new(Swatch::Tick(INK), "impact"));
+        }
+        let bounds = peak > 0.0 && y.1 >= 1.0;
+        if bounds {
+            entries.push(Entry::new(Swatch::Dashed(GREY), "θ = ±α"));
+        }
+        if !tl.slides.is_empty() {
+            entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
+        }
+        if tl.overturn.is_some() {
+            entries.push(Entry::new(Swatch::Line(VERMILION), "overturned"));
+        }
+        let strip = legend::height(area, PLOT_LEFT, &entries)?;
+        let (top, panel) = area.split_vertically(strip);
+        legend::draw(&top, PLOT_LEFT, &entries)?;
+
+        let mut chart = timeline::time_chart(&panel, tl.range, y, "rotation θ/α (–)", false)?;
+        timeline::draw_slides(&mut chart, tl, y)?;
+        if bounds {
+            for level in [-1.0, 1.0] {
+                timeline::dashed_level(&mut chart, tl.range, level, GREY.stroke_width(2))?;
+            }
+        }
+        for segment in scale::segments(points) {
+            chart.draw_series(LineSeries::new(segment, BLUE.stroke_width(2)))?;
+        }
+        let h = 0.05 * (y.1 - y.0);
+        timeline::draw_impacts(&mut chart, tl, 0.0, h)?;
+        timeline::draw_overturn(&mut chart, tl, y)?;
+        // The label away from where the rotation ends (at ±π/2α, in a corner).
+        let last = self.samples.last().map_or(0.0, |s| s.state.theta);
+        timeline::label_overturn(&mut chart, tl, y, last <= 0.0)?;
+        if peak <= 0.0 {
+            style::note(&panel, "the tower did not lift off")?;
+        }
+        Ok(())
+    }
+
+    fn ground_panel<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> anyhow::Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let tl = self.timeline;
+        let d = &self.outcome.derived;
+        let g = gravity(self.outcome);
+        let (per_unit, unit) = match g {
+            Some(g) => (1.0 / g, "g"),
+            None => (1.0, "m/s²"),
+        };
+        let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.ground_acc * per_unit)).collect();
+        let peak = scale::max_abs(points.iter().map(|p| p.1));
+        // The thresholds are in g: shown when the axis is in g and they are not far off the signal.
+        let shown = |threshold: Option<f64>| threshold.filter(|x| g.is_some() && x.is_finite() && *x > 0.0 && peak > 0.0 && *x <= 2.0 * peak);
+        let (uplift, slip) = (shown(d.uplift_acceleration_g), shown(d.slip_acceleration_g));
+        let y = scale::symmetric(peak.max(uplift.unwrap_or(0.0)).max(slip.unwrap_or(0.0)));
+
+        let mut entries = vec![Entry::new(Swatch::Line(INK), "ground acceleration a_g")];
+        // Without a tower panel above, the bands are explained here.
+        if alpha(self.outcome).is_none() && !tl.slides.is_empty() {
+            entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
+        }
+        if let Some(x) = uplift {
+            entries.push(Entry::new(Swatch::Dashed(GREEN), format!("±tan α = ±{} g: uplift", sig(x, 3))));
+        }
+        if let Some(x) = slip {
+            entries.push(Entry::new(Swatch::Dashed(ORANGE), format!("±μs = ±{} g: slip", sig(x, 3))));
+        }
+        let strip = legend::height(area, PLOT_LEFT, &entries)?;
+        let (top, panel) = area.split_vertically(strip);
+        legend::draw(&top, PLOT_LEFT, &entries)?;
+
+        let mut chart = timeline::time_chart(&panel, tl.range, y, &format!("a_g ({unit})"), true)?;
+        timeline::draw_slides(&mut chart, tl, y)?;
+        for (level, color) in [(uplift, GREEN), (slip, ORANGE)] {
+            if let Some(x) = level {
+                for sign in [-1.0, 1.0] {
+                    timeline::dashed_level(&mut chart, tl.range, sign * x, color.stroke_width(2))?;
+                }
+            }
+        }
+        for segment in scale::segments(points) {
+            chart.draw_series(LineSeries::new(segment, INK.stroke_width(1)))?;
+        }
+        timeline::draw_overturn(&mut chart, tl, y)?;
+        if peak <= 0.0 {
+            style::note(&panel, "a_g = 0 at every sample")?;
+        }
+        Ok(())
+    }
+}
+
+impl Figure for ThetaFigure<'_> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let rest = style::title_band(root, &self.outcome.name, &self.subtitle())?;
+        if alpha(self.outcome).is_none() {
+            return self.ground_panel(&rest);
+        }
+        let (_, h) = rest.dim_in_pixel();
+        let (upper, lower) = rest.split_vertically((f64::from(h) * 0.58) as u32);
+        self.theta_panel(&upper)?;
+        self.ground_panel(&lower)?;
+        Ok(())
+    }
+}
