@@ -300,7 +300,8 @@ fn an_axis_replaces_the_alternative_given_in_the_base() {
 
 #[test]
 fn cancelling_stops_after_the_cases_under_way_and_keeps_a_prefix() {
-    let s = ok(r#""ground.amplitude" = { from = 0.4, to = 1.0, steps = 40 }"#);
+    // More cases than the window lets the workers run ahead of the rows passed on.
+    let s = ok(&format!(r#""ground.amplitude" = {{ from = 0.4, to = 1.0, steps = {} }}"#, 3 * WINDOW));
     let cancel = AtomicBool::new(false);
     let mut seen = Vec::new();
     let done = s.run(Some(2), &cancel, |row| {
