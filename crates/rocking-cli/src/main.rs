@@ -3,11 +3,13 @@
 //!
 //! ```text
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
+//! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! ```
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
-//! stderr naming the file, the key and what is wrong), 2 on bad usage.
+//! stderr naming the file, the key and what is wrong), 2 on bad usage, 130
+//! when a sweep is interrupted by Ctrl-C (after writing the rows finished).
 
 mod commands;
 mod format;
@@ -30,6 +32,8 @@ struct Cli {
 enum Command {
     /// Run one scenario: writes summary.json, history.csv and events.csv.
     Run(commands::run::Args),
+    /// Run a parametric sweep: every combination of the [sweep] values is one case, one row of sweep.csv.
+    Sweep(commands::sweep::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
 }
@@ -46,9 +50,14 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Run(args) => commands::run::execute(args),
         Command::Check(args) => commands::check::execute(args),
+        Command::Sweep(args) => commands::sweep::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is::<commands::sweep::Interrupted>() => {
+            eprintln!("{e}");
+            ExitCode::from(130)
+        }
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::FAILURE

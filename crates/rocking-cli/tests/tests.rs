@@ -7,3 +7,4 @@ mod check;
 mod errors;
 mod guard;
 mod run;
+mod sweep;

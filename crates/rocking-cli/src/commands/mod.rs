@@ -2,6 +2,7 @@
 
 pub mod check;
 pub mod run;
+pub mod sweep;
 
 use anyhow::Context;
 use rocking_scenario::Scenario;

@@ -1,0 +1,164 @@
+//! `rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]`: a
+//! parametric study. The engine is `rocking_scenario::Sweep`; this file writes
+//! `sweep.csv` row by row, shows a progress bar on a terminal and stops
+//! cleanly on Ctrl-C.
+
+use crate::format::sig;
+use crate::output;
+use anyhow::Context;
+use indicatif::{ProgressBar, ProgressStyle};
+use rocking_scenario::{RunError, Sweep};
+use std::fmt;
+use std::fs::File;
+use std::io::{BufWriter, IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+/// The file of a sweep's rows.
+pub const SWEEP_CSV: &str = "sweep.csv";
+
+/// Set by the first Ctrl-C: no new case starts.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// Arguments of `rocking sweep`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The sweep file: a scenario plus a [sweep] table of dotted keys and their values.
+    pub sweep: PathBuf,
+    /// Output folder, created if needed [default: out/<sweep file stem>].
+    /// sweep.csv there is overwritten; an input file never is.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Also draw max θ/α against the first swept key (and a heat map for two numeric keys).
+    #[arg(long)]
+    pub plot: bool,
+    /// Worker threads [default: one per core].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub threads: Option<u32>,
+    /// Also print the threads used, the time per case and the peak memory.
+    #[arg(long, short)]
+    pub verbose: bool,
+}
+
+/// The sweep was stopped by Ctrl-C after writing `written` complete rows.
+#[derive(Debug)]
+pub struct Interrupted {
+    /// Rows written (cases `0..written`).
+    pub written: usize,
+    /// Cases in the sweep.
+    pub total: usize,
+    /// The file holding them.
+    pub csv: PathBuf,
+}
+
+impl fmt::Display for Interrupted {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "interrupted: wrote {} of {} cases to {} (complete rows, in order)",
+            self.written,
+            self.total,
+            self.csv.display()
+        )
+    }
+}
+
+impl std::error::Error for Interrupted {}
+
+/// Runs the sweep and writes `sweep.csv`.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(&args.sweep).with_context(|| format!("cannot read {}", args.sweep.display()))?;
+    // The sweep's errors already name the file, the key and the cause.
+    let sweep = Sweep::from_toml_str(&text, &args.sweep)?;
+    let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.sweep));
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+    let csv_path = dir.join(SWEEP_CSV);
+    let mut inputs = vec![args.sweep.clone()];
+    inputs.extend(sweep.inputs().iter().cloned());
+    output::refuse_to_overwrite_inputs(std::slice::from_ref(&csv_path), &inputs)?;
+
+    let file = File::create(&csv_path).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let mut csv = BufWriter::new(file);
+    writeln!(csv, "{}", sweep.csv_header()).with_context(|| format!("cannot write {}", csv_path.display()))?;
+
+    // A second Ctrl-C while the cases under way finish ends the process at once.
+    // Without a handler (one already set), Ctrl-C simply ends the process.
+    let _ = ctrlc::set_handler(|| {
+        if INTERRUPTED.swap(true, Ordering::SeqCst) {
+            eprintln!("interrupted twice: stopping now; the last row of sweep.csv may be incomplete");
+            std::process::exit(130);
+        }
+    });
+    let progress = progress_bar(sweep.len());
+    let start = Instant::now();
+    let result = sweep.run(args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
+        writeln!(csv, "{}", row.to_csv_line())?;
+        progress.inc(1);
+        Ok::<(), std::io::Error>(())
+    });
+    progress.finish_and_clear();
+    let flushed = csv.flush();
+    let done = match result {
+        Ok(done) => done,
+        Err(RunError::Stopped(e)) => return Err(e).with_context(|| format!("cannot write {}", csv_path.display())),
+        Err(e) => return Err(e.into()),
+    };
+    flushed.with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let wall = start.elapsed().as_secs_f64();
+    if done.cancelled {
+        return Err(Interrupted {
+            written: done.written,
+            total: sweep.len(),
+            csv: csv_path,
+        }
+        .into());
+    }
+
+    let mut lines = vec![format!(
+        "{}: {} cases in {} s{}",
+        sweep.name(),
+        done.written,
+        sig(wall, 3),
+        match done.failed {
+            0 => String::new(),
+            n => format!(", {n} failed (see the error column)"),
+        }
+    )];
+    if args.verbose {
+        lines.push(format!(
+            "  {} threads, {} ms per case ({} ms of one thread's time)",
+            done.threads,
+            sig(1e3 * wall / done.written.max(1) as f64, 3),
+            sig(1e3 * wall * done.threads as f64 / done.written.max(1) as f64, 3)
+        ));
+        if let Some(kb) = peak_memory_kb() {
+            lines.push(format!("  peak memory (VmHWM) {} MB", sig(kb as f64 / 1024.0, 3)));
+        }
+    }
+    lines.push(format!("wrote {} in {}", SWEEP_CSV, dir.display()));
+    super::print(&(lines.join("\n") + "\n"))?;
+    if args.plot {
+        crate::plot::sweep_figures(&dir, sweep.name(), &csv_path, &sweep.axis_keys()).context("drawing the figures")?;
+    }
+    Ok(())
+}
+
+/// A bar with the rate and the time left on stderr, when stderr is a terminal; hidden otherwise.
+fn progress_bar(len: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(len as u64);
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} cases  {per_sec}  {elapsed} elapsed, {eta} left") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// The process's peak resident memory (kB), from `/proc/self/status` (Linux only).
+fn peak_memory_kb() -> Option<u64> {
+    let status = std::fs::read_to_string(Path::new("/proc/self/status")).ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
+}
