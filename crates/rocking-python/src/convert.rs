@@ -1,0 +1,200 @@
+//! Values between Python and the scenario's TOML table: a dict in (the same
+//! nesting as the TOML file), a dict out (`Scenario.to_dict`), and the JSON
+//! summary out.
+//!
+//! `None` stands for an absent key, as JSON's `null` does in
+//! [`rocking_scenario::Scenario::from_json`]; a `None` inside a list is an error.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use toml::{Table, Value};
+
+/// A value that has no TOML counterpart, at a dotted key.
+#[derive(Debug)]
+pub struct Unsupported {
+    /// The dotted key (`tower.points[0]`), empty for the whole object.
+    pub key: String,
+    /// What is wrong.
+    pub reason: String,
+}
+
+impl Unsupported {
+    /// The one-line message, `origin: key: reason` (the form of the scenario's errors).
+    pub fn message(&self, origin: &str) -> String {
+        if self.key.is_empty() {
+            format!("{origin}: {}", self.reason)
+        } else {
+            format!("{origin}: {}: {}", self.key, self.reason)
+        }
+    }
+}
+
+/// The table of a Python mapping (a `dict` or any `collections.abc.Mapping`).
+pub fn table_of(obj: &Bound<'_, PyAny>, prefix: &str) -> Result<Table, Unsupported> {
+    let items = mapping_items(obj).ok_or_else(|| Unsupported {
+        key: prefix.to_string(),
+        reason: format!("expected a dict, got {}", type_name(obj)),
+    })?;
+    table_of_items(items, prefix)
+}
+
+fn table_of_items(items: Vec<(Bound<'_, PyAny>, Bound<'_, PyAny>)>, prefix: &str) -> Result<Table, Unsupported> {
+    let mut table = Table::new();
+    for (key, value) in items {
+        let Ok(key) = key.cast::<PyString>().map(|s| s.to_string()) else {
+            return Err(Unsupported {
+                key: prefix.to_string(),
+                reason: format!("keys must be strings, got {}", type_name(&key)),
+            });
+        };
+        let dotted = if prefix.is_empty() { key.clone() } else { format!("{prefix}.{key}") };
+        if let Some(v) = value_of(&value, &dotted)? {
+            table.insert(key, v);
+        }
+    }
+    Ok(table)
+}
+
+/// The `(key, value)` pairs of a mapping, `None` if `obj` is not one.
+fn mapping_items<'py>(obj: &Bound<'py, PyAny>) -> Option<Vec<(Bound<'py, PyAny>, Bound<'py, PyAny>)>> {
+    if let Ok(dict) = obj.cast::<PyDict>() {
+        return Some(dict.iter().collect());
+    }
+    // Any other mapping (e.g. types.MappingProxyType): keys() and __getitem__.
+    if obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
+        return None;
+    }
+    let keys = obj.call_method0("keys").ok()?;
+    let mut out = Vec::new();
+    for key in keys.try_iter().ok()? {
+        let key = key.ok()?;
+        let value = obj.get_item(&key).ok()?;
+        out.push((key, value));
+    }
+    Some(out)
+}
+
+/// The TOML value of a Python value; `Ok(None)` for `None` (an absent key).
+fn value_of(obj: &Bound<'_, PyAny>, key: &str) -> Result<Option<Value>, Unsupported> {
+    let unsupported = |reason: String| Unsupported { key: key.to_string(), reason };
+    if obj.is_none() {
+        return Ok(None);
+    }
+    // bool before int: Python's bool is an int.
+    if let Ok(b) = obj.cast::<PyBool>() {
+        return Ok(Some(Value::Boolean(b.is_true())));
+    }
+    if obj.is_instance_of::<PyInt>() {
+        return obj
+            .extract::<i64>()
+            .map(|i| Some(Value::Integer(i)))
+            .map_err(|_| unsupported("integer out of the 64-bit range".into()));
+    }
+    if let Ok(f) = obj.cast::<PyFloat>() {
+        return Ok(Some(Value::Float(f.value())));
+    }
+    if let Ok(s) = obj.cast::<PyString>() {
+        return Ok(Some(Value::String(s.to_string())));
+    }
+    if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() || is_ndarray(obj) {
+        let mut items = Vec::new();
+        for (i, item) in obj.try_iter().map_err(|e| unsupported(e.to_string()))?.enumerate() {
+            let item_key = format!("{key}[{i}]");
+            let item = item.map_err(|e| Unsupported {
+                key: item_key.clone(),
+                reason: e.to_string(),
+            })?;
+            match value_of(&item, &item_key)? {
+                Some(v) => items.push(v),
+                None => {
+                    return Err(Unsupported {
+                        key: item_key,
+                        reason: "None is not allowed in a list".into(),
+                    })
+                }
+            }
+        }
+        return Ok(Some(Value::Array(items)));
+    }
+    if let Some(items) = mapping_items(obj) {
+        return table_of_items(items, key).map(|t| Some(Value::Table(t)));
+    }
+    // A path (pathlib.Path) is its string; a NumPy integer or float scalar its number.
+    if obj.hasattr("__fspath__").unwrap_or(false) {
+        if let Ok(path) = obj.extract::<std::path::PathBuf>() {
+            return Ok(Some(Value::String(path.to_string_lossy().into_owned())));
+        }
+    }
+    if obj.hasattr("__index__").unwrap_or(false) {
+        if let Ok(i) = obj.extract::<i64>() {
+            return Ok(Some(Value::Integer(i)));
+        }
+    }
+    if obj.hasattr("__float__").unwrap_or(false) {
+        if let Ok(f) = obj.extract::<f64>() {
+            return Ok(Some(Value::Float(f)));
+        }
+    }
+    Err(unsupported(format!(
+        "expected a number, a string, a boolean, a list or a dict, got {}",
+        type_name(obj)
+    )))
+}
+
+fn is_ndarray(obj: &Bound<'_, PyAny>) -> bool {
+    obj.get_type().name().is_ok_and(|n| n == "ndarray") && obj.hasattr("tolist").unwrap_or(false)
+}
+
+fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type()
+        .name()
+        .map_or_else(|_| "an object".to_string(), |n| format!("an object of type `{n}`"))
+}
+
+/// A TOML table as a Python dict (dates and times become strings).
+pub fn table_to_py<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    for (key, value) in table {
+        dict.set_item(key, toml_to_py(py, value)?)?;
+    }
+    Ok(dict)
+}
+
+fn toml_to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match value {
+        Value::String(s) => PyString::new(py, s).into_any(),
+        Value::Integer(i) => i.into_pyobject(py)?.into_any(),
+        Value::Float(f) => PyFloat::new(py, *f).into_any(),
+        Value::Boolean(b) => PyBool::new(py, *b).to_owned().into_any(),
+        Value::Datetime(d) => PyString::new(py, &d.to_string()).into_any(),
+        Value::Array(items) => PyList::new(py, items.iter().map(|v| toml_to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?.into_any(),
+        Value::Table(t) => table_to_py(py, t)?.into_any(),
+    })
+}
+
+/// A JSON value (the summary) as Python objects: `null` → `None`, objects → dicts.
+pub fn json_to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+    use serde_json::Value as J;
+    Ok(match value {
+        J::Null => py.None().into_bound(py),
+        J::Bool(b) => PyBool::new(py, *b).to_owned().into_any(),
+        J::Number(n) => {
+            if let Some(u) = n.as_u64() {
+                u.into_pyobject(py)?.into_any()
+            } else if let Some(i) = n.as_i64() {
+                i.into_pyobject(py)?.into_any()
+            } else {
+                PyFloat::new(py, n.as_f64().unwrap_or(f64::NAN)).into_any()
+            }
+        }
+        J::String(s) => PyString::new(py, s).into_any(),
+        J::Array(items) => PyList::new(py, items.iter().map(|v| json_to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?.into_any(),
+        J::Object(map) => {
+            let dict = PyDict::new(py);
+            for (k, v) in map {
+                dict.set_item(k, json_to_py(py, v)?)?;
+            }
+            dict.into_any()
+        }
+    })
+}

@@ -1,0 +1,32 @@
+//! # rocking-python
+//!
+//! The extension module `rocking._rocking` of the Python package `rocking`
+//! (`python/` at the repository root, built by maturin). It wraps
+//! `rocking-scenario`: a scenario from a TOML file or a dict, a run with its
+//! history as NumPy arrays, a parametric sweep on all cores, and the derived
+//! quantities. The Python package adds the `Result` class and the docs; the
+//! stubs are in `python/rocking/_rocking.pyi`.
+//!
+//! The GIL is released while a case or a sweep runs. Errors are `ValueError`
+//! (bad input) or `RuntimeError` (a numerical failure) with the one-line
+//! message of the `rocking` command (`file: key: what is wrong`).
+
+mod convert;
+mod error;
+mod run;
+mod scenario;
+mod sweep;
+
+use pyo3::prelude::*;
+
+/// The native part of the `rocking` package; use `rocking` itself.
+#[pymodule]
+fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<scenario::PyScenario>()?;
+    m.add_function(wrap_pyfunction!(run::run_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(run::derived, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_file_raw, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,122 @@
+//! `rocking.sweep`: a parametric study on all cores with the GIL released,
+//! its rows gathered into NumPy columns in case order.
+
+use crate::convert::table_of;
+use crate::error::scenario_error;
+use crate::scenario::PyScenario;
+use numpy::PyArray1;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use rocking_scenario::{Cell, RunError, Sweep, ERROR_COLUMN};
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::time::{Duration, Instant};
+use toml::Value;
+
+/// How often the sweep looks for Ctrl-C (KeyboardInterrupt) while it runs.
+const SIGNAL_CHECK: Duration = Duration::from_millis(100);
+
+/// Runs the cases of `scenario` with `axes` (the `[sweep]` table of a sweep
+/// file, as a dict) on `threads` worker threads (`None`: one per core) and
+/// returns the columns of `sweep.csv` as NumPy arrays, in header order.
+#[pyfunction]
+#[pyo3(signature = (scenario, axes, threads=None))]
+pub fn sweep_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>, axes: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
+    let threads = thread_count(threads)?;
+    let scenario = scenario.get();
+    let origin = scenario.origin();
+    let axes = table_of(axes, "sweep").map_err(|u| PyValueError::new_err(u.message(&origin.display().to_string())))?;
+    let mut table = scenario.table().clone();
+    table.insert("sweep".to_string(), Value::Table(axes));
+    // Building the sweep parses its first cases and may read a record: without the GIL.
+    let sweep = py.detach(|| Sweep::from_table(table, origin)).map_err(|e| scenario_error(&e))?;
+    run_sweep(py, &sweep, threads)
+}
+
+/// Runs a sweep file (a scenario plus its `[sweep]` table), as `rocking sweep` does.
+#[pyfunction]
+#[pyo3(signature = (path, threads=None))]
+pub fn sweep_file_raw(py: Python<'_>, path: PathBuf, threads: Option<i64>) -> PyResult<Bound<'_, PyDict>> {
+    let threads = thread_count(threads)?;
+    let text = std::fs::read_to_string(&path).map_err(|e| crate::scenario::os_error(&e, &path))?;
+    let sweep = py.detach(|| Sweep::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?;
+    run_sweep(py, &sweep, threads)
+}
+
+fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
+    match threads {
+        None => Ok(None),
+        Some(n) => match usize::try_from(n) {
+            Ok(n) if n >= 1 => Ok(Some(n)),
+            _ => Err(PyValueError::new_err(format!("threads must be None or an integer >= 1, got {n}"))),
+        },
+    }
+}
+
+fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>) -> PyResult<Bound<'py, PyDict>> {
+    let header = sweep.header();
+    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(sweep.len())).collect();
+    let cancel = AtomicBool::new(false);
+    let mut last_check = Instant::now();
+    let finished = py.detach(|| {
+        sweep.run(threads, &cancel, |row| {
+            for (column, cell) in columns.iter_mut().zip(row.cells) {
+                column.push(cell);
+            }
+            if last_check.elapsed() < SIGNAL_CHECK {
+                return Ok(());
+            }
+            last_check = Instant::now();
+            // Ctrl-C: the handler raises KeyboardInterrupt here, and the sweep stops.
+            Python::attach(|py| py.check_signals())
+        })
+    });
+    match finished {
+        Ok(_) => {}
+        Err(RunError::Stopped(e)) => return Err(e),
+        Err(e) => return Err(PyRuntimeError::new_err(format!("{}: {e}", sweep.origin().display()))),
+    }
+    let out = PyDict::new(py);
+    for (name, cells) in header.iter().zip(columns) {
+        out.set_item(name, column(py, name, cells)?)?;
+    }
+    Ok(out)
+}
+
+/// The summary's text and boolean fields (interface.md, "Outputs of `run`";
+/// rocking-scenario's `summary_json`) and the error column: their type when
+/// every cell of the column is empty (every case failed).
+const TEXT_COLUMNS: [&str; 3] = ["name", "end_reason", ERROR_COLUMN];
+const BOOL_COLUMNS: [&str; 2] = ["overturned", "tower_uplift_detected"];
+
+/// A column as a NumPy array: numbers as float64 (`NaN` where the CSV field
+/// is empty), booleans as bool (`False` where empty: a failed case, see
+/// `error`), text as an object array of `str` (`""` where empty), and a
+/// mixture as an object array of Python values (`None` where empty).
+fn column<'py>(py: Python<'py>, name: &str, cells: Vec<Cell>) -> PyResult<Bound<'py, PyAny>> {
+    let all = |f: fn(&Cell) -> bool| cells.iter().all(|c| c.is_empty() || f(c));
+    let all_empty = cells.iter().all(Cell::is_empty);
+    let is_text = all(|c| matches!(c, Cell::Text(_))) && (!all_empty || TEXT_COLUMNS.contains(&name));
+    let is_bool = all(|c| matches!(c, Cell::Bool(_))) && (!all_empty || BOOL_COLUMNS.contains(&name));
+    if !is_text && !is_bool && all(|c| matches!(c, Cell::Float(_) | Cell::Int(_))) {
+        let values = cells.iter().map(|c| c.as_f64().unwrap_or(f64::NAN)).collect();
+        return Ok(PyArray1::<f64>::from_vec(py, values).into_any());
+    }
+    if is_bool {
+        let values = cells.iter().map(|c| matches!(c, Cell::Bool(true))).collect();
+        return Ok(PyArray1::<bool>::from_vec(py, values).into_any());
+    }
+    let empty = if is_text { PyString::intern(py, "").into_any().unbind() } else { py.None() };
+    let mut objects: Vec<Py<PyAny>> = Vec::with_capacity(cells.len());
+    for cell in cells {
+        objects.push(match cell {
+            Cell::Empty => empty.clone_ref(py),
+            Cell::Bool(b) => b.into_pyobject(py)?.to_owned().into_any().unbind(),
+            Cell::Int(i) => i.into_pyobject(py)?.into_any().unbind(),
+            Cell::Float(x) => x.into_pyobject(py)?.into_any().unbind(),
+            Cell::Text(s) => PyString::new(py, &s).into_any().unbind(),
+        });
+    }
+    Ok(PyArray1::from_vec(py, objects).into_any())
+}
