@@ -1,0 +1,173 @@
+"""Rocking of a slender rigid tower on a building that may slide on its foundation.
+
+Housner's rocking block on a Coulomb slider under horizontal ground
+acceleration, integrated in Rust with every regime change (uplift, impact,
+stick, slip, reversal, overturning) located exactly. The package reads the same
+scenarios as the ``rocking`` command and gives the same numbers::
+
+    import rocking
+
+    scenario = rocking.Scenario.from_toml("examples/tower-on-church.toml")
+    result = rocking.run(scenario)
+    print(result.summary["max_theta_over_alpha"], result.summary["overturned"])
+    theta = result.history["theta"]          # NumPy float64 array, one row per output_dt
+    grid = rocking.sweep(scenario, {"ground.frequency": {"from": 3, "to": 7, "steps": 41}})
+
+Errors raise ``ValueError`` (bad input) or ``RuntimeError`` (a numerical
+failure of a run) with the one-line message of the command line,
+``file: key: what is wrong`` (``<dict>`` in place of the file for a dict).
+"""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Union
+
+from ._rocking import Scenario, __version__
+from ._rocking import derived as _derived
+from ._rocking import run_raw as _run_raw
+from ._rocking import sweep_file_raw as _sweep_file_raw
+from ._rocking import sweep_raw as _sweep_raw
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+    import pandas
+
+__all__ = ["Result", "Scenario", "ScenarioLike", "derived", "run", "sweep", "__version__"]
+
+ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
+"""A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
+
+HISTORY_COLUMNS = ("t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc")
+"""The float64 columns of :attr:`Result.history` before ``regime`` and the extra points (``p1_dx``, ``p1_abs_acc``, …)."""
+
+EVENT_COLUMNS = ("t", "kind", "theta", "theta_dot_before", "theta_dot_after", "slip_vel", "slip", "regime")
+"""The keys of each event in :attr:`Result.events`, the columns of ``events.csv``."""
+
+
+def _as_scenario(scenario: ScenarioLike) -> Scenario:
+    """The :class:`Scenario` of a scenario, a dict or a path."""
+    if isinstance(scenario, Scenario):
+        return scenario
+    if isinstance(scenario, Mapping):
+        return Scenario.from_dict(scenario)
+    if isinstance(scenario, (str, os.PathLike)):
+        return Scenario.from_toml(scenario)
+    raise TypeError(f"expected a rocking.Scenario, a dict or a path, got {type(scenario).__name__}")
+
+
+class Result:
+    """The outcome of :func:`run`: what ``rocking run`` writes, as Python objects.
+
+    Attributes:
+        scenario: The scenario that was run.
+        summary: The fields of ``summary.json`` (``max_theta_over_alpha``,
+            ``overturned``, ``time_in_regime_s`` as a nested dict, ``wall_time_s``, …);
+            ``None`` where a quantity does not exist (the tower's without a tower).
+        history: The columns of ``history.csv``: 1-D ``float64`` NumPy arrays
+            ``t``, ``ground_acc``, ``theta``, ``theta_dot``, ``slip``, ``slip_vel``,
+            ``top_dx``, ``top_abs_acc``, ``regime``, then ``pK_dx``, ``pK_abs_acc``
+            for each extra point K = 1, 2, … of ``tower.points`` (the order of
+            ``history.csv``). ``regime`` is a NumPy array of dtype ``object`` holding
+            the Python strings ``"rest"``, ``"rocking"``, ``"sliding"``,
+            ``"rocking_sliding"``. One row every ``output_dt`` from ``t = 0`` to the
+            end of the run (SI units: s, m/s², rad, rad/s, m, m/s).
+        events: The rows of ``events.csv``, each a dict with the keys
+            ``t``, ``kind`` (``"uplift"``, ``"impact"``, ``"rest"``, ``"slip"``,
+            ``"stick"``, ``"reverse"``, ``"overturn"``), ``theta``,
+            ``theta_dot_before``, ``theta_dot_after``, ``slip_vel``, ``slip``, ``regime``.
+    """
+
+    __slots__ = ("scenario", "summary", "history", "events")
+
+    def __init__(self, scenario: Scenario, summary: Dict[str, Any], history: Dict[str, "np.ndarray"], events: List[Dict[str, Any]]) -> None:
+        """Wraps the parts of a run (made by :func:`run`)."""
+        self.scenario = scenario
+        self.summary = summary
+        self.history = history
+        self.events = events
+
+    def to_pandas(self) -> "pandas.DataFrame":
+        """The history as a pandas DataFrame, one column per :attr:`history` array.
+
+        Raises:
+            ImportError: pandas is not installed.
+        """
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("rocking.Result.to_pandas() needs pandas, which is not installed: pip install pandas") from e
+        return pd.DataFrame(self.history)
+
+    def __repr__(self) -> str:
+        """A one-line description: the scenario, the rows, the events, whether it overturned."""
+        rows = len(self.history["t"]) if "t" in self.history else 0
+        return f"Result(scenario={self.scenario.name!r}, rows={rows}, events={len(self.events)}, overturned={self.summary.get('overturned')})"
+
+
+def run(scenario: ScenarioLike) -> Result:
+    """Runs one analysis, as ``rocking run`` does, with the GIL released.
+
+    Args:
+        scenario: A :class:`Scenario`, a dict of its keys or the path of a TOML file.
+
+    Returns:
+        A :class:`Result` with the summary, the history and the events.
+
+    Raises:
+        ValueError: The scenario or its ground-motion record is invalid.
+        RuntimeError: The integration failed (``file: integration failed at t = … s: …``).
+    """
+    s = _as_scenario(scenario)
+    summary, history, events = _run_raw(s)
+    return Result(s, summary, history, events)
+
+
+def derived(scenario: ScenarioLike) -> Dict[str, Optional[float]]:
+    """The quantities derived from a scenario without running it (those ``rocking check`` prints).
+
+    Keys: ``alpha_rad``, ``R_m``, ``p_rad_s``, ``restitution``,
+    ``uplift_acceleration_g``, ``slip_acceleration_g`` (named as in the summary),
+    ``inertia_pivot_kg_m2``, ``tower_mass_kg``, ``sliding_mass_kg``, ``g_m_s2``;
+    ``None`` for a quantity of an absent body.
+    """
+    return _derived(_as_scenario(scenario))
+
+
+AxisValues = Union[Sequence[Any], Mapping[str, Any], "npt.ArrayLike"]
+"""The values of one sweep axis: a list, or ``{"from": a, "to": b, "steps": n}`` (or ``"step": h``)."""
+
+
+def sweep(scenario: ScenarioLike, axes: Optional[Mapping[str, AxisValues]] = None, *, threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
+    """Runs a parametric study, as ``rocking sweep`` does, on all cores with the GIL released.
+
+    Args:
+        scenario: The base case: a :class:`Scenario`, a dict of its keys or the path of a
+            TOML file; with ``axes=None``, the path of a sweep file (a scenario with a
+            ``[sweep]`` table).
+        axes: The ``[sweep]`` table of a sweep file: dotted scenario keys mapped to a list
+            of values or ``{"from": 3.0, "to": 7.0, "steps": 41}`` (or ``"step": 0.1``), e.g.
+            ``{"ground.frequency": {"from": 3, "to": 7, "steps": 41}, "ground.amplitude": [0.3, 0.5]}``.
+            Every combination is one case; the first axis varies slowest.
+        threads: Worker threads; ``None`` for one per core (or ``RAYON_NUM_THREADS``).
+
+    Returns:
+        The columns of ``sweep.csv``, one row per case in case order: the swept values
+        first (named by their keys), then every scalar field of the summary but
+        ``wall_time_s`` (nested ones dotted: ``time_in_regime_s.rest``), then ``error``.
+        Numbers are ``float64`` arrays (``NaN`` where the CSV field is empty: a quantity
+        that does not exist, or any result of a failed case); booleans are ``bool``
+        arrays (``False`` for a failed case); text is an ``object`` array of ``str``
+        (``""`` where empty). A case that fails (a bad combination, a numerical
+        failure) does not stop the others: its message is in ``error``.
+
+    Raises:
+        ValueError: The base scenario or an axis is invalid (``file: sweep."key": …``).
+        KeyboardInterrupt: Ctrl-C stops the sweep after the cases under way.
+    """
+    if axes is None:
+        if isinstance(scenario, (str, os.PathLike)):
+            return _sweep_file_raw(scenario, threads)
+        raise TypeError("rocking.sweep(): give the axes, or the path of a sweep file (with a [sweep] table)")
+    return _sweep_raw(_as_scenario(scenario), axes, threads)

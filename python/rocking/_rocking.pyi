@@ -1,0 +1,54 @@
+"""Type stubs of the extension module ``rocking._rocking`` (Rust, PyO3). Use the ``rocking`` package."""
+
+import os
+from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+
+import numpy as np
+
+__version__: str
+
+class Scenario:
+    """A validated scenario: a tower, a building or both, a ground motion, initial state and settings."""
+
+    @staticmethod
+    def from_toml(path: Union[str, "os.PathLike[str]"]) -> "Scenario":
+        """Reads and validates a scenario file (TOML); a relative record path is resolved against its folder.
+
+        Raises ``ValueError`` (``file: key: what is wrong``) or ``OSError`` if the file cannot be read.
+        """
+        ...
+    @staticmethod
+    def from_dict(d: Mapping[str, Any]) -> "Scenario":
+        """Validates a scenario given as a dict with the keys of the TOML file (sections as nested dicts).
+
+        ``None`` is an absent key; a relative ``ground.file`` is resolved against the current directory.
+        Raises ``ValueError`` (``<dict>: key: what is wrong``).
+        """
+        ...
+    def to_dict(self) -> Dict[str, Any]:
+        """The keys as given (no defaults filled in), ``ground.file`` as the absolute path of the record read."""
+        ...
+    @property
+    def name(self) -> str:
+        """The scenario's ``name`` (default: the file stem, or ``<dict>``)."""
+        ...
+    @property
+    def origin(self) -> str:
+        """The file the scenario was read from, or ``<dict>``."""
+        ...
+
+def run_raw(scenario: Scenario) -> Tuple[Dict[str, Any], Dict[str, "np.ndarray"], List[Dict[str, Any]]]:
+    """Runs a scenario with the GIL released: ``(summary, history, events)``; see ``rocking.run``."""
+    ...
+
+def derived(scenario: Scenario) -> Dict[str, Optional[float]]:
+    """The quantities derived from a scenario without running it; see ``rocking.derived``."""
+    ...
+
+def sweep_raw(scenario: Scenario, axes: Mapping[str, Any], threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
+    """Runs a sweep of ``scenario`` over ``axes`` with the GIL released; see ``rocking.sweep``."""
+    ...
+
+def sweep_file_raw(path: Union[str, "os.PathLike[str]"], threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
+    """Runs a sweep file (a scenario with a ``[sweep]`` table); see ``rocking.sweep``."""
+    ...
