@@ -235,10 +235,13 @@ fn the_figure_6_example_runs_and_rotation_falls_with_frequency() {
     assert_eq!(rows.len(), 4 * 41);
     let (error, peak) = (col(&header, "error"), col(&header, "max_theta_over_alpha"));
     assert!(rows.iter().all(|r| r[error].is_empty()));
-    for block in rows.chunks(41) {
-        assert_eq!((block[0][1].as_str(), block[40][1].as_str()), ("3.0", "7.0"));
-        let (low, high) = (number(&block[0][peak]), number(&block[40][peak]));
-        assert!(low > high && high > 0.0, "{} g: θ/α {low} at 3 Hz, {high} at 7 Hz", block[0][0]);
+    assert_eq!(&header[..2], ["ground.frequency", "ground.amplitude"], "the figure's x axis first");
+    // Rows 0..4 are at 3 Hz, the last four at 7 Hz, one per amplitude.
+    let (low, high) = (&rows[..4], &rows[rows.len() - 4..]);
+    for (at3, at7) in low.iter().zip(high) {
+        assert_eq!((at3[0].as_str(), at7[0].as_str(), &at3[1]), ("3.0", "7.0", &at7[1]));
+        let (low, high) = (number(&at3[peak]), number(&at7[peak]));
+        assert!(low > high && high > 0.0, "{} g: θ/α {low} at 3 Hz, {high} at 7 Hz", at3[1]);
     }
     assert!(example("figure6-sweep.toml").exists());
 }
