@@ -4,10 +4,10 @@
 //! shared counter, run them, and send the rows to the calling thread, which
 //! puts them back in order and passes each to the caller's `on_row` as soon as
 //! every earlier row has been passed. A worker does not start case `i` until
-//! row `i − WINDOW` has been passed on, so at most [`WINDOW`] rows wait at any
-//! time: memory does not grow with the number of cases, even when one case
-//! takes far longer than the others. No case is ever materialised before a
-//! worker takes it.
+//! row `i − w` has been passed on (`w` = [`WINDOW`], or 64 per thread if that
+//! is more), so at most `w` rows wait at any time: memory does not grow with
+//! the number of cases, even when one case takes far longer than the others.
+//! A case's scenario is only built when a worker takes it.
 //!
 //! Cancellation: once `cancel` is set, no worker takes a new case; the cases
 //! under way finish, and the rows passed on are exactly cases `0..written`.
@@ -19,7 +19,9 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{mpsc, Condvar, Mutex, PoisonError};
 use std::time::Duration;
 
-/// At most this many rows wait to be passed on (per worker, at least 64).
+/// The reorder window: a worker does not start case `i` before row
+/// `i − max(WINDOW, 64 × threads)` has been passed on, so at most that many
+/// rows (a few kB each) are ever held.
 pub const WINDOW: usize = 1024;
 
 /// How often a worker held back by the window looks at the cancel flag.
@@ -57,6 +59,8 @@ impl Sweep {
     /// calling thread with each row in case order. Setting `cancel` stops the
     /// run after the cases under way; an error from `on_row` stops it too and
     /// is returned. A panic inside a case (a bug) becomes that case's error.
+    /// Memory stays flat in the number of cases: at most [`WINDOW`] rows (64
+    /// per thread if more) are held, and `on_row` sees each row once.
     pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, mut on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads.unwrap_or(0))
