@@ -1,0 +1,107 @@
+"""Shared fixtures: the repository's example scenarios and the `rocking` command to compare with.
+
+The command is ``$ROCKING_CLI`` if set, else ``target/release/rocking`` at the
+repository root (or under ``$CARGO_TARGET_DIR``). Without it the comparisons
+skip, unless ``ROCKING_REQUIRE_CLI=1`` (set by ``scripts/python-tests.sh``),
+which turns the skip into a failure.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any, Dict, List, Optional
+
+import pytest
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - Python < 3.11
+    tomllib = None
+
+ROOT = Path(__file__).resolve().parents[2]
+"""The repository root."""
+EXAMPLES = ROOT / "examples"
+
+
+def is_sweep_file(path: Path) -> bool:
+    """Whether a TOML file is a sweep file (has a top-level ``[sweep]`` table)."""
+    text = path.read_text(encoding="utf-8")
+    if tomllib is not None:
+        return "sweep" in tomllib.loads(text)
+    return any(line.strip().startswith("[sweep]") for line in text.splitlines())
+
+
+def example_files(sweeps: bool) -> List[Path]:
+    """``examples/*.toml`` and ``examples/*/*.toml``: the scenarios, or the sweep files."""
+    files = sorted(EXAMPLES.glob("*.toml")) + sorted(EXAMPLES.glob("*/*.toml"))
+    return [f for f in files if is_sweep_file(f) == sweeps]
+
+
+def _find_cli() -> Optional[Path]:
+    """The `rocking` binary, if it has been built."""
+    if os.environ.get("ROCKING_CLI"):
+        return Path(os.environ["ROCKING_CLI"])
+    targets = [Path(os.environ["CARGO_TARGET_DIR"])] if os.environ.get("CARGO_TARGET_DIR") else []
+    targets.append(ROOT / "target")
+    for target in targets:
+        exe = target / "release" / "rocking"
+        if exe.exists():
+            return exe
+    return None
+
+
+@pytest.fixture(scope="session")
+def cli() -> Path:
+    """The path of the `rocking` binary (skips, or fails under ROCKING_REQUIRE_CLI=1, if absent)."""
+    exe = _find_cli()
+    if exe is None or not exe.exists():
+        message = "the rocking binary is not built: run scripts/python-tests.sh, or set ROCKING_CLI"
+        if os.environ.get("ROCKING_REQUIRE_CLI") == "1":
+            pytest.fail(message)
+        pytest.skip(message)
+    return exe
+
+
+def run_cli(cli: Path, *args: Any, cwd: Optional[Path] = None) -> subprocess.CompletedProcess:
+    """Runs the `rocking` command, capturing its output as text."""
+    return subprocess.run([str(cli), *map(str, args)], capture_output=True, text=True, cwd=cwd, check=False)
+
+
+def cli_error(cli: Path, *args: Any, cwd: Optional[Path] = None) -> str:
+    """The one-line error of a failing command, without its ``error: `` prefix."""
+    done = run_cli(cli, *args, cwd=cwd)
+    assert done.returncode == 1, f"expected exit status 1, got {done.returncode}: {done.stderr}"
+    line = done.stderr.strip()
+    assert "\n" not in line, line
+    assert line.startswith("error: "), line
+    return line[len("error: ") :]
+
+
+def cli_run(cli: Path, scenario: Path, out: Path) -> Dict[str, Any]:
+    """Runs ``rocking run`` into `out`; returns the summary, the history rows and the event rows."""
+    done = run_cli(cli, "run", scenario, "--out", out)
+    assert done.returncode == 0, done.stderr
+    with open(out / "summary.json", encoding="utf-8") as f:
+        summary = json.load(f)
+    with open(out / "history.csv", newline="", encoding="utf-8") as f:
+        history = list(csv.DictReader(f))
+    with open(out / "events.csv", newline="", encoding="utf-8") as f:
+        events = list(csv.DictReader(f))
+    return {"summary": summary, "history": history, "events": events}
+
+
+def flatten(obj: Dict[str, Any], prefix: str = "") -> Dict[str, Any]:
+    """The scalar fields of a summary, nested objects with dotted names (as sweep.csv has them)."""
+    out: Dict[str, Any] = {}
+    for key, value in obj.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(flatten(value, f"{name}."))
+        elif not isinstance(value, list):
+            out[name] = value
+    return out
