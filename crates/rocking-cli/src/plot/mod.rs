@@ -50,7 +50,6 @@ pub fn run_figures(dir: &Path, outcome: &Outcome) -> anyhow::Result<Vec<PathBuf>
 /// Draws the figures of a sweep from its `sweep.csv` into `dir`: max θ/α
 /// against the first axis with one curve per value of the second, and for two
 /// numeric axes a heat map; `axis_keys` are the swept dotted keys in order.
-#[allow(dead_code)] // called by `rocking sweep --plot`, which is being written
 pub fn sweep_figures(dir: &Path, title: &str, csv: &Path, axis_keys: &[String]) -> anyhow::Result<Vec<PathBuf>> {
     let table = sweep_table::SweepTable::read(csv, axis_keys)?;
     let curves = sweep_curves::CurvesFigure { title, table: &table };
