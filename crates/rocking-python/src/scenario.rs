@@ -13,8 +13,10 @@ use toml::{Table, Value};
 /// What a scenario given as a dict is called in error messages (in place of a file name).
 pub const DICT_ORIGIN: &str = "<dict>";
 
-/// A validated scenario (interface.md, "Scenario file"): a tower, a building
-/// or both, a ground motion, initial state and simulation settings.
+/// A validated scenario: a tower, a building or both, a ground motion, the
+/// initial state and the simulation settings, with the keys and sections of
+/// a scenario file of the `rocking` command (`[tower]`, `[building]`,
+/// `[ground]`, `[initial]`, `[simulation]`).
 ///
 /// Make one with `Scenario.from_toml(path)` or `Scenario.from_dict(d)`; every
 /// value is checked then, so a `Scenario` is always valid. A ground-motion
