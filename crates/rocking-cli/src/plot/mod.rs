@@ -166,6 +166,16 @@ ground.frequency,ground.amplitude,alpha_rad,max_theta_over_alpha,max_abs_slip_m,
         )?;
         let keys = ["building.normal_force", "ground.amplitude"].map(String::from);
         assert_eq!(sweep_figures(dir.path(), "text axis", &text, &keys)?.len(), 2);
+        // No rows at all, or every case failed: empty figures, no error.
+        let empty = dir.path().join("empty.csv");
+        std::fs::write(&empty, SWEEP_CSV.lines().next().unwrap_or_default())?;
+        assert_eq!(sweep_figures(dir.path(), "empty", &empty, &axes)?.len(), 4);
+        let failed = dir.path().join("failed.csv");
+        std::fs::write(
+            &failed,
+            "ground.frequency,ground.amplitude,max_theta_over_alpha,overturned,error\n3,0.5,,,boom\n",
+        )?;
+        assert_eq!(sweep_figures(dir.path(), "failed", &failed, &axes)?.len(), 4);
         Ok(())
     }
 
