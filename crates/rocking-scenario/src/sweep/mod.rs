@@ -187,8 +187,8 @@ impl Sweep {
             fail(Fault::invalid(
                 "sweep",
                 format!(
-                    "the axes have {} values: too many combinations to count",
-                    expanded.iter().map(Axis::len).product::<usize>()
+                    "{} values: too many combinations to count",
+                    expanded.iter().map(|a| a.len().to_string()).collect::<Vec<_>>().join(" × ")
                 ),
             ))
         })?;

@@ -133,6 +133,16 @@ fn a_step_gives_from_to_to_and_must_divide_the_range() {
         r#"sweep."ground.frequency".step"#,
     );
     assert!(e.contains("more than 1000000"), "{e}");
+    // Five axes of 10,000 values each: more cases than a 64-bit usize counts.
+    let big = r#"{ from = 1.0, to = 2.0, steps = 10000 }"#;
+    let keys = ["ground.frequency", "ground.amplitude", "ground.phase", "ground.duration", "simulation.duration"];
+    let axes: Vec<String> = keys.iter().map(|k| format!("\"{k}\" = {big}")).collect();
+    if usize::BITS == 64 {
+        assert_eq!(
+            fails(&axes.join("\n"), "sweep"),
+            "10000 × 10000 × 10000 × 10000 × 10000 values: too many combinations to count"
+        );
+    }
 }
 
 #[test]
