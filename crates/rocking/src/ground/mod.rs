@@ -48,7 +48,7 @@ pub(crate) enum Piece {
 
 impl Piece {
     /// `a_g(t)` (m/s²).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval(&self, t: f64) -> f64 {
         match *self {
             Piece::Constant(a) => a,
