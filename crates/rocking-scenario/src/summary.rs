@@ -80,8 +80,11 @@ fn flatten(value: &Value, prefix: &str, out: &mut Vec<(String, Value)>) {
     match value {
         Value::Object(map) => {
             for (k, v) in map {
-                let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
-                flatten(v, &key, out);
+                if prefix.is_empty() {
+                    flatten(v, k, out);
+                } else {
+                    flatten(v, &format!("{prefix}.{k}"), out);
+                }
             }
         }
         Value::Array(_) => {}

@@ -312,8 +312,14 @@ impl Sweep {
         };
         let mut cells = self.axis_cells(index);
         let scalars = summary_scalars(&summary_json(&outcome, 0.0));
-        for key in &self.summary_keys {
-            cells.push(scalars.iter().find(|(k, _)| k == key).map_or(Cell::Empty, |(_, v)| Cell::from_json(v)));
+        // The summary's keys come in the order `summary_keys` was taken from, so
+        // look at the same position first; search only if they ever differ.
+        for (i, key) in self.summary_keys.iter().enumerate() {
+            let found = match scalars.get(i) {
+                Some((k, v)) if k == key => Some(v),
+                _ => scalars.iter().find(|(k, _)| k == key).map(|(_, v)| v),
+            };
+            cells.push(found.map_or(Cell::Empty, Cell::from_json));
         }
         cells.push(Cell::Empty);
         Row { index, cells }
