@@ -104,6 +104,8 @@ pub(crate) struct Kernel {
     pub(crate) g: f64,
     pub(crate) alpha: f64,
     pub(crate) tan_alpha: f64,
+    sin_alpha: f64,
+    cos_alpha: f64,
     /// `m2 R / I_O` (1/m·… so that `p² = k g`).
     k: f64,
     pub(crate) radius: f64,
@@ -134,6 +136,8 @@ impl Kernel {
             g: model.gravity,
             alpha,
             tan_alpha: alpha.tan(),
+            sin_alpha: alpha.sin(),
+            cos_alpha: alpha.cos(),
             k: m2 * radius / inertia,
             radius,
             m2r: m2 * radius,
@@ -255,18 +259,25 @@ impl Kernel {
         (dx, base + lever * acc.theta - centripetal * state[1] * state[1])
     }
 
-    /// Horizontal and vertical pivot reactions per unit tower mass, `(f_x, f_y) / m2`
-    /// (model.md, "Checks").
+    /// The instantaneous checks of model.md: the absolute horizontal
+    /// acceleration of the top centre (m/s²) and the pivot reactions per unit
+    /// tower mass `(f_x, f_y) / m2` (m/s²), sharing one `sin_cos(θ)`
+    /// (`φ = α − s θ` by the angle-difference formulas).
     #[inline]
-    pub(crate) fn pivot_reaction(&self, pivot: Option<Pivot>, state: &[f64; 4], acc: Accelerations, a_g: f64) -> (f64, f64) {
+    pub(crate) fn checks(&self, pivot: Option<Pivot>, state: &[f64; 4], acc: Accelerations, a_g: f64) -> (f64, f64, f64) {
         let acc_pivot = a_g + acc.slip;
-        let Some(pivot) = pivot else { return (acc_pivot, self.g) };
+        let Some(pivot) = pivot else { return (acc_pivot, acc_pivot, self.g) };
         let s = pivot.sign();
-        let (sin_phi, cos_phi) = sin_cos(self.alpha - s * state[0]);
+        let (sin_t, cos_t) = sin_cos(state[0]);
         let w2 = state[1] * state[1];
+        // The top centre (0, H), relative to the pivot (s b, 0): eqs. (7)–(13).
+        let xr = -s * self.half_width;
+        let top = acc_pivot + (-sin_t * xr + cos_t * self.height) * acc.theta - (cos_t * xr + sin_t * self.height) * w2;
+        let sin_phi = self.sin_alpha * cos_t - s * self.cos_alpha * sin_t;
+        let cos_phi = self.cos_alpha * cos_t + s * self.sin_alpha * sin_t;
         let fx = acc_pivot + self.radius * (cos_phi * acc.theta + s * sin_phi * w2);
         let fy = self.g + self.radius * (s * sin_phi * acc.theta - cos_phi * w2);
-        (fx, fy)
+        (top, fx, fy)
     }
 
     /// The slip direction a stuck building starts sliding in under demand `force`.

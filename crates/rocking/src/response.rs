@@ -113,8 +113,7 @@ impl Tracker {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
         };
-        let (_, top_acc) = kernel.point(pivot, 0.0, kernel.height, y, acc, a_g);
-        let (fx, fy) = kernel.pivot_reaction(pivot, y, acc, a_g);
+        let (top_acc, fx, fy) = kernel.checks(pivot, y, acc, a_g);
         let s = &mut self.summary;
         s.max_top_abs_acceleration = s.max_top_abs_acceleration.max(top_acc.abs());
         if fy > 0.0 {
