@@ -12,7 +12,7 @@
 use crate::error::{positive, Error};
 use crate::event::{Event, EventKind};
 use crate::ground::{GroundMotion, Segment};
-use crate::integrator::{find_crossing, DenseOutput, Dop853, StepFailure};
+use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
 use crate::model::{Kernel, Model};
 use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
@@ -351,14 +351,20 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let d = *dense.get_or_insert_with(|| self.stepper.dense(&mut rhs));
             let ground = c.uses_ground();
             let value = |t: f64| condition_value(&kernel, c, regime, if ground { piece.eval(t) } else { 0.0 }, &wide(&d.state(t)));
-            let tb = if v0 < 0.0 {
-                find_crossing(value, t0, v0, t1, v1, 0.0).tb
-            } else {
-                // Started on zero (an impact or a slip start): find where the motion left it.
-                match leaving_point(&value, t0, t1) {
-                    Some((tm, vm)) => find_crossing(value, tm, vm, t1, v1, 0.0).tb,
-                    None => t0,
+            // Started on zero (an impact or a slip start): find where the motion left it.
+            let start = if v0 < 0.0 { Some((t0, v0)) } else { leaving_point(&value, t0, t1) };
+            let tb = match start {
+                // θ = 0: the dense output gives the derivative θ̇ with θ, for Newton.
+                Some((ta, va)) if c == Condition::Impact => {
+                    let s = pivot_sign(regime);
+                    let with_slope = |t: f64| {
+                        let y = d.state(t);
+                        (-s * y[0], -s * y[1])
+                    };
+                    find_crossing_newton(with_slope, ta, va, t1, v1).tb
                 }
+                Some((ta, va)) => find_crossing(value, ta, va, t1, v1, 0.0).tb,
+                None => t0,
             };
             if first.is_none_or(|(tf, _)| tb < tf) {
                 first = Some((tb, c));
@@ -561,6 +567,14 @@ impl Condition {
             Condition::SlipNegative | Condition::SlipPositive => "slip",
             Condition::SlipStop => "slip stop",
         }
+    }
+}
+
+/// `s = ±1` of a rocking tower (0 at rest).
+fn pivot_sign(regime: Regime) -> f64 {
+    match regime.tower {
+        TowerRegime::Rocking(p) => p.sign(),
+        TowerRegime::Rest => 0.0,
     }
 }
 

@@ -7,4 +7,4 @@ mod dop853_tableau;
 mod root;
 
 pub(crate) use dop853::{DenseOutput, Dop853, StepFailure};
-pub(crate) use root::find_crossing;
+pub(crate) use root::{find_crossing, find_crossing_newton};
