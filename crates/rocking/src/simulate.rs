@@ -186,10 +186,7 @@ fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], 
 /// The value of `condition` in `regime`: negative while the regime holds.
 #[inline]
 fn condition_value(kernel: &Kernel, condition: Condition, regime: Regime, a_g: f64, y: &[f64; 4]) -> f64 {
-    let s = match regime.tower {
-        TowerRegime::Rocking(p) => p.sign(),
-        TowerRegime::Rest => 0.0,
-    };
+    let s = pivot_sign(regime);
     match condition {
         Condition::UpliftNegative => kernel.pivot_acceleration_at_rest(regime.building, a_g) - kernel.g * kernel.tan_alpha,
         Condition::UpliftPositive => -kernel.pivot_acceleration_at_rest(regime.building, a_g) - kernel.g * kernel.tan_alpha,
