@@ -25,7 +25,7 @@ fn main() -> Result<(), rocking::Error> {
     let per = start.elapsed().as_secs_f64() / n as f64;
     println!(
         "max_theta_over_alpha {:.16} impacts {} overturned {} evals {} per_case {:.3e} s",
-        s.max_abs_theta / tower.alpha(),
+        s.max_abs_theta() / tower.alpha(),
         s.impacts,
         s.overturned(),
         s.evaluations,

@@ -15,8 +15,6 @@ pub enum EndReason {
 /// What a run found. Angles in rad, lengths in m, times in s, accelerations in m/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Summary {
-    /// Peak `|θ|`, located where `θ̇ = 0` (rad).
-    pub max_abs_theta: f64,
     /// Largest and smallest `θ` (rad).
     pub theta_range: (f64, f64),
     /// Peak `|u|` (m).
@@ -52,6 +50,10 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// Peak `|θ|` (rad), from the extremes of θ located where `θ̇ = 0`.
+    pub fn max_abs_theta(&self) -> f64 {
+        self.theta_range.0.abs().max(self.theta_range.1.abs())
+    }
     /// Whether the tower overturned.
     pub fn overturned(&self) -> bool {
         self.end_reason == EndReason::Overturned
@@ -72,7 +74,6 @@ impl Tracker {
     pub(crate) fn new() -> Self {
         Self {
             summary: Summary {
-                max_abs_theta: 0.0,
                 theta_range: (0.0, 0.0),
                 max_abs_slip: 0.0,
                 final_slip: 0.0,
@@ -97,7 +98,6 @@ impl Tracker {
     #[inline]
     pub(crate) fn displacement(&mut self, theta: f64, slip: f64) {
         let s = &mut self.summary;
-        s.max_abs_theta = s.max_abs_theta.max(theta.abs());
         s.theta_range = (s.theta_range.0.min(theta), s.theta_range.1.max(theta));
         s.max_abs_slip = s.max_abs_slip.max(slip.abs());
     }

@@ -45,7 +45,7 @@ fn agrees_with_the_scipy_peer() {
                 atol: 1e-12,
             },
         );
-        let ours = s.max_abs_theta / tower.alpha();
+        let ours = s.max_abs_theta() / tower.alpha();
         assert!((ours - ratio).abs() <= 1e-6 * ratio, "A = {amplitude} g, f = {frequency} Hz: {ours} vs {ratio}");
         assert_eq!(s.impacts, impacts, "A = {amplitude} g, f = {frequency} Hz");
         assert_eq!(s.overturned(), overturned, "A = {amplitude} g, f = {frequency} Hz");

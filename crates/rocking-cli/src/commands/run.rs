@@ -74,13 +74,13 @@ fn report(outcome: &Outcome, wall: f64, dir: &Path) -> String {
         let uplift = match s.first_uplift_time {
             Some(t) => format!(", first uplift at t = {} s", sig(t, 6)),
             // An initial rotation rocks without an uplift.
-            None if s.max_abs_theta > 0.0 => String::new(),
+            None if s.max_abs_theta() > 0.0 => String::new(),
             None => ", never lifted".into(),
         };
         lines.push(format!(
             "  tower:    max θ/α = {} (max |θ| = {} rad), {} impacts{uplift}, {fate}",
-            sig(s.max_abs_theta / alpha, 4),
-            sig(s.max_abs_theta, 4),
+            sig(s.max_abs_theta() / alpha, 4),
+            sig(s.max_abs_theta(), 4),
             s.impacts
         ));
     }

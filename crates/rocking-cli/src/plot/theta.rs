@@ -53,7 +53,7 @@ impl ThetaFigure<'_> {
         };
         format!(
             "max θ/α = {} · {} impacts · {fate} · α = {} rad (tan α = {})",
-            sig(s.max_abs_theta / a, 3),
+            sig(s.max_abs_theta() / a, 3),
             s.impacts,
             sig(a, 4),
             sig(a.tan(), 3)
