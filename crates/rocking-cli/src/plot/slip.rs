@@ -4,7 +4,7 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, Figure, GREEN, INK, ORANGE, PURPLE, VERMILION};
+use super::style::{self, Figure, GREEN, PURPLE};
 use super::timeline::{self, Timeline, PLOT_LEFT};
 use crate::format::sig;
 use plotters::coord::Shift;
@@ -81,16 +81,7 @@ impl SlipFigure<'_> {
         // From 0 to the extremes: a slip one way only keeps the whole panel.
         let finite = || curve.points.iter().map(|p| p.1 * unit.per_metre).filter(|v| v.is_finite());
         let y = scale::padded(finite().fold(0.0, f64::min), finite().fold(0.0, f64::max), 0.08);
-        let mut entries = vec![Entry::new(Swatch::Line(curve.color), curve.what)];
-        if impacts && !tl.impacts.is_empty() {
-            entries.push(Entry::new(Swatch::Tick(INK), "impact"));
-        }
-        if !tl.slides.is_empty() {
-            entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
-        }
-        if tl.overturn.is_some() {
-            entries.push(Entry::new(Swatch::Line(VERMILION), "overturned"));
-        }
+        let entries = timeline::legend_entries(tl, Entry::new(Swatch::Line(curve.color), curve.what), impacts, None);
         let strip = legend::height(area, PLOT_LEFT, &entries)?;
         let (top, panel) = area.split_vertically(strip);
         legend::draw(&top, PLOT_LEFT, &entries)?;

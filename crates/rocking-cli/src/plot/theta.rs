@@ -5,7 +5,7 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE, VERMILION};
+use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE};
 use super::timeline::{self, Timeline, PLOT_LEFT};
 use crate::format::sig;
 use plotters::coord::Shift;
@@ -71,20 +71,13 @@ impl ThetaFigure<'_> {
         let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.state.theta / a)).collect();
         let peak = scale::max_abs(points.iter().map(|p| p.1));
         let y = scale::symmetric(peak);
-        let mut entries = vec![Entry::new(Swatch::Line(BLUE), "θ/α")];
-        if !tl.impacts.is_empty() {
-            entries.push(Entry::new(Swatch::Tick(INK), "impact"));
-        }
         let bounds = peak > 0.0 && y.1 >= 1.0;
-        if bounds {
-            entries.push(Entry::new(Swatch::Dashed(GREY), "θ = ±α"));
-        }
-        if !tl.slides.is_empty() {
-            entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
-        }
-        if tl.overturn.is_some() {
-            entries.push(Entry::new(Swatch::Line(VERMILION), "overturned"));
-        }
+        let entries = timeline::legend_entries(
+            tl,
+            Entry::new(Swatch::Line(BLUE), "θ/α"),
+            true,
+            bounds.then(|| Entry::new(Swatch::Dashed(GREY), "θ = ±α")),
+        );
         let strip = legend::height(area, PLOT_LEFT, &entries)?;
         let (top, panel) = area.split_vertically(strip);
         legend::draw(&top, PLOT_LEFT, &entries)?;

@@ -3,6 +3,7 @@
 //! sharing the time axis, with the same left margin so that their time axes
 //! line up.
 
+use super::legend::{Entry, Swatch};
 use super::scale;
 use super::style::{size, text, GREY, INK, ORANGE, VERMILION};
 use crate::format::sig;
@@ -81,6 +82,24 @@ impl Timeline {
 
 /// A panel over `t` with the value range `y`, described by `y_desc`. The
 /// bottom panel shows the time labels (`show_time`); panels above it only the grid.
+/// The legend of a time panel: its `curve`, the impact ticks (if `impacts`),
+/// `extra` (a level line of the panel), the slip bands and the overturn line,
+/// each only when the run has them.
+pub fn legend_entries(timeline: &Timeline, curve: Entry, impacts: bool, extra: Option<Entry>) -> Vec<Entry> {
+    let mut entries = vec![curve];
+    if impacts && !timeline.impacts.is_empty() {
+        entries.push(Entry::new(Swatch::Tick(INK), "impact"));
+    }
+    entries.extend(extra);
+    if !timeline.slides.is_empty() {
+        entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
+    }
+    if timeline.overturn.is_some() {
+        entries.push(Entry::new(Swatch::Line(VERMILION), "overturned"));
+    }
+    entries
+}
+
 pub fn time_chart<'a, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     t: (f64, f64),
