@@ -324,8 +324,36 @@ impl RecordSpec {
         &self.file
     }
 
+    /// Reads the record (or takes it from `cache`, where a record read
+    /// earlier with the same file, format, CSV options and g is kept): the
+    /// motion (m/s²) and what was read.
+    pub(crate) fn load_cached(&self, g: f64, cache: &RecordCache) -> Result<(GroundMotion, GroundInfo), Fault> {
+        // The scale is applied after the cache: cases that differ only by it share a read.
+        let key = (RecordSpec { scale: 1.0, ..self.clone() }, g.to_bits());
+        let mut entries = cache.entries.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let (record, format) = match entries.iter().find(|(k, _)| *k == key) {
+            Some((_, read)) => read.clone(),
+            None => {
+                let read = key.0.read(g)?;
+                if entries.len() == RecordCache::CAPACITY {
+                    entries.remove(0);
+                }
+                entries.push((key, read.clone()));
+                read
+            }
+        };
+        drop(entries);
+        Ok(self.finish(record, format))
+    }
+
     /// Reads the record: the motion (m/s²) and what was read.
     pub(crate) fn load(&self, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
+        let (record, format) = self.read(g)?;
+        Ok(self.finish(record, format))
+    }
+
+    /// Reads and parses the file, unscaled.
+    fn read(&self, g: f64) -> Result<(Record, RecordFormat), Fault> {
         let key = "ground.file";
         let text = std::fs::read_to_string(&self.file).map_err(|e| {
             Fault::new(
@@ -359,7 +387,13 @@ impl RecordSpec {
                 )),
             ));
         }
-        let record = Record::parse(&text, Some(format), &self.csv, g).map_err(malformed)?.scaled(self.scale);
+        let record = Record::parse(&text, Some(format), &self.csv, g).map_err(malformed)?;
+        Ok((record, format))
+    }
+
+    /// The motion and its description, once read: `record` scaled by `scale`.
+    fn finish(&self, record: Record, format: RecordFormat) -> (GroundMotion, GroundInfo) {
+        let record = record.scaled(self.scale);
         let info = GroundInfo {
             kind: GroundKind::Record,
             amplitude_g: None,
@@ -376,6 +410,31 @@ impl RecordSpec {
                 scale: self.scale,
             }),
         };
-        Ok((GroundMotion::Record(record), info))
+        (GroundMotion::Record(record), info)
+    }
+}
+
+/// Records already read, so that the cases of a sweep read a record file once
+/// (a sweep over the scale of one accelerogram would otherwise read and parse
+/// it for every case). Holds at most [`RecordCache::CAPACITY`] records, the
+/// oldest dropped first; a record that fails to read is not kept (every case
+/// that needs it reports the failure). Shared by the threads of a sweep.
+#[derive(Debug, Default)]
+pub(crate) struct RecordCache {
+    entries: std::sync::Mutex<Vec<(RecordKey, (Record, RecordFormat))>>,
+}
+
+/// What a read depends on: the file, format and CSV options (scale 1), and g's bits.
+type RecordKey = (RecordSpec, u64);
+
+impl RecordCache {
+    /// Records kept at most (a sweep over `ground.file` cycles through more).
+    pub(crate) const CAPACITY: usize = 8;
+}
+
+impl Clone for RecordCache {
+    /// An empty cache: what was read is not part of a sweep's value.
+    fn clone(&self) -> Self {
+        Self::default()
     }
 }

@@ -81,5 +81,5 @@ pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
-pub use summary::{summary_json, summary_scalars};
+pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};

@@ -2,7 +2,7 @@
 //! library's model, ground motion, initial state and settings.
 
 use crate::error::{Error, ErrorKind, Fault};
-use crate::ground::{self, GroundInfo, GroundSpec};
+use crate::ground::{self, GroundInfo, GroundSpec, RecordCache};
 use crate::read::{with_article, Section};
 use crate::{building, simulation, tower};
 use rocking::{GroundMotion, Initial, Model, Settings};
@@ -196,9 +196,19 @@ impl Scenario {
 
     /// Builds the case: reads the ground-motion record if there is one.
     pub fn build(&self) -> Result<Case, Error> {
+        self.build_with(None)
+    }
+
+    /// As [`Scenario::build`], taking the record from `cache` if it was read before.
+    pub(crate) fn build_with(&self, cache: Option<&RecordCache>) -> Result<Case, Error> {
+        let g = self.model.gravity();
         let (ground, ground_info) = match &self.ground {
             GroundSpec::Ready(motion, info) => (motion.clone(), info.clone()),
-            GroundSpec::Record(spec) => spec.load(self.model.gravity()).map_err(|f| f.in_file(&self.origin))?,
+            GroundSpec::Record(spec) => match cache {
+                Some(cache) => spec.load_cached(g, cache),
+                None => spec.load(g),
+            }
+            .map_err(|f| f.in_file(&self.origin))?,
         };
         Ok(Case {
             name: self.name.clone(),

@@ -372,10 +372,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if matches!(regime.tower, TowerRegime::Rocking(_)) && self.stepper.y_old[1] * y1[1] < 0.0 {
             let d = *dense.get_or_insert_with(|| self.stepper.dense(&mut rhs));
             let w0 = self.stepper.y_old[1];
-            let rate = |t: f64| -w0.signum() * d.state(t)[1];
-            // The value at a peak is insensitive to its time (θ̇ = 0 there): a
-            // bracket of 1e-9 of the step changes θ by ~θ̈ (1e-9 h)², far below rounding.
-            let peak = find_crossing(rate, t0, -w0.abs(), t1, rate(t1), 1e-9 * (t1 - t0)).tb;
+            // θ̇ and its derivative come from the same polynomial: Newton.
+            let rate = |t: f64| {
+                let (y, dy) = d.state_and_rate(t);
+                (-w0.signum() * y[1], -w0.signum() * dy[1])
+            };
+            let peak = find_crossing_newton(rate, t0, -w0.abs(), t1, -w0.signum() * y1[1]).tb;
             if peak <= t_stop {
                 let yp = wide(&d.state(peak));
                 self.tracker.displacement(yp[0], yp[2]);

@@ -17,7 +17,8 @@ pub use engine::{Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 
 use crate::error::{Error, ErrorKind, Fault};
-use crate::{set_dotted, summary_json, summary_scalars, Outcome, RunOptions, Scenario};
+use crate::ground::RecordCache;
+use crate::{set_dotted, summary_fields, Outcome, RunOptions, Scenario};
 use axis::{alternative, axis_name};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -93,6 +94,9 @@ pub const ERROR_COLUMN: &str = "error";
 ///   case that fails (a bad combination such as `mu_kinetic > mu_static`, or a
 ///   numerical failure) gives a row with its one-line message in `error` and
 ///   every result empty; the others go on.
+/// - A record file is read and parsed once, by the first case that needs it,
+///   and shared by the cases that differ only in other keys (`ground.scale`
+///   among them); a few records are kept when `ground.file` is swept.
 /// - The sweep is refused before running when no case at all can be parsed
 ///   and built (the base scenario itself is wrong: the error is that of the
 ///   first case), or when the first case's record file cannot be read (and
@@ -110,6 +114,8 @@ pub struct Sweep {
     len: usize,
     summary_keys: Vec<String>,
     inputs: Vec<PathBuf>,
+    /// Records read by the cases so far, shared by the workers.
+    records: RecordCache,
 }
 
 impl Sweep {
@@ -204,6 +210,7 @@ impl Sweep {
             len,
             summary_keys: summary_keys().map_err(fail)?,
             inputs: Vec::new(),
+            records: RecordCache::default(),
         };
         sweep.inputs = sweep.first_buildable_case()?;
         Ok(sweep)
@@ -213,7 +220,7 @@ impl Sweep {
     fn first_buildable_case(&self) -> Result<Vec<PathBuf>, Error> {
         let mut first_error = None;
         for index in 0..self.len {
-            match self.scenario(index).and_then(|s| s.build()) {
+            match self.scenario(index).and_then(|s| s.build_with(Some(&self.records))) {
                 Ok(case) => return Ok(case.inputs),
                 Err(e) => {
                     // A record that cannot be read fails every case that reads it: say so now.
@@ -311,16 +318,9 @@ impl Sweep {
             Err(e) => return self.failed_row(index, &e.fault.to_string()),
         };
         let mut cells = self.axis_cells(index);
-        let scalars = summary_scalars(&summary_json(&outcome, 0.0));
-        // The summary's keys come in the order `summary_keys` was taken from, so
-        // look at the same position first; search only if they ever differ.
-        for (i, key) in self.summary_keys.iter().enumerate() {
-            let found = match scalars.get(i) {
-                Some((k, v)) if k == key => Some(v),
-                _ => scalars.iter().find(|(k, _)| k == key).map(|(_, v)| v),
-            };
-            cells.push(found.map_or(Cell::Empty, Cell::from_json));
-        }
+        // The fields come in the order `summary_keys` was taken from.
+        cells.extend(summary_fields(&outcome).into_iter().map(|(_, cell)| cell));
+        debug_assert_eq!(cells.len(), self.axes.len() + self.summary_keys.len());
         cells.push(Cell::Empty);
         Row { index, cells }
     }
@@ -340,7 +340,7 @@ impl Sweep {
     }
 
     fn outcome(&self, index: usize) -> Result<Outcome, Error> {
-        self.scenario(index)?.build()?.run(RunOptions::SUMMARY)
+        self.scenario(index)?.build_with(Some(&self.records))?.run(RunOptions::SUMMARY)
     }
 }
 
@@ -368,7 +368,8 @@ fn one_line(text: &str) -> String {
     text.split(['\n', '\r']).map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 
-/// The scalar keys of `summary.json` in order, without `wall_time_s`: the keys
+/// The scalar keys of `summary.json` in order, without `wall_time_s` (that is,
+/// those of [`summary_fields`]): the keys
 /// do not depend on the outcome (absent quantities are `null`), so those of a
 /// trivial run (a building at rest for a millisecond) are those of every case.
 fn summary_keys() -> Result<Vec<String>, Fault> {
@@ -386,9 +387,5 @@ fn summary_keys() -> Result<Vec<String>, Fault> {
         history: None,
         events: Vec::new(),
     };
-    Ok(summary_scalars(&summary_json(&outcome, 0.0))
-        .into_iter()
-        .map(|(k, _)| k)
-        .filter(|k| k != WALL_TIME_KEY)
-        .collect())
+    Ok(summary_fields(&outcome).into_iter().map(|(k, _)| k).collect())
 }

@@ -5,7 +5,7 @@
 
 use super::axis::STRING_KEYS;
 use super::*;
-use crate::{building, ground, simulation, tower};
+use crate::{building, ground, simulation, summary_json, summary_scalars, tower};
 use std::convert::Infallible;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -509,4 +509,46 @@ fn the_sweepable_keys_are_the_scalar_keys_of_every_section() {
     actual.sort();
     assert_eq!(actual, expected);
     assert!(STRING_KEYS.iter().all(|k| SWEEPABLE_KEYS.contains(k)));
+}
+
+/// A sweep over the scale of one record reads the file once: once the sweep
+/// is built (its first case read the record), the file can go, and every row
+/// is still the summary of its case run alone from the file, scaled.
+#[test]
+fn a_record_is_read_once_and_scaled_per_case() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("../rocking/tests/data/records/synthetic.AT2");
+    let record = dir.path().join("record.AT2");
+    std::fs::copy(&source, &record).unwrap_or_else(|e| panic!("{e}"));
+    let base = BASE.replace(
+        "type = \"harmonic\"\namplitude = 0.5\nfrequency = 5.0",
+        "type = \"record\"\nfile = \"record.AT2\"",
+    );
+    let origin = dir.path().join("sweep.toml");
+    let scales = [0.5, 4.0, 8.0];
+    let expected: Vec<Vec<Cell>> = scales
+        .iter()
+        .map(|scale| {
+            let text = base.replace("file = \"record.AT2\"", &format!("file = \"record.AT2\"\nscale = {scale:?}"));
+            let alone = Scenario::from_toml_str(&text, &origin)
+                .and_then(|s| s.build())
+                .and_then(|c| c.run(RunOptions::SUMMARY));
+            let alone = alone.unwrap_or_else(|e| panic!("{e}"));
+            summary_fields(&alone).into_iter().map(|(_, c)| c).collect()
+        })
+        .collect();
+    let sweep = Sweep::from_toml_str(&format!("{base}\n[sweep]\n\"ground.scale\" = {scales:?}\n"), &origin).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::remove_file(&record).unwrap_or_else(|e| panic!("{e}"));
+    let rows = rows(&sweep, Some(2));
+    for (row, expected) in rows.iter().zip(&expected) {
+        assert_eq!(row.error(), None);
+        assert_eq!(row.cells[1..row.cells.len() - 1], expected[..], "case {}", row.index);
+    }
+    // The scale matters: the peaks differ from case to case.
+    let peak = column(&sweep, "max_abs_theta_rad");
+    assert!(
+        rows.windows(2).all(|w| w[0].cells[peak] != w[1].cells[peak]),
+        "{:?}",
+        rows.iter().map(|r| &r.cells[peak]).collect::<Vec<_>>()
+    );
 }

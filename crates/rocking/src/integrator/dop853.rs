@@ -72,6 +72,30 @@ impl<const N: usize> DenseOutput<N> {
     }
 }
 
+impl<const N: usize> DenseOutput<N> {
+    /// The interpolated state at `t` and its time derivative (the derivative of
+    /// the same polynomial, by the product rule through the nesting of `state`).
+    #[inline]
+    pub(crate) fn state_and_rate(&self, t: f64) -> ([f64; N], [f64; N]) {
+        let x = (t - self.t_old) / self.h;
+        let mut y = [0.0; N];
+        let mut dy = [0.0; N];
+        for (i, row) in self.f.iter().rev().enumerate() {
+            let (factor, slope) = if i % 2 == 0 { (x, 1.0) } else { (1.0 - x, -1.0) };
+            for j in 0..N {
+                let inner = y[j] + row[j];
+                dy[j] = dy[j] * factor + inner * slope;
+                y[j] = inner * factor;
+            }
+        }
+        for j in 0..N {
+            y[j] += self.y_old[j];
+            dy[j] /= self.h;
+        }
+        (y, dy)
+    }
+}
+
 /// The stepper: state of the integration at the end of the last accepted step.
 #[derive(Debug, Clone)]
 pub(crate) struct Dop853<const N: usize> {
@@ -353,6 +377,31 @@ mod tests {
         assert_relative_eq!(s.y[0], 10f64.cos(), epsilon = 1e-8);
         assert_relative_eq!(s.y[1], -10f64.sin(), epsilon = 1e-8);
         assert!(steps < 200, "an 8th-order method needs few steps here, took {steps}");
+    }
+
+    /// The derivative of the dense output is the right-hand side, to the
+    /// dense output's accuracy (7th order: of the size of the local tolerance
+    /// divided by the step), and it is the derivative of `state` (a central
+    /// difference agrees to its truncation and rounding error).
+    #[test]
+    fn dense_rate_is_the_derivative() {
+        let mut rhs = |_t: f64, y: &[f64; 2]| [y[1], -y[0]];
+        let mut s = Dop853::<2>::new(1e-10, 1e-12);
+        s.restart(&mut rhs, 0.0, [1.0, 0.0], 10.0);
+        s.step(&mut rhs, 10.0).unwrap();
+        s.step(&mut rhs, 10.0).unwrap();
+        let d = s.dense(&mut rhs);
+        let h = s.t - s.t_old;
+        for x in [0.0, 0.3, 0.71, 1.0] {
+            let t = s.t_old + x * h;
+            let (y, dy) = d.state_and_rate(t);
+            assert_eq!(y.map(f64::to_bits), d.state(t).map(f64::to_bits));
+            assert_relative_eq!(dy[0], -t.sin(), epsilon = 1e-8);
+            assert_relative_eq!(dy[1], -t.cos(), epsilon = 1e-8);
+            let e = 1e-5 * h;
+            let fd = (d.state(t + e)[0] - d.state(t - e)[0]) / (2.0 * e);
+            assert_relative_eq!(dy[0], fd, epsilon = 1e-8);
+        }
     }
 
     /// The dense output reproduces both ends of the step exactly (up to rounding).
