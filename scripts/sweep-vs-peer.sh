@@ -6,18 +6,23 @@
 # largest |Δ max θ/α| between the two (an overturned case counts as π/2 / α in
 # both); fails if that exceeds 1e-3 or if a verdict (overturned) differs.
 #
-#   scripts/sweep-vs-peer.sh [AMPLITUDES_G] [FREQUENCIES_HZ] [REPEATS]
-#   scripts/sweep-vs-peer.sh "0.3,0.5,0.7,0.9" "1,2,3,4,5,6,7" 20   # the default
+#   scripts/sweep-vs-peer.sh [AMPLITUDES_G] [FREQUENCIES_HZ] [ROUNDS] [REPEATS]
+#   scripts/sweep-vs-peer.sh "0.3,0.5,0.7,0.9" "1,1.25,1.5,…,7" 3 10   # the default: 100 cases
 #
-# Our time per case is the best of REPEATS runs of the whole command (process
-# start, parsing, CSV writing included) divided by the number of cases; the
-# peer's is what it prints (one run, its cases in a Python loop). Needs python3
-# with numpy and scipy (`pip install scipy`); PEER=path overrides the peer.
+# The machine is shared and noisy, so both sides are timed in the same rounds,
+# interleaved: each round runs the peer once (its cases in a Python loop; it
+# prints its time per case) and then the whole `rocking sweep` command REPEATS
+# times on 1 thread and on 2 (process start, parsing and CSV writing
+# included). Each side's time is its best over all rounds, and the ratio is
+# taken between those: a slow spell of the machine then hits neither side
+# alone. Every round's own ratio is printed too. Needs python3 with numpy and
+# scipy (`pip install scipy`); PEER=path overrides the peer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 amplitudes=${1:-0.3,0.5,0.7,0.9}
-frequencies=${2:-1,2,3,4,5,6,7}
-repeats=${3:-20}
+frequencies=${2:-$(python3 -c 'print(",".join(str(1 + 0.25 * i) for i in range(25)))')}
+rounds=${3:-3}
+repeats=${4:-10}
 peer=${PEER:-../shared/bench/scipy_peer.py}
 
 cargo build --release --quiet -p rocking-cli
@@ -49,19 +54,18 @@ atol = 1e-10
 "ground.frequency" = [$frequencies]
 EOF
 
-echo "peer: python3 $peer 0.5 2.0 10 1e-8 \"$amplitudes\" \"$frequencies\"" >&2
-python3 "$peer" 0.5 2.0 10 1e-8 "$amplitudes" "$frequencies" >"$tmp/peer.jsonl"
-
-python3 - "$rocking" "$tmp" "$repeats" <<'PY'
+python3 - "$rocking" "$tmp" "$rounds" "$repeats" "$peer" "$amplitudes" "$frequencies" <<'PY'
 import csv, json, math, subprocess, sys, time
 
-rocking, tmp, repeats = sys.argv[1], sys.argv[2], int(sys.argv[3])
-lines = open(f"{tmp}/peer.jsonl").read().split("\n")
-lines = [l for l in lines if l.strip()]
-peer_per_case = float(lines[-1])
-peer = {(c["A"], c["f"]): c for c in map(json.loads, lines[:-1])}
+rocking, tmp, rounds, repeats, peer_script, amplitudes, frequencies = sys.argv[1:8]
+rounds, repeats = int(rounds), int(repeats)
 
-def best(threads):
+def run_peer():
+    out = subprocess.run([sys.executable, peer_script, "0.5", "2.0", "10", "1e-8", amplitudes, frequencies], check=True, capture_output=True, text=True).stdout
+    lines = [l for l in out.split("\n") if l.strip()]
+    return float(lines[-1]), {(c["A"], c["f"]): c for c in map(json.loads, lines[:-1])}
+
+def best_sweep(threads):
     out = f"{tmp}/t{threads}"
     times = []
     for _ in range(repeats):
@@ -70,8 +74,16 @@ def best(threads):
         times.append(time.perf_counter() - start)
     return min(times), f"{out}/sweep.csv"
 
-t1, csv1 = best(1)
-t2, csv2 = best(2)
+print(f"peer: {sys.executable} {peer_script} 0.5 2.0 10 1e-8 \"{amplitudes}\" \"{frequencies}\"", file=sys.stderr)
+peer_times, t1s, t2s = [], [], []
+for r in range(rounds):
+    peer_per_case, peer = run_peer()
+    t1, csv1 = best_sweep(1)
+    t2, csv2 = best_sweep(2)
+    n = len(peer)
+    peer_times.append(peer_per_case); t1s.append(t1); t2s.append(t2)
+    print(f"round {r + 1}: peer {peer_per_case * 1e3:.1f} ms, rocking {t1 / n * 1e3:.3f} ms per case: {peer_per_case / (t1 / n):.0f}x; 2 threads / 1: {t1 / t2:.2f}", file=sys.stderr)
+
 if open(csv1).read() != open(csv2).read():
     sys.exit("sweep.csv differs between 1 and 2 threads")
 rows = list(csv.DictReader(open(csv1)))
@@ -94,12 +106,13 @@ for r in rows:
     if d >= worst:
         worst, worst_case = d, (a, f)
 
+peer_best, t1, t2 = min(peer_times), min(t1s), min(t2s)
 ours1, ours2 = t1 / n, t2 / n
 print(f"cases                        {n} ({len(set(a for a, _ in peer))} amplitudes x {len(set(f for _, f in peer))} frequencies), 10 s each, rtol 1e-8")
-print(f"peer (SciPy DOP853)          {peer_per_case * 1e3:.3f} ms per case")
-print(f"rocking sweep, 1 thread      {ours1 * 1e3:.3f} ms per case (best of {repeats}, whole command)")
+print(f"peer (SciPy DOP853)          {peer_best * 1e3:.3f} ms per case (best of {rounds} rounds)")
+print(f"rocking sweep, 1 thread      {ours1 * 1e3:.3f} ms per case (best of {rounds} x {repeats}, whole command)")
 print(f"rocking sweep, 2 threads     {ours2 * 1e3:.3f} ms per case")
-print(f"peer / rocking (1 thread)    {peer_per_case / ours1:.0f}x")
+print(f"peer / rocking (1 thread)    {peer_best / ours1:.0f}x")
 print(f"rate 2 threads / 1 thread    {t1 / t2:.2f}")
 print(f"max |d max theta/alpha|      {worst:.3e} (A = {worst_case[0]} g, f = {worst_case[1]} Hz)")
 print(f"overturn verdicts differing  {verdicts}")

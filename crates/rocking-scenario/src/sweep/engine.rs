@@ -1,9 +1,11 @@
 //! Running the cases of a sweep in parallel and handing their rows over in order.
 //!
-//! Workers of a local rayon pool take case indices in increasing order from a
-//! shared counter, run them, and send the rows to the calling thread, which
-//! puts them back in order and passes each to the caller's `on_row` as soon as
-//! every earlier row has been passed. A worker does not start case `i` until
+//! The calling thread and the workers of a local rayon pool take case indices
+//! in increasing order from a shared counter and run them; the workers send
+//! their rows to the calling thread, which puts them back in order and passes
+//! each to the caller's `on_row` as soon as every earlier row has been passed
+//! (between its own cases, so it never sleeps waiting for a row while there
+//! is a case left to run). A worker does not start case `i` until
 //! row `i − w` has been passed on (`w` = [`WINDOW`], or 64 per thread if that
 //! is more), so at most `w` rows wait at any time: memory does not grow with
 //! the number of cases, even when one case takes far longer than the others.
@@ -62,24 +64,34 @@ impl Sweep {
     /// Memory stays flat in the number of cases: at most [`WINDOW`] rows (64
     /// per thread if more) are held, and `on_row` sees each row once.
     pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, mut on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
+        let workers = match threads {
+            Some(n) if n > 0 => n,
+            _ => default_threads(),
+        }
+        .clamp(1, self.len().max(1));
+        // The calling thread is one of the workers; the pool holds the others.
+        // (A pool thread without a case to run would spin for a while looking
+        // for work, and take time slices from those running cases.)
         let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads.unwrap_or(0))
-            .thread_name(|i| format!("sweep-{i}"))
+            // (`0` would mean one per core: a lone worker gets a pool of one idle thread.)
+            .num_threads((workers - 1).max(1))
+            .thread_name(|i| format!("sweep-{}", i + 1))
             .build()?;
-        let workers = pool.current_num_threads().clamp(1, self.len().max(1));
         let window = WINDOW.max(64 * workers);
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
+        let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
         // The number of rows passed on so far, and a signal when it grows.
         let passed = (Mutex::new(0usize), Condvar::new());
         let (sender, receiver) = mpsc::channel::<Row>();
 
         let (written, failed, result) = pool.in_place_scope(|scope| {
-            for _ in 0..workers {
+            // The calling thread runs cases too (it would otherwise wake for
+            // every row and take a core's time slices from the workers).
+            for _ in 1..workers {
                 let sender = sender.clone();
-                let (next, stop, passed) = (&next, &stop, &passed);
+                let (next, passed, halted) = (&next, &passed, &halted);
                 scope.spawn(move |_| {
-                    let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
                     while !halted() {
                         let index = next.fetch_add(1, Ordering::Relaxed);
                         if index >= self.len() {
@@ -94,36 +106,44 @@ impl Sweep {
                             done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
                         }
                         drop(done);
-                        let row = catch_unwind(AssertUnwindSafe(|| self.run_case(index))).unwrap_or_else(|panic| self.panicked(index, &*panic));
-                        if sender.send(row).is_err() {
+                        if sender.send(self.guarded_case(index)).is_err() {
                             break;
                         }
                     }
                 });
             }
-            // Only the workers hold senders now: the loop below ends when the last one does.
             drop(sender);
-            let mut waiting: BTreeMap<usize, Row> = BTreeMap::new();
-            let (mut written, mut failed, mut result) = (0usize, 0usize, Ok(()));
-            for row in receiver {
-                if result.is_err() {
-                    continue;
+            let mut order = Reorder {
+                waiting: BTreeMap::new(),
+                written: 0,
+                failed: 0,
+                result: Ok(()),
+                passed: &passed,
+            };
+            // Run cases here while there are any, passing on what the workers
+            // sent in between; a case beyond the window waits for rows first.
+            while !halted() {
+                order.take(receiver.try_iter(), &mut on_row, &stop);
+                let index = next.fetch_add(1, Ordering::Relaxed);
+                if index >= self.len() {
+                    break;
                 }
-                waiting.insert(row.index, row);
-                while let Some(row) = waiting.remove(&written) {
-                    failed += usize::from(row.error().is_some());
-                    if let Err(e) = on_row(row) {
-                        stop.store(true, Ordering::Relaxed);
-                        result = Err(RunError::Stopped(e));
-                        break;
+                while index >= order.written + window && !halted() {
+                    match receiver.recv_timeout(POLL) {
+                        Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
+                        Err(mpsc::RecvTimeoutError::Timeout) => {}
+                        // No worker left: every earlier row is in.
+                        Err(mpsc::RecvTimeoutError::Disconnected) => break,
                     }
-                    written += 1;
                 }
-                let (lock, signal) = &passed;
-                *lock.lock().unwrap_or_else(PoisonError::into_inner) = written;
-                signal.notify_all();
+                if halted() {
+                    break;
+                }
+                order.take(std::iter::once(self.guarded_case(index)), &mut on_row, &stop);
             }
-            (written, failed, result)
+            // The workers' last rows; the loop ends when the last worker does.
+            order.take(receiver.iter(), &mut on_row, &stop);
+            (order.written, order.failed, order.result)
         });
         result?;
         Ok(Finished {
@@ -132,6 +152,11 @@ impl Sweep {
             cancelled: written < self.len(),
             threads: workers,
         })
+    }
+
+    /// Case `index`'s row; a panic inside the case (a bug) becomes its error.
+    fn guarded_case(&self, index: usize) -> Row {
+        catch_unwind(AssertUnwindSafe(|| self.run_case(index))).unwrap_or_else(|panic| self.panicked(index, &*panic))
     }
 
     /// The row of a case whose run panicked.
@@ -143,4 +168,54 @@ impl Sweep {
             .unwrap_or_else(|| "unknown panic".into());
         self.failed_row(index, &format!("internal error (please report it): {message}"))
     }
+}
+
+/// Rows put back in case order and passed on as soon as every earlier one has been.
+struct Reorder<'a, E> {
+    waiting: BTreeMap<usize, Row>,
+    /// Rows passed on: cases `0..written`.
+    written: usize,
+    failed: usize,
+    result: Result<(), RunError<E>>,
+    /// Shared with the workers, which wait on it to stay within the window.
+    passed: &'a (Mutex<usize>, Condvar),
+}
+
+impl<E> Reorder<'_, E> {
+    /// Takes `rows` in any order and passes on those now in order; after an
+    /// error from `on_row`, sets `stop` and drops every row.
+    fn take(&mut self, rows: impl IntoIterator<Item = Row>, on_row: &mut impl FnMut(Row) -> Result<(), E>, stop: &AtomicBool) {
+        let before = self.written;
+        for row in rows {
+            if self.result.is_err() {
+                continue;
+            }
+            self.waiting.insert(row.index, row);
+            while let Some(row) = self.waiting.remove(&self.written) {
+                self.failed += usize::from(row.error().is_some());
+                if let Err(e) = on_row(row) {
+                    stop.store(true, Ordering::Relaxed);
+                    self.result = Err(RunError::Stopped(e));
+                    break;
+                }
+                self.written += 1;
+            }
+        }
+        if self.written > before {
+            let (lock, signal) = self.passed;
+            *lock.lock().unwrap_or_else(PoisonError::into_inner) = self.written;
+            signal.notify_all();
+        }
+    }
+}
+
+/// Worker threads when none are asked for: `RAYON_NUM_THREADS` if set to a
+/// positive number, else one per core (rayon's own rule, applied here because
+/// the pool is built with one thread fewer: the calling thread works too).
+fn default_threads() -> usize {
+    std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
 }
