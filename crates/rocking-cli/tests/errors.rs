@@ -173,7 +173,9 @@ fn record_file_malformed() {
 
 #[test]
 fn toml_syntax_error_gives_the_line() {
-    bad("syntax.toml", &scenario_with("width = 4.0", "width = = 4.0"), &["line 4"]);
+    let text = scenario_with("width = 4.0", "width = = 4.0");
+    let line = text.lines().position(|l| l.starts_with("width = =")).map_or(0, |i| i + 1);
+    bad("syntax.toml", &text, &[&format!("line {line}")]);
 }
 
 #[test]

@@ -65,18 +65,10 @@ pub fn arg(path: &Path) -> &str {
 }
 
 /// A small scenario of the tower on its church: 1 s of a 0.6 g, 5 Hz harmonic.
-pub const SCENARIO: &str = r#"name = "small"
-
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-
-[building]
-mass = 2.0e6
-mu_static = 1.25
-mu_kinetic = 1.0
-
+pub const SCENARIO: &str = concat!(
+    "name = \"small\"\n",
+    include_str!("../../rocking-scenario/tests/data/church.toml"),
+    r#"
 [ground]
 type = "harmonic"
 amplitude = 0.6
@@ -85,7 +77,8 @@ frequency = 5.0
 [simulation]
 duration = 1.0
 output_dt = 0.003
-"#;
+"#
+);
 
 /// `SCENARIO` with `from` replaced by `to` (which must occur).
 pub fn scenario_with(from: &str, to: &str) -> String {

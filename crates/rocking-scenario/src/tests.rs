@@ -9,19 +9,10 @@ use toml::{Table, Value};
 const ORIGIN: &str = "dir/s.toml";
 
 /// The bell tower on its church, shaken for two seconds.
-const BASE: &str = r#"
-name = "t"
-
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-
-[building]
-mass = 2.0e6
-mu_static = 1.25
-mu_kinetic = 1.0
-
+const BASE: &str = concat!(
+    "name = \"t\"\n",
+    include_str!("../tests/data/church.toml"),
+    r#"
 [ground]
 type = "harmonic"
 amplitude = 0.5
@@ -30,7 +21,8 @@ duration = 2.0
 
 [simulation]
 duration = 2.0
-"#;
+"#
+);
 
 fn table(text: &str) -> Table {
     text.parse::<Table>().unwrap_or_else(|e| panic!("test TOML: {e}"))

@@ -67,23 +67,20 @@ pub(crate) mod tests {
     use rocking_scenario::{RunOptions, Scenario};
 
     /// A tower on a church, 1 s of 0.6 g at 5 Hz (as the CLI tests' scenario).
-    pub const SCENARIO: &str = r#"name = "small"
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-[building]
-mass = 2.0e6
-mu_static = 1.25
-mu_kinetic = 1.0
+    pub const SCENARIO: &str = concat!(
+        "name = \"small\"\n",
+        include_str!("../../../rocking-scenario/tests/data/church.toml"),
+        r#"
 [ground]
 type = "harmonic"
 amplitude = 0.6
 frequency = 5.0
+
 [simulation]
 duration = 1.0
 output_dt = 0.01
-"#;
+"#
+    );
 
     /// The outcome of `text`, run with history and events.
     pub fn run(text: &str) -> Outcome {

@@ -12,19 +12,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 const ORIGIN: &str = "dir/sweep.toml";
 
 /// The bell tower on its church, shaken for one second.
-const BASE: &str = r#"
-name = "t"
-
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-
-[building]
-mass = 2.0e6
-mu_static = 1.25
-mu_kinetic = 1.0
-
+const BASE: &str = concat!(
+    "name = \"t\"\n",
+    include_str!("../../tests/data/church.toml"),
+    r#"
 [ground]
 type = "harmonic"
 amplitude = 0.5
@@ -32,7 +23,8 @@ frequency = 5.0
 
 [simulation]
 duration = 1.0
-"#;
+"#
+);
 
 fn sweep(axes: &str) -> Result<Sweep, crate::Error> {
     Sweep::from_toml_str(&format!("{BASE}\n[sweep]\n{axes}\n"), Path::new(ORIGIN))
