@@ -30,11 +30,16 @@
 //! ```
 
 mod body;
+mod condition;
+mod equations;
 mod error;
 mod event;
+mod extrema;
 mod ground;
 mod history;
+mod impact;
 mod integrator;
+mod jet;
 mod model;
 mod observer;
 pub mod reference;

@@ -1,10 +1,10 @@
 //! Observers: how a run reports its steps and events without knowing about
 //! files, plots or progress bars (argmin's `Observe` pattern).
 
+use crate::equations::Kernel;
 use crate::event::Event;
 use crate::ground::Piece;
 use crate::integrator::DenseOutput;
-use crate::model::Kernel;
 use crate::regime::{Motion, Pivot, Regime, State, TowerRegime};
 
 /// Receives the steps and events of a run. Every method has a no-op default.
@@ -102,12 +102,14 @@ impl Step<'_> {
             Interpolant::Dense(d) => d.state(t),
         };
         let a_g = self.piece.eval(t);
-        let acc = self.kernel.accelerations(self.regime, a_g, &y);
+        let acc = self.kernel.accelerations(self.regime, a_g, self.kernel.g, y[0], y[1]);
         let pivot = match self.regime.tower {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
         };
-        let (top_dx, top_abs_acc) = self.kernel.point(pivot, 0.0, self.kernel.height, &y, acc, a_g);
+        let (top_dx, top_abs_acc) = self
+            .kernel
+            .point_kinematics(pivot.map(Pivot::sign), (0.0, self.kernel.height), y[0], y[1], acc.theta, a_g + acc.slip);
         Sample {
             t,
             ground_acc: a_g,
@@ -125,10 +127,14 @@ impl Step<'_> {
     /// acceleration (m/s²) of the tower point `(x, y)` (m, origin at the base
     /// centre) in `sample`, which must come from this step.
     pub fn point(&self, sample: &Sample, x: f64, y: f64) -> (f64, f64) {
-        let acc = crate::model::Accelerations {
-            theta: sample.theta_ddot,
-            slip: sample.slip_acc,
-        };
-        self.kernel.point(sample.pivot, x, y, &sample.state.to_array(), acc, sample.ground_acc)
+        let st = sample.state;
+        self.kernel.point_kinematics(
+            sample.pivot.map(Pivot::sign),
+            (x, y),
+            st.theta,
+            st.theta_dot,
+            sample.theta_ddot,
+            sample.ground_acc + sample.slip_acc,
+        )
     }
 }

@@ -157,10 +157,6 @@ pub struct State {
 
 impl State {
     #[inline]
-    pub(crate) fn to_array(self) -> [f64; 4] {
-        [self.theta, self.theta_dot, self.slip, self.slip_vel]
-    }
-    #[inline]
     pub(crate) fn from_array(y: [f64; 4]) -> Self {
         Self {
             theta: y[0],

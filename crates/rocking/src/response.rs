@@ -1,6 +1,6 @@
 //! The summary of a run: peaks located on the dense output, counts and times.
 
-use crate::model::{Accelerations, Kernel};
+use crate::equations::{Accelerations, Kernel};
 use crate::regime::{Motion, Regime, TowerRegime};
 
 /// Why a run ended (diffsol's `OdeSolverStopReason`).
@@ -97,30 +97,52 @@ impl Tracker {
     /// A value of `θ` and `u` reached (at a step end, an extremum or an event).
     #[inline]
     pub(crate) fn displacement(&mut self, theta: f64, slip: f64) {
-        let s = &mut self.summary;
-        s.theta_range = (s.theta_range.0.min(theta), s.theta_range.1.max(theta));
-        s.max_abs_slip = s.max_abs_slip.max(slip.abs());
+        self.theta(theta);
+        self.summary.max_abs_slip = self.summary.max_abs_slip.max(slip.abs());
     }
 
-    /// The instantaneous checks: top acceleration and pivot reactions.
+    /// A value of `θ` reached.
     #[inline]
-    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, y: &[f64; 4], acc: Accelerations) {
-        self.displacement(y[0], y[2]);
-        if !kernel.has_tower {
-            return;
-        }
-        let pivot = match regime.tower {
-            TowerRegime::Rest => None,
-            TowerRegime::Rocking(p) => Some(p),
-        };
-        let (top_acc, fx, fy) = kernel.checks(pivot, y, acc, a_g);
+    pub(crate) fn theta(&mut self, theta: f64) {
         let s = &mut self.summary;
-        s.max_top_abs_acceleration = s.max_top_abs_acceleration.max(top_acc.abs());
+        s.theta_range = (s.theta_range.0.min(theta), s.theta_range.1.max(theta));
+    }
+
+    /// A value of the top centre's absolute horizontal acceleration (m/s²).
+    #[inline]
+    pub(crate) fn top(&mut self, acceleration: f64) {
+        let s = &mut self.summary;
+        s.max_top_abs_acceleration = s.max_top_abs_acceleration.max(acceleration.abs());
+    }
+
+    /// Pivot reactions per unit tower mass `(f_x, f_y) / m2` (m/s²).
+    #[inline]
+    pub(crate) fn pivot(&mut self, fx: f64, fy: f64) {
+        let s = &mut self.summary;
         if fy > 0.0 {
             s.max_pivot_friction_demand = s.max_pivot_friction_demand.max(fx.abs() / fy);
         } else {
             s.tower_uplift_detected = true;
         }
+    }
+
+    /// The response at an instant (an event or the start): displacements, top
+    /// acceleration and pivot reactions.
+    #[inline]
+    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, g_e: f64, y: &[f64; 4], acc: Accelerations<f64>) {
+        self.displacement(y[0], y[2]);
+        if !kernel.has_tower {
+            return;
+        }
+        let s = match regime.tower {
+            TowerRegime::Rest => None,
+            TowerRegime::Rocking(p) => Some(p.sign()),
+        };
+        let acc_pivot = a_g + acc.slip;
+        let top = kernel.point_kinematics(s, (0.0, kernel.height), y[0], y[1], acc.theta, acc_pivot).1;
+        let (fx, fy) = kernel.pivot_reactions(s.map(|s| kernel.lean(s, y[0])), y[1], acc.theta, acc_pivot, g_e);
+        self.top(top);
+        self.pivot(fx, fy);
     }
 
     /// Time spent in one motion.
@@ -138,8 +160,8 @@ impl Tracker {
         // The top displacement relative to the building grows monotonically with θ
         // for |θ| < π/2, so its peaks are at the extremes of θ.
         let top = |theta: f64| {
-            let b = kernel.half_width * theta.signum();
-            b * (1.0 - theta.cos()) + kernel.height * theta.sin()
+            let s = (theta != 0.0).then(|| theta.signum());
+            kernel.point_kinematics(s, (0.0, kernel.height), theta, 0.0, 0.0, 0.0).0
         };
         s.max_top_displacement = top(s.theta_range.0).abs().max(top(s.theta_range.1).abs());
         self.summary

@@ -2,18 +2,41 @@
 //! instant a transition condition is met by root finding on the dense output,
 //! switch, and go on (model.md, "Regimes").
 //!
-//! Conditions are written as functions that are negative while the regime
-//! holds and cross zero upwards when it must change. Two of them (impact,
-//! `θ = 0`, and the end of a slip, `u̇ = 0`) start a regime exactly on zero and
-//! move away from it: those are armed only once the motion has actually left
-//! zero, which a search towards the start of the step finds. A condition that
-//! already holds (is positive) when a regime is entered switches at once.
+//! Conditions (`condition.rs`) are negative while the regime holds and cross
+//! zero upwards when it must change. The signs of a condition at the two ends
+//! of a step prove nothing about what it did in between, so each step is
+//! examined whole:
+//!
+//! - conditions on `θ` (impact, overturn) and on `u̇` (end of a slip) are
+//!   components of the state, polynomials on the dense output: their roots,
+//!   and the roots of `θ̇` (the extremes of `θ`), are all isolated in the
+//!   Bernstein form (`integrator/bernstein.rs`). On a stuck building, a bound
+//!   of `|θ̈|` over the step proves most steps free of any root of `θ̇` without
+//!   building the dense output; likewise `|ü|` for a sliding building with
+//!   the tower standing;
+//! - the friction demand of a stuck building under a rocking tower is not a
+//!   polynomial: its extrema inside the step are located on its exact time
+//!   derivative (`extrema.rs`), and the demand is checked at each.
+//!
+//! A condition that is zero when a regime is entered and grows (positive time
+//! derivative) switches at once, as does one that is already positive. Two
+//! conditions start a regime on zero and move away from it (impact, `θ = 0`;
+//! end of a slip, `u̇ = 0`): those are armed once the motion has left zero.
+//!
+//! The peaks the summary reports are located the same way: `θ` at the roots
+//! of `θ̇`, the top acceleration and the pivot reactions at the roots of their
+//! exact derivatives.
 
+use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDITIONS};
+use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error};
 use crate::event::{Event, EventKind};
-use crate::ground::{GroundMotion, Segment};
+use crate::extrema::{interior_extrema, may_have_extremum};
+use crate::ground::{GroundMotion, Piece, Segment};
+use crate::integrator::bernstein;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
-use crate::model::{Kernel, Model};
+use crate::jet::Jet;
+use crate::model::Model;
 use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
 use crate::response::{EndReason, Summary, Tracker};
@@ -120,7 +143,7 @@ fn run<O: Observer, const N: usize>(
         segment: ground.segment(0.0),
         stepper: Dop853::new(settings.rtol, settings.atol),
         restart: true,
-        values: [0.0; MAX_CONDITIONS],
+        watch: Watched::default(),
         tracker: Tracker::new(),
         observer,
         switches: 0,
@@ -130,79 +153,80 @@ fn run<O: Observer, const N: usize>(
     run.execute()
 }
 
-/// A condition for leaving the current regime.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Condition {
-    /// The pivot line accelerates beyond `g tan α` towards `+x`: rock on the `−x` corner.
-    UpliftNegative,
-    /// … towards `−x`: rock on the `+x` corner.
-    UpliftPositive,
-    /// `θ` returns to zero.
-    Impact,
-    /// `|θ|` reaches `π/2`.
-    Overturn,
-    /// The stick demand exceeds `μs N` towards `+x`: slip towards `−x`.
-    SlipNegative,
-    /// … towards `−x`: slip towards `+x`.
-    SlipPositive,
-    /// The slip velocity returns to zero.
-    SlipStop,
+/// The quantities examined over a step, at one instant, each with its exact
+/// time derivative along the solution.
+#[derive(Debug, Clone, Copy, Default)]
+struct Watched {
+    /// The conditions of the regime, in the order of [`conditions`].
+    conditions: [Jet; MAX_CONDITIONS],
+    /// Absolute horizontal acceleration of the top centre (m/s²), while rocking.
+    top: Jet,
+    /// Pivot reactions per unit tower mass `(f_x, f_y) / m2` (m/s²), while rocking.
+    fx: Jet,
+    fy: Jet,
 }
 
-const MAX_CONDITIONS: usize = 4;
-
-/// The conditions that can end `regime`, at most four.
-fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], usize) {
-    let mut list = [Condition::Impact; MAX_CONDITIONS];
-    let mut n = 0;
-    let mut push = |c| {
-        list[n] = c;
-        n += 1;
-    };
-    if kernel.has_tower {
-        match regime.tower {
-            TowerRegime::Rest => {
-                push(Condition::UpliftNegative);
-                push(Condition::UpliftPositive);
-            }
-            TowerRegime::Rocking(_) => {
-                push(Condition::Overturn);
-                push(Condition::Impact);
-            }
-        }
-    }
-    if kernel.has_building {
-        match regime.building {
-            BuildingRegime::Stick => {
-                push(Condition::SlipNegative);
-                push(Condition::SlipPositive);
-            }
-            BuildingRegime::Slip(_) => push(Condition::SlipStop),
-        }
-    }
-    (list, n)
-}
-
-/// The value of `condition` in `regime`: negative while the regime holds.
+/// [`Watched`] at `(t, y)`, where the accelerations are `acc`.
 #[inline]
-fn condition_value(kernel: &Kernel, condition: Condition, regime: Regime, a_g: f64, y: &[f64; 4]) -> f64 {
-    let s = pivot_sign(regime);
-    match condition {
-        Condition::UpliftNegative => kernel.pivot_acceleration_at_rest(regime.building, a_g) - kernel.g * kernel.tan_alpha,
-        Condition::UpliftPositive => -kernel.pivot_acceleration_at_rest(regime.building, a_g) - kernel.g * kernel.tan_alpha,
-        Condition::Impact => -s * y[0],
-        Condition::Overturn => s * y[0] - FRAC_PI_2,
-        Condition::SlipNegative | Condition::SlipPositive => {
-            let (force, normal) = kernel.stick_demand(regime.tower, a_g, y);
-            let force = if condition == Condition::SlipNegative { force } else { -force };
-            force - kernel.mu_s * normal
-        }
-        Condition::SlipStop => match regime.building {
-            BuildingRegime::Slip(dir) => -dir.sign() * y[3],
-            BuildingRegime::Stick => -1.0,
-        },
+fn watched(kernel: &Kernel, regime: Regime, piece: &Piece, list: &[Condition], t: f64, y: &[f64; 4], acc: Accelerations<f64>) -> Watched {
+    let a_g = piece.eval_jet(t);
+    let g_e = Jet::from(kernel.g);
+    let yj = state_jets(y, acc.theta, acc.slip);
+    let mut w = Watched::default();
+    for (slot, c) in w.conditions.iter_mut().zip(list) {
+        *slot = c.value(kernel, regime, a_g, g_e, &yj);
     }
+    if let TowerRegime::Rocking(pivot) = regime.tower {
+        let s = pivot.sign();
+        let accj = kernel.accelerations(regime, a_g, g_e, yj[0], yj[1]);
+        let acc_pivot = a_g + accj.slip;
+        w.top = kernel.point_kinematics(Some(s), (0.0, kernel.height), yj[0], yj[1], accj.theta, acc_pivot).1;
+        (w.fx, w.fy) = kernel.pivot_reactions(Some(kernel.lean(s, yj[0])), yj[1], accj.theta, acc_pivot, g_e);
+    }
+    w
 }
+
+/// [`Watched`] at `t` on a step's dense output.
+#[inline]
+fn watched_on<const N: usize>(kernel: &Kernel, regime: Regime, piece: &Piece, list: &[Condition], d: &DenseOutput<N>, t: f64) -> Watched {
+    let y = wide(&d.state(t));
+    let acc = kernel.accelerations(regime, piece.eval(t), kernel.g, y[0], y[1]);
+    watched(kernel, regime, piece, list, t, &y, acc)
+}
+
+/// The accelerations in a right-hand side `f = (θ̇, θ̈, u̇, ü)`.
+#[inline(always)]
+fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
+    Accelerations { theta: f[1], slip: f[3] }
+}
+
+/// The first instant in `points` (ordered, the condition monotone between
+/// consecutive ones) where a condition reaches zero: `locate(ta, va, tb, vb)`
+/// narrows a bracket `va < 0 <= vb`; `leaving(ta, tb)` finds where a
+/// condition that starts on zero has become negative.
+fn first_crossing(points: &[(f64, f64)], mut locate: impl FnMut(f64, f64, f64, f64) -> f64, leaving: impl Fn(f64, f64) -> Option<(f64, f64)>) -> Option<f64> {
+    for k in 1..points.len() {
+        let (tb, vb) = points[k];
+        if vb < 0.0 {
+            continue;
+        }
+        let (ta, va) = points[k - 1];
+        if va < 0.0 {
+            return Some(locate(ta, va, tb, vb));
+        }
+        // Only the start can be on zero (any later point at or above zero
+        // would have ended the search): find where the motion left it. If it
+        // never did, the condition grew from zero: a transition at once.
+        return Some(match leaving(ta, tb) {
+            Some((tl, vl)) => locate(tl, vl, tb, vb),
+            None => ta,
+        });
+    }
+    None
+}
+
+/// At most the roots a polynomial of degree 7 can have, plus the step's ends.
+const MAX_POINTS: usize = 9;
 
 /// The state of a run; the integrator carries the first `N` components of
 /// `(θ, θ̇, u, u̇)` (2 on a fixed base, 4 on a building).
@@ -218,8 +242,8 @@ struct Run<'a, O: Observer, const N: usize> {
     stepper: Dop853<N>,
     /// Whether the stepper must restart at `(t, y)` (after an event or a kink).
     restart: bool,
-    /// Condition values at `(t, y)`, in the order of `conditions`.
-    values: [f64; MAX_CONDITIONS],
+    /// The watched quantities at `(t, y)`.
+    watch: Watched,
     tracker: Tracker,
     observer: &'a mut O,
     /// Switches at `switch_time`, to stop chattering.
@@ -238,6 +262,18 @@ fn wide<const N: usize>(y: &[f64; N]) -> [f64; 4] {
 #[inline(always)]
 fn narrow<const N: usize>(y: [f64; 4]) -> [f64; N] {
     std::array::from_fn(|i| y[i])
+}
+
+fn step_error(e: StepFailure) -> Error {
+    match e {
+        StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
+        StepFailure::NonFinite { time } => Error::Singular {
+            time,
+            reason:
+                "the equations of motion have no solution (with the dynamic normal force, a building this light cannot carry this friction: Painlevé's paradox)"
+                    .into(),
+        },
+    }
 }
 
 impl<O: Observer, const N: usize> Run<'_, O, N> {
@@ -265,6 +301,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.segment.piece.eval(t)
     }
 
+    /// The accelerations at the current instant.
+    fn accelerations_now(&self) -> Accelerations<f64> {
+        self.kernel.accelerations(self.regime, self.a_g(self.t), self.kernel.g, self.y[0], self.y[1])
+    }
+
     /// Moves to the next segment end, or to the first instant on the way where a
     /// condition is met (root finding on `a_g`, monotone on the segment).
     fn advance_static(&mut self) -> Result<(), Error> {
@@ -273,16 +314,22 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.segment = self.ground.segment(self.t);
         let t1 = self.segment.end.min(self.end);
         let (list, n) = conditions(&self.kernel, self.regime);
-        let (regime, y, piece) = (self.regime, self.y, self.segment.piece);
-        let value = |c: Condition, t: f64| condition_value(&self.kernel, c, regime, piece.eval(t), &y);
+        let (kernel, regime, y, piece) = (self.kernel, self.regime, self.y, self.segment.piece);
+        let value = |c: Condition, t: f64| c.value(&kernel, regime, piece.eval(t), kernel.g, &y);
         let mut first: Option<(f64, Condition)> = None;
         for &c in &list[..n] {
             let (v0, v1) = (value(c, self.t), value(c, t1));
-            if v0 < 0.0 && v1 >= 0.0 {
-                let tb = find_crossing(|t| value(c, t), self.t, v0, t1, v1, 0.0).tb;
-                if first.is_none_or(|(tf, _)| tb < tf) {
-                    first = Some((tb, c));
-                }
+            // Monotone on the segment: zero at the start and positive at the end
+            // is positive just after the start.
+            let tb = if v0 < 0.0 && v1 >= 0.0 {
+                find_crossing(|t| value(c, t), self.t, v0, t1, v1, 0.0).tb
+            } else if v0 >= 0.0 && v1 > 0.0 {
+                self.t
+            } else {
+                continue;
+            };
+            if first.is_none_or(|(tf, _)| tb < tf) {
+                first = Some((tb, c));
             }
         }
         let t_stop = first.map_or(t1, |(tb, _)| tb);
@@ -307,91 +354,195 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.settle()
     }
 
-    /// One accepted step of the integrator, cut short at the first transition in it.
+    /// One accepted step of the integrator, examined whole (module docs) and
+    /// cut short at the first transition in it.
     fn advance_dynamic(&mut self) -> Result<(), Error> {
         let (kernel, regime, piece) = (self.kernel, self.regime, self.segment.piece);
+        let g_e = kernel.g;
         let mut rhs = |t: f64, y: &[f64; N]| {
             let y = wide(y);
-            let acc = kernel.accelerations(regime, piece.eval(t), &y);
+            let acc = kernel.accelerations(regime, piece.eval(t), g_e, y[0], y[1]);
             narrow([y[1], acc.theta, y[3], acc.slip])
         };
         let (list, n) = conditions(&kernel, regime);
+        let list = &list[..n];
         if self.restart {
             self.stepper.restart(&mut rhs, self.t, narrow(self.y), self.end);
-            for (i, &c) in list[..n].iter().enumerate() {
-                self.values[i] = condition_value(&kernel, c, regime, piece.eval(self.t), &self.y);
-            }
+            let f = wide(&self.stepper.f);
+            self.watch = watched(&kernel, regime, &piece, list, self.t, &self.y, accelerations_of(&f));
             self.restart = false;
         }
-        // Steps land on kinks and jumps of the input; its extrema matter only
-        // while nothing moves (`advance_static`).
+        // Steps land on kinks and jumps of the input.
         let bound = self.segment.kink.min(self.end);
-        self.stepper.step(&mut rhs, bound).map_err(|e| match e {
-            StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
-            StepFailure::NonFinite { time } => Error::Singular {
-                time,
-                reason: "the equations of motion have no solution (with the dynamic normal force, a building this light cannot carry this friction: Painlevé's paradox)".into(),
-            },
-        })?;
-        let (t0, t1, y1) = (self.stepper.t_old, self.stepper.t, wide(&self.stepper.y));
-        let a1 = piece.eval(t1);
-        let mut dense: Option<DenseOutput<N>> = None;
-        let mut first: Option<(f64, Condition)> = None;
-        let mut new_values = [0.0; MAX_CONDITIONS];
-        for (i, &c) in list[..n].iter().enumerate() {
-            let v1 = condition_value(&kernel, c, regime, a1, &y1);
-            new_values[i] = v1;
-            let v0 = self.values[i];
-            if v1 < 0.0 || (v0 >= 0.0 && v1 <= 0.0) {
-                continue;
-            }
-            let d = *dense.get_or_insert_with(|| self.stepper.dense(&mut rhs));
-            let ground = c.uses_ground();
-            let value = |t: f64| condition_value(&kernel, c, regime, if ground { piece.eval(t) } else { 0.0 }, &wide(&d.state(t)));
-            // Started on zero (an impact or a slip start): find where the motion left it.
-            let start = if v0 < 0.0 { Some((t0, v0)) } else { leaving_point(&value, t0, t1) };
-            let tb = match start {
-                // θ = 0: the dense output gives the derivative θ̇ with θ, for Newton.
-                Some((ta, va)) if c == Condition::Impact => {
-                    let s = pivot_sign(regime);
-                    let with_slope = |t: f64| {
-                        let y = d.state(t);
-                        (-s * y[0], -s * y[1])
-                    };
-                    find_crossing_newton(with_slope, ta, va, t1, v1).tb
-                }
-                Some((ta, va)) => find_crossing(value, ta, va, t1, v1, 0.0).tb,
-                None => t0,
+        self.stepper.step(&mut rhs, bound).map_err(step_error)?;
+        let (t0, t1) = (self.stepper.t_old, self.stepper.t);
+        let (y0, y1) = (wide(&self.stepper.y_old), wide(&self.stepper.y));
+        let h = t1 - t0;
+        let w0 = self.watch;
+        let w1 = watched(&kernel, regime, &piece, list, t1, &y1, accelerations_of(&wide(&self.stepper.f)));
+        let rocking = matches!(regime.tower, TowerRegime::Rocking(_));
+
+        // What needs the inside of the step. θ̇ (and u̇) cannot vanish inside if
+        // it keeps one sign at the ends and its rate is bounded so that it
+        // cannot reach zero from both: |v0| + |v1| > max|v̇| h.
+        let a_max = piece.max_abs(t0, t1);
+        let free_of_roots = |v0: f64, v1: f64, rate_bound: f64| v0 * v1 > 0.0 && v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9);
+        let theta_roots = rocking
+            && match regime.building {
+                // (T) on a stuck building: |θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²).
+                BuildingRegime::Stick => !free_of_roots(y0[1], y1[1], kernel.k * g_e.hypot(a_max)),
+                BuildingRegime::Slip(_) => true,
             };
-            if first.is_none_or(|(tf, _)| tb < tf) {
-                first = Some((tb, c));
+        let slip_roots = N == 4
+            && match (regime.tower, regime.building) {
+                // The complex slides as one body: |ü| = |−μk σ g_e − a_g| <= μk g_e + max|a_g|.
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], kernel.mu_k * g_e + a_max),
+                (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
+                (_, BuildingRegime::Stick) => false,
+            };
+        let stick_examined = rocking && regime.building == BuildingRegime::Stick && kernel.has_building;
+        let crossing_at_end = list.iter().enumerate().any(|(i, _)| w1.conditions[i].v >= 0.0);
+        let watched_inside = rocking
+            && (may_have_extremum(w0.top, w1.top, h)
+                || may_have_extremum(w0.fy, w1.fy, h)
+                || may_have_extremum(w0.fx / w0.fy, w1.fx / w1.fy, h)
+                || (stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h))));
+        let need_dense = theta_roots || slip_roots || crossing_at_end || watched_inside || self.observer.wants_steps();
+        let dense: Option<DenseOutput<N>> = need_dense.then(|| self.stepper.dense(&mut rhs));
+
+        // The extremes of θ inside the step: the roots of θ̇.
+        let mut theta_points = [(0.0, 0.0); MAX_POINTS];
+        let mut n_theta = 0;
+        if let (true, Some(d)) = (theta_roots, &dense) {
+            bernstein::isolate(&bernstein::coefficients(d, 1, 0.0), &mut |xa, xb| {
+                let (ta, tb) = (t0 + xa * h, (t0 + xb * h).min(t1));
+                let sign = if d.state(ta)[1] < 0.0 { 1.0 } else { -1.0 };
+                let rate = |t: f64| {
+                    let (y, dy) = d.state_and_rate(t);
+                    (sign * y[1], sign * dy[1])
+                };
+                let (va, vb) = (rate(ta).0, rate(tb).0);
+                let root = if va < 0.0 && vb >= 0.0 {
+                    find_crossing_newton(rate, ta, va, tb, vb).tb
+                } else {
+                    0.5 * (ta + tb)
+                };
+                if n_theta < MAX_POINTS {
+                    theta_points[n_theta] = (root, d.state(root)[0]);
+                    n_theta += 1;
+                }
+            });
+        }
+
+        // The first transition in the step.
+        let mut first: Option<(f64, Condition)> = None;
+        for (i, &c) in list.iter().enumerate() {
+            let (v0, v1) = (w0.conditions[i].v, w1.conditions[i].v);
+            let mut points = [(0.0, 0.0); MAX_POINTS + 2];
+            let mut m = 0;
+            let mut push = |p: (f64, f64)| {
+                if m < points.len() {
+                    points[m] = p;
+                    m += 1;
+                }
+            };
+            push((t0, v0));
+            let s = pivot_sign(regime);
+            let hit = if c.of_theta() {
+                for &(t, theta) in &theta_points[..n_theta] {
+                    push((t, c.value(&kernel, regime, 0.0, g_e, &[theta, 0.0, 0.0, 0.0])));
+                }
+                push((t1, v1));
+                // c = sgn θ + offset, with θ̇ from the same dense output for Newton.
+                let (sgn, offset) = if c == Condition::Impact { (-s, 0.0) } else { (s, -FRAC_PI_2) };
+                first_crossing(
+                    &points[..m],
+                    |ta, va, tb, vb| {
+                        let Some(d) = &dense else { return tb };
+                        let f = |t: f64| {
+                            let y = d.state(t);
+                            (sgn * y[0] + offset, sgn * y[1])
+                        };
+                        find_crossing_newton(f, ta, va, tb, vb).tb
+                    },
+                    |ta, tb| dense.as_ref().and_then(|d| leaving_point(&|t| sgn * d.state(t)[0] + offset, ta, tb)),
+                )
+            } else {
+                let value = |t: f64| {
+                    dense.as_ref().map_or(v1, |d| {
+                        let y = wide(&d.state(t));
+                        c.value(&kernel, regime, if c.uses_ground() { piece.eval(t) } else { 0.0 }, g_e, &y)
+                    })
+                };
+                if c == Condition::SlipStop && slip_roots {
+                    if let Some(d) = &dense {
+                        let mut bracket = None;
+                        bernstein::isolate(&bernstein::coefficients(d, 3, 0.0), &mut |xa, xb| {
+                            bracket.get_or_insert((t0 + xa * h, (t0 + xb * h).min(t1)));
+                        });
+                        if let Some((ta, tb)) = bracket {
+                            push((ta, value(ta)));
+                            push((tb, value(tb)));
+                        }
+                    }
+                } else if stick_examined && !c.of_theta() {
+                    if let Some(d) = &dense {
+                        let mut eval = |t: f64| watched_on(&kernel, regime, &piece, list, d, t).conditions[i];
+                        interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, &mut |t, v| push((t, v)));
+                    }
+                }
+                push((t1, v1));
+                first_crossing(
+                    &points[..m],
+                    |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
+                    |ta, tb| dense.as_ref().and_then(|_| leaving_point(&value, ta, tb)),
+                )
+            };
+            if let Some(tb) = hit {
+                if first.is_none_or(|(tf, _)| tb < tf) {
+                    first = Some((tb, c));
+                }
             }
         }
         let t_stop = first.map_or(t1, |(tb, _)| tb);
-        // Extremes of θ inside the step, where θ̇ changes sign.
-        if matches!(regime.tower, TowerRegime::Rocking(_)) && self.stepper.y_old[1] * y1[1] < 0.0 {
-            let d = *dense.get_or_insert_with(|| self.stepper.dense(&mut rhs));
-            let w0 = self.stepper.y_old[1];
-            // θ̇ and its derivative come from the same polynomial: Newton.
-            let rate = |t: f64| {
-                let (y, dy) = d.state_and_rate(t);
-                (-w0.signum() * y[1], -w0.signum() * dy[1])
-            };
-            let peak = find_crossing_newton(rate, t0, -w0.abs(), t1, -w0.signum() * y1[1]).tb;
-            if peak <= t_stop {
-                let yp = wide(&d.state(peak));
-                self.tracker.displacement(yp[0], yp[2]);
+
+        // Peaks inside the step, up to the transition.
+        for &(t, theta) in &theta_points[..n_theta] {
+            if t <= t_stop {
+                self.tracker.theta(theta);
             }
         }
-        let interpolant = if first.is_some() || self.observer.wants_steps() {
-            Interpolant::Dense(dense.get_or_insert_with(|| self.stepper.dense(&mut rhs)).widen())
-        } else {
-            Interpolant::Constant(y1)
+        if let (true, Some(d)) = (rocking && watched_inside, &dense) {
+            let at = |t: f64| watched_on(&kernel, regime, &piece, list, d, t);
+            let tracker = &mut self.tracker;
+            interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, &mut |t, v| {
+                if t <= t_stop {
+                    tracker.top(v);
+                }
+            });
+            interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, &mut |t, v| {
+                if t <= t_stop && v <= 0.0 {
+                    tracker.summary.tower_uplift_detected = true;
+                }
+            });
+            let ratio = |w: Watched| w.fx / w.fy;
+            interior_extrema(t0, ratio(w0), t1, ratio(w1), &mut |t| ratio(at(t)), &mut |t, v| {
+                if t <= t_stop {
+                    let w = at(t);
+                    tracker.pivot(w.fx.v, w.fy.v);
+                    debug_assert!(w.fy.v <= 0.0 || (v - w.fx.v / w.fy.v).abs() <= 1e-12 * v.abs().max(1.0));
+                }
+            });
+        }
+
+        let interpolant = match dense {
+            Some(d) => Interpolant::Dense(d.widen()),
+            None => Interpolant::Constant(y1),
         };
         self.emit_step(interpolant, t_stop);
-        if let (Some((tb, c)), Interpolant::Dense(d)) = (first, interpolant) {
+        if let (Some((tb, c)), Some(d)) = (first, dense) {
             self.t = tb;
-            self.y = if tb >= t1 { y1 } else { d.state(tb) };
+            self.y = if tb >= t1 { y1 } else { wide(&d.state(tb)) };
             self.restart = true;
             self.record_instant();
             self.switch(c)?;
@@ -399,10 +550,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         }
         self.t = t1;
         self.y = y1;
-        self.values = new_values;
-        let f = wide(&self.stepper.f);
-        let acc = crate::model::Accelerations { theta: f[1], slip: f[3] };
-        self.tracker.instant(&kernel, regime, a1, &y1, acc);
+        self.watch = w1;
+        self.tracker.displacement(y1[0], y1[2]);
+        if rocking {
+            self.tracker.top(w1.top.v);
+            self.tracker.pivot(w1.fx.v, w1.fy.v);
+        }
         // Within a segment the conditions were just checked on the step; only a
         // new segment (a kink or jump of the input) can make one hold at once.
         if self.t >= self.segment.kink {
@@ -431,19 +584,22 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// Feeds the tracker the response at the current instant.
     fn record_instant(&mut self) {
         let a_g = self.a_g(self.t);
-        let acc = self.kernel.accelerations(self.regime, a_g, &self.y);
-        self.tracker.instant(&self.kernel, self.regime, a_g, &self.y, acc);
+        let acc = self.accelerations_now();
+        self.tracker.instant(&self.kernel, self.regime, a_g, self.kernel.g, &self.y, acc);
     }
 
-    /// Applies every condition that already holds at the current instant.
+    /// Applies every condition that already holds at the current instant, or
+    /// that is zero and growing (its time derivative positive).
     fn settle(&mut self) -> Result<(), Error> {
         while !self.finished {
-            let a_g = self.a_g(self.t);
             let (list, n) = conditions(&self.kernel, self.regime);
-            let Some(&c) = list[..n].iter().find(|&&c| condition_value(&self.kernel, c, self.regime, a_g, &self.y) > 0.0) else {
+            let acc = self.accelerations_now();
+            let w = watched(&self.kernel, self.regime, &self.segment.piece, &list[..n], self.t, &self.y, acc);
+            let holds = |j: Jet| j.v > 0.0 || (j.v == 0.0 && j.d > 0.0);
+            let Some(i) = (0..n).find(|&i| holds(w.conditions[i])) else {
                 return Ok(());
             };
-            self.switch(c)?;
+            self.switch(list[i])?;
         }
         Ok(())
     }
@@ -495,13 +651,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
             Condition::SlipStop => {
                 self.y[3] = 0.0;
-                let (force, normal) = self.kernel.stick_demand(self.regime.tower, a_g, &self.y);
+                let (force, normal) = self.kernel.stick_demand(self.regime.tower, a_g, self.kernel.g, self.y[0], self.y[1]);
                 let old = self.regime.building;
                 if force.abs() <= self.kernel.mu_s * normal {
                     self.regime.building = BuildingRegime::Stick;
                     EventKind::Stick
                 } else {
-                    let dir = Kernel::slip_direction(force);
+                    let dir = SlipDirection::of_sign(-force);
                     self.regime.building = BuildingRegime::Slip(dir);
                     if old == BuildingRegime::Slip(dir) {
                         return Ok(());
@@ -514,23 +670,44 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         Ok(())
     }
 
-    /// `θ̇⁺ = r θ̇⁻`, the pivot flips; below [`REST_ANGULAR_VELOCITY`] the tower
+    /// The impact law (`impact.rs`): the pivot flips, `θ̇` and `u̇` jump; a
+    /// building that starts or stops sliding through the impact is an event of
+    /// its own at the same instant. Below [`REST_ANGULAR_VELOCITY`] the tower
     /// stands, unless the pivot line accelerates enough to lift it at once.
     fn impact(&mut self) -> Result<(), Error> {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return Ok(()) };
         let before = self.y;
+        let after = self.kernel.impact_law(pivot.sign(), self.y[1], self.y[3], self.regime.building);
         self.y[0] = 0.0;
-        self.y[1] *= self.kernel.restitution;
+        self.y[1] = after.theta_dot;
+        self.y[3] = after.slip_vel;
         self.tracker.summary.impacts += 1;
         self.regime.tower = TowerRegime::Rocking(pivot.flipped());
+        let old = self.regime.building;
+        self.regime.building = after.building;
         self.emit(EventKind::Impact, before);
+        if after.building != old {
+            let kind = match (old, after.building) {
+                (_, BuildingRegime::Stick) => EventKind::Stick,
+                (BuildingRegime::Stick, BuildingRegime::Slip(_)) => {
+                    self.tracker.summary.first_slip_time.get_or_insert(self.t);
+                    EventKind::Slip
+                }
+                (BuildingRegime::Slip(_), BuildingRegime::Slip(_)) => EventKind::Reverse,
+            };
+            let at = self.y;
+            self.emit(kind, at);
+        }
         if self.y[1].abs() < REST_ANGULAR_VELOCITY {
             let before = self.y;
             self.y[1] = 0.0;
             self.regime.tower = TowerRegime::Rest;
-            let acc = self.kernel.pivot_acceleration_at_rest(self.regime.building, self.a_g(self.t));
+            let acc_pivot = match self.regime.building {
+                BuildingRegime::Stick => self.a_g(self.t),
+                BuildingRegime::Slip(dir) => self.kernel.resting_slide(dir.sign(), self.kernel.g),
+            };
             // If it would lift at once, `settle` switches to rocking: no rest in between.
-            if self.kernel.uplift_margin(acc) <= 0.0 {
+            if acc_pivot.abs() <= self.kernel.uplift_threshold(self.kernel.g) {
                 self.emit(EventKind::Rest, before);
             }
         }
@@ -548,32 +725,6 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         };
         self.observer.on_event(&event);
         self.record_instant();
-    }
-}
-
-impl Condition {
-    /// Whether the condition depends on the ground acceleration (else it is
-    /// evaluated without computing `a_g`, which saves a sine in root finding).
-    fn uses_ground(self) -> bool {
-        !matches!(self, Condition::Impact | Condition::Overturn | Condition::SlipStop)
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Condition::UpliftNegative | Condition::UpliftPositive => "uplift",
-            Condition::Impact => "impact",
-            Condition::Overturn => "overturn",
-            Condition::SlipNegative | Condition::SlipPositive => "slip",
-            Condition::SlipStop => "slip stop",
-        }
-    }
-}
-
-/// `s = ±1` of a rocking tower (0 at rest).
-fn pivot_sign(regime: Regime) -> f64 {
-    match regime.tower {
-        TowerRegime::Rocking(p) => p.sign(),
-        TowerRegime::Rest => 0.0,
     }
 }
 

@@ -16,6 +16,8 @@ pub use pulse::{Pulse, PulseShape};
 pub use record::{AccelerationUnit, CsvOptions, Record, RecordError, RecordFormat};
 pub use ricker::Ricker;
 
+use crate::jet::Jet;
+
 /// A horizontal ground motion, zero for `t < 0` and after it ends.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -58,6 +60,39 @@ impl Piece {
                 let x = (pi_f * (t - t0)).powi(2);
                 amplitude * (1.0 - 2.0 * x) * (-x).exp()
             }
+        }
+    }
+}
+
+impl Piece {
+    /// `a_g(t)` and its time derivative (m/s², m/s³).
+    #[inline]
+    pub(crate) fn eval_jet(&self, t: f64) -> Jet {
+        match *self {
+            Piece::Constant(a) => Jet::new(a, 0.0),
+            Piece::Sine { amplitude, omega, phase } => {
+                let (s, c) = crate::trig::sin_cos(omega * t + phase);
+                Jet::new(amplitude * s, amplitude * omega * c)
+            }
+            Piece::Linear { t0, a0, slope } => Jet::new(a0 + slope * (t - t0), slope),
+            Piece::Ricker { amplitude, pi_f, t0 } => {
+                let tau = t - t0;
+                let x = (pi_f * tau).powi(2);
+                let e = (-x).exp();
+                // d/dx [(1 − 2x) e^−x] = (2x − 3) e^−x, dx/dt = 2 (π f)² τ.
+                Jet::new(amplitude * (1.0 - 2.0 * x) * e, amplitude * (2.0 * x - 3.0) * e * 2.0 * pi_f * pi_f * tau)
+            }
+        }
+    }
+
+    /// An upper bound of `|a_g|` on `[t0, t1]` (m/s²).
+    #[inline]
+    pub(crate) fn max_abs(&self, t0: f64, t1: f64) -> f64 {
+        match *self {
+            Piece::Constant(a) => a.abs(),
+            // |sin| <= 1; |(1 − 2x) e^−x| <= 1 for x >= 0.
+            Piece::Sine { amplitude, .. } | Piece::Ricker { amplitude, .. } => amplitude.abs(),
+            Piece::Linear { .. } => self.eval(t0).abs().max(self.eval(t1).abs()),
         }
     }
 }

@@ -34,11 +34,11 @@ pub(crate) enum StepFailure {
 /// Polynomial of the last accepted step, valid on `[t_old, t_new]`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct DenseOutput<const N: usize> {
-    t_old: f64,
-    h: f64,
-    y_old: [f64; N],
+    pub(crate) t_old: f64,
+    pub(crate) h: f64,
+    pub(crate) y_old: [f64; N],
     /// `F[0..7]` of Hairer's continuous extension, highest power last.
-    f: [[f64; N]; 7],
+    pub(crate) f: [[f64; N]; 7],
 }
 
 impl<const N: usize> DenseOutput<N> {

@@ -1,6 +1,7 @@
 //! Time integration: an explicit Runge–Kutta pair with dense output, and event
 //! location on that dense output.
 
+pub(crate) mod bernstein;
 mod dop853;
 #[rustfmt::skip]
 mod dop853_tableau;

@@ -1,0 +1,125 @@
+//! The transition conditions of model.md, "Regimes", each a function that is
+//! negative while the regime holds and crosses zero upwards when it must
+//! change, evaluated on `f64` or, with its exact time derivative, on [`Jet`].
+
+use crate::equations::Kernel;
+use crate::jet::{Jet, Real};
+use crate::regime::{BuildingRegime, Regime, TowerRegime};
+use std::f64::consts::FRAC_PI_2;
+
+/// A condition for leaving the current regime.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Condition {
+    /// The pivot line accelerates beyond `g_e tan α` towards `+x`: rock on the `−x` corner.
+    UpliftNegative,
+    /// … towards `−x`: rock on the `+x` corner.
+    UpliftPositive,
+    /// `θ` returns to zero.
+    Impact,
+    /// `|θ|` reaches `π/2`.
+    Overturn,
+    /// The stick demand exceeds `μs N` towards `+x`: slip towards `−x`.
+    SlipNegative,
+    /// … towards `−x`: slip towards `+x`.
+    SlipPositive,
+    /// The slip velocity returns to zero.
+    SlipStop,
+}
+
+pub(crate) const MAX_CONDITIONS: usize = 4;
+
+/// The conditions that can end `regime`, at most four.
+pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], usize) {
+    let mut list = [Condition::Impact; MAX_CONDITIONS];
+    let mut n = 0;
+    let mut push = |c| {
+        list[n] = c;
+        n += 1;
+    };
+    if kernel.has_tower {
+        match regime.tower {
+            TowerRegime::Rest => {
+                push(Condition::UpliftNegative);
+                push(Condition::UpliftPositive);
+            }
+            TowerRegime::Rocking(_) => {
+                push(Condition::Overturn);
+                push(Condition::Impact);
+            }
+        }
+    }
+    if kernel.has_building {
+        match regime.building {
+            BuildingRegime::Stick => {
+                push(Condition::SlipNegative);
+                push(Condition::SlipPositive);
+            }
+            BuildingRegime::Slip(_) => push(Condition::SlipStop),
+        }
+    }
+    (list, n)
+}
+
+/// `s = ±1` of a rocking tower (0 at rest).
+pub(crate) fn pivot_sign(regime: Regime) -> f64 {
+    match regime.tower {
+        TowerRegime::Rocking(p) => p.sign(),
+        TowerRegime::Rest => 0.0,
+    }
+}
+
+/// The state `(θ, θ̇, u, u̇)` as jets along the solution: each component with
+/// its time derivative (`θ̇`, `θ̈`, `u̇`, `ü`).
+pub(crate) fn state_jets(y: &[f64; 4], theta_ddot: f64, slip_acc: f64) -> [Jet; 4] {
+    [Jet::new(y[0], y[1]), Jet::new(y[1], theta_ddot), Jet::new(y[2], y[3]), Jet::new(y[3], slip_acc)]
+}
+
+impl Condition {
+    /// The value of the condition in `regime`: negative while the regime holds.
+    #[inline]
+    pub(crate) fn value<T: Real>(self, kernel: &Kernel, regime: Regime, a_g: T, g_e: T, y: &[T; 4]) -> T {
+        let s = pivot_sign(regime);
+        match self {
+            Condition::UpliftNegative | Condition::UpliftPositive => {
+                let acc_pivot = match regime.building {
+                    BuildingRegime::Stick => a_g,
+                    BuildingRegime::Slip(dir) => kernel.resting_slide(dir.sign(), g_e),
+                };
+                let toward = if self == Condition::UpliftNegative { acc_pivot } else { -acc_pivot };
+                toward - kernel.uplift_threshold(g_e)
+            }
+            Condition::Impact => -(y[0] * s),
+            Condition::Overturn => y[0] * s - FRAC_PI_2,
+            Condition::SlipNegative | Condition::SlipPositive => {
+                let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y[0], y[1]);
+                let toward = if self == Condition::SlipNegative { force } else { -force };
+                toward - normal * kernel.mu_s
+            }
+            Condition::SlipStop => match regime.building {
+                BuildingRegime::Slip(dir) => -(y[3] * dir.sign()),
+                BuildingRegime::Stick => T::from(-1.0),
+            },
+        }
+    }
+
+    /// Whether the condition is a function of `θ` alone (its extrema are those of `θ`).
+    pub(crate) fn of_theta(self) -> bool {
+        matches!(self, Condition::Impact | Condition::Overturn)
+    }
+
+    /// Whether the condition depends on the ground acceleration (else it is
+    /// evaluated without computing `a_g`, which saves a sine in root finding).
+    pub(crate) fn uses_ground(self) -> bool {
+        !matches!(self, Condition::Impact | Condition::Overturn | Condition::SlipStop)
+    }
+
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Condition::UpliftNegative | Condition::UpliftPositive => "uplift",
+            Condition::Impact => "impact",
+            Condition::Overturn => "overturn",
+            Condition::SlipNegative | Condition::SlipPositive => "slip",
+            Condition::SlipStop => "slip stop",
+        }
+    }
+}

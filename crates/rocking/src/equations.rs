@@ -1,0 +1,248 @@
+//! The equations of the model, each written once (model.md, "Equations of
+//! motion", "Regimes", "Checks the model must report", "Points of the tower"),
+//! generic over [`Real`] so that the right-hand side evaluates them on `f64`
+//! and event location and peak finding on [`Jet`](crate::jet::Jet) (value and
+//! exact time derivative along the solution):
+//!
+//! ```text
+//! I_O θ̈ + m2 R cos φ · Ẍ_p + s m2 g_e R sin φ = 0                     (T)
+//! M Ẍ_p + m2 R (cos φ · θ̈ + s sin φ · θ̇²) = F,   Ẍ_p = a_g + ü       (B)
+//! N = M g_e  (constant)   or   N = M g_e + m2 R (s sin φ θ̈ − cos φ θ̇²)  (N)
+//! f_x = m2 (Ẍ_p + R (cos φ θ̈ + s sin φ θ̇²)),
+//! f_y = m2 (g_e + R (s sin φ θ̈ − cos φ θ̇²))                          (pivot reactions)
+//! ```
+//!
+//! with `φ = α − s θ` (equal to `α − |θ|` on the pivot's own side and its
+//! analytic continuation across `θ = 0`, which event location needs) and
+//! `g_e` the effective gravity (`g` without a vertical ground motion).
+
+use crate::body::{Building, NormalForce, Tower};
+use crate::jet::Real;
+use crate::model::Model;
+use crate::regime::{BuildingRegime, Regime, TowerRegime};
+
+/// The model's constants, laid out for the inner loop.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Kernel {
+    pub(crate) has_tower: bool,
+    pub(crate) has_building: bool,
+    /// Gravity `g` (m/s²).
+    pub(crate) g: f64,
+    pub(crate) alpha: f64,
+    pub(crate) tan_alpha: f64,
+    /// `m2 R / I_O` (1/m), so that `p² = k g`.
+    pub(crate) k: f64,
+    /// `R` (m).
+    pub(crate) radius: f64,
+    /// `m2` (kg).
+    pub(crate) m2: f64,
+    /// `m2 R` (kg·m).
+    pub(crate) m2r: f64,
+    /// `I_O` (kg·m²).
+    pub(crate) inertia: f64,
+    /// Sliding mass `M = m1 + m2` (kg).
+    pub(crate) total: f64,
+    pub(crate) mu_s: f64,
+    pub(crate) mu_k: f64,
+    pub(crate) dynamic: bool,
+    /// Restitution `r` of the angular velocity.
+    pub(crate) restitution: f64,
+    /// `b = B/2` (m).
+    pub(crate) half_width: f64,
+    /// `H` (m).
+    pub(crate) height: f64,
+}
+
+/// `θ̈` and `ü` at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct Accelerations<T> {
+    /// `θ̈` (rad/s²).
+    pub(crate) theta: T,
+    /// `ü` (m/s²).
+    pub(crate) slip: T,
+}
+
+/// `sin φ`, `cos φ` of `φ = α − s θ`, and `s`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Lean<T> {
+    pub(crate) s: f64,
+    pub(crate) sin_phi: T,
+    pub(crate) cos_phi: T,
+}
+
+impl Kernel {
+    pub(crate) fn new(model: &Model) -> Self {
+        let t = model.tower();
+        let b = model.building();
+        let m2 = t.map_or(0.0, Tower::mass);
+        let radius = t.map_or(0.0, Tower::radius);
+        let inertia = t.map_or(1.0, Tower::inertia_pivot);
+        let alpha = t.map_or(0.0, Tower::alpha);
+        Self {
+            has_tower: t.is_some(),
+            has_building: b.is_some(),
+            g: model.gravity(),
+            alpha,
+            tan_alpha: alpha.tan(),
+            k: m2 * radius / inertia,
+            radius,
+            m2,
+            m2r: m2 * radius,
+            inertia,
+            total: b.map_or(0.0, Building::mass) + m2,
+            mu_s: b.map_or(f64::INFINITY, Building::mu_static),
+            mu_k: b.map_or(0.0, Building::mu_kinetic),
+            dynamic: b.is_some_and(|b| b.normal_force() == NormalForce::Dynamic),
+            restitution: t.map_or(1.0, Tower::restitution),
+            half_width: t.map_or(0.0, Tower::half_width),
+            height: t.map_or(0.0, Tower::height),
+        }
+    }
+
+    /// `φ = α − s θ` and its sine and cosine.
+    #[inline(always)]
+    pub(crate) fn lean<T: Real>(&self, s: f64, theta: T) -> Lean<T> {
+        let (sin_phi, cos_phi) = (T::from(self.alpha) - theta * s).sin_cos();
+        Lean { s, sin_phi, cos_phi }
+    }
+
+    /// (T) solved for `θ̈`, the pivot line's acceleration `Ẍ_p` given:
+    /// `θ̈ = −(m2 R / I_O) (s g_e sin φ + Ẍ_p cos φ)`; Housner's equation on a
+    /// fixed base.
+    #[inline(always)]
+    pub(crate) fn tower_equation<T: Real>(&self, lean: Lean<T>, acc_pivot: T, g_e: T) -> T {
+        -(g_e * lean.sin_phi * lean.s + acc_pivot * lean.cos_phi) * self.k
+    }
+
+    /// (B) solved for the friction force: `F = M Ẍ_p + m2 R (cos φ θ̈ + s sin φ θ̇²)`.
+    #[inline(always)]
+    pub(crate) fn building_equation<T: Real>(&self, lean: Lean<T>, theta_dot: T, theta_ddot: T, acc_pivot: T) -> T {
+        acc_pivot * self.total + (lean.cos_phi * theta_ddot + lean.sin_phi * theta_dot * theta_dot * lean.s) * self.m2r
+    }
+
+    /// (N): the normal force of the foundation on the building, `M g_e`
+    /// (constant) or `M g_e + m2 R (s sin φ θ̈ − cos φ θ̇²)` (dynamic).
+    #[inline(always)]
+    pub(crate) fn normal_force<T: Real>(&self, lean: Lean<T>, theta_dot: T, theta_ddot: T, g_e: T) -> T {
+        let weight = g_e * self.total;
+        if self.dynamic {
+            weight + (lean.sin_phi * theta_ddot * lean.s - lean.cos_phi * theta_dot * theta_dot) * self.m2r
+        } else {
+            weight
+        }
+    }
+
+    /// The uplift threshold of a standing tower: `|Ẍ_p| > g_e tan α` lifts it
+    /// (model.md, "Regimes": rest → rocking).
+    #[inline(always)]
+    pub(crate) fn uplift_threshold<T: Real>(&self, g_e: T) -> T {
+        g_e * self.tan_alpha
+    }
+
+    /// The pivot line's acceleration `Ẍ_p` of a sliding building with the tower
+    /// standing on it: (B) with `θ̇ = θ̈ = 0` and `F = −μk σ N`, `N = M g_e` for
+    /// both normal-force laws, so `Ẍ_p = −μk σ g_e`.
+    #[inline(always)]
+    pub(crate) fn resting_slide<T: Real>(&self, sigma: f64, g_e: T) -> T {
+        g_e * (-self.mu_k * sigma)
+    }
+
+    /// The stick demand: the friction force `F_req` that keeps the building stuck
+    /// (`ü = 0`, so `Ẍ_p = a_g`), (B) with `θ̈` from (T), and the normal force (N)
+    /// at that instant. The building slips when `|F_req| > μs N`.
+    #[inline(always)]
+    pub(crate) fn stick_demand<T: Real>(&self, tower: TowerRegime, a_g: T, g_e: T, theta: T, theta_dot: T) -> (T, T) {
+        match tower {
+            TowerRegime::Rest => (a_g * self.total, g_e * self.total),
+            TowerRegime::Rocking(pivot) => {
+                let lean = self.lean(pivot.sign(), theta);
+                let theta_ddot = self.tower_equation(lean, a_g, g_e);
+                (
+                    self.building_equation(lean, theta_dot, theta_ddot, a_g),
+                    self.normal_force(lean, theta_dot, theta_ddot, g_e),
+                )
+            }
+        }
+    }
+
+    /// `θ̈` and `ü` in `regime` for ground acceleration `a_g`, effective gravity
+    /// `g_e` and state `(θ, θ̇)`.
+    #[inline(always)]
+    pub(crate) fn accelerations<T: Real>(&self, regime: Regime, a_g: T, g_e: T, theta: T, theta_dot: T) -> Accelerations<T> {
+        let zero = T::from(0.0);
+        match (regime.tower, regime.building) {
+            (TowerRegime::Rest, BuildingRegime::Stick) => Accelerations { theta: zero, slip: zero },
+            (TowerRegime::Rest, BuildingRegime::Slip(dir)) => Accelerations {
+                theta: zero,
+                slip: self.resting_slide(dir.sign(), g_e) - a_g,
+            },
+            (TowerRegime::Rocking(pivot), BuildingRegime::Stick) => Accelerations {
+                theta: self.tower_equation(self.lean(pivot.sign(), theta), a_g, g_e),
+                slip: zero,
+            },
+            (TowerRegime::Rocking(pivot), BuildingRegime::Slip(dir)) => {
+                let (theta_ddot, acc_pivot) = self.rocking_on_sliding_building(self.lean(pivot.sign(), theta), dir.sign(), theta_dot, g_e);
+                Accelerations {
+                    theta: theta_ddot,
+                    slip: acc_pivot - a_g,
+                }
+            }
+        }
+    }
+
+    /// (T) and (B) with `F = −μk σ N` and (N): a linear 2×2 system in
+    /// `(θ̈, Ẍ_p)`, solved directly. Returns NaN where it has no solution
+    /// (Painlevé's paradox of the dynamic normal force: a light building under
+    /// high friction), which stops the integrator with the time.
+    #[inline(always)]
+    pub(crate) fn rocking_on_sliding_building<T: Real>(&self, lean: Lean<T>, sigma: f64, theta_dot: T, g_e: T) -> (T, T) {
+        let s = lean.s;
+        let friction = self.mu_k * sigma;
+        let w2 = theta_dot * theta_dot;
+        // (T):  I θ̈ + c Ẍ_p = t_rhs, with c = m2 R cos φ.
+        let c = lean.cos_phi * self.m2r;
+        let t_rhs = -(lean.sin_phi * g_e * (s * self.m2r));
+        // (B) with F = −μk σ N, N from (N) split into its θ̈ term and the rest:
+        //   (c + [dyn] μk σ s m2 R sin φ) θ̈ + M Ẍ_p = −s m2 R sin φ θ̇² − μk σ N₀.
+        let zero_acc = T::from(0.0);
+        let n0 = self.normal_force(lean, theta_dot, zero_acc, g_e);
+        let a21 = if self.dynamic { c + lean.sin_phi * (friction * s * self.m2r) } else { c };
+        let b_rhs = -(lean.sin_phi * w2 * (s * self.m2r)) - n0 * friction;
+        let det = T::from(self.inertia * self.total) - c * a21;
+        if det.value() <= 0.0 {
+            return (T::from(f64::NAN), T::from(f64::NAN));
+        }
+        let theta_ddot = (t_rhs * self.total - c * b_rhs) / det;
+        let acc_pivot = (b_rhs * self.inertia - a21 * t_rhs) / det;
+        (theta_ddot, acc_pivot)
+    }
+
+    /// The pivot reactions per unit tower mass, `(f_x, f_y) / m2` (m/s²)
+    /// (model.md, "Checks the model must report"); a standing tower has
+    /// `(Ẍ_p, g_e)`.
+    #[inline(always)]
+    pub(crate) fn pivot_reactions<T: Real>(&self, lean: Option<Lean<T>>, theta_dot: T, theta_ddot: T, acc_pivot: T, g_e: T) -> (T, T) {
+        let Some(lean) = lean else { return (acc_pivot, g_e) };
+        let w2 = theta_dot * theta_dot;
+        (
+            acc_pivot + (lean.cos_phi * theta_ddot + lean.sin_phi * w2 * lean.s) * self.radius,
+            g_e + (lean.sin_phi * theta_ddot * lean.s - lean.cos_phi * w2) * self.radius,
+        )
+    }
+
+    /// Point kinematics (paper eqs. 7–13 with model.md's rotation): the
+    /// horizontal displacement relative to the building and the absolute
+    /// horizontal acceleration of the tower point `(x, y)` (tower coordinates,
+    /// origin at the base centre), at rest `(0, Ẍ_p)`. Relative to the pivot
+    /// `(s b, 0)` the point sits at `Rot(θ) (x − s b, y)`.
+    #[inline(always)]
+    pub(crate) fn point_kinematics<T: Real>(&self, s: Option<f64>, (x, y): (f64, f64), theta: T, theta_dot: T, theta_ddot: T, acc_pivot: T) -> (T, T) {
+        let Some(s) = s else { return (T::from(0.0), acc_pivot) };
+        let xr = x - s * self.half_width;
+        let (sin_t, cos_t) = theta.sin_cos();
+        let dx = cos_t * xr + sin_t * y - xr;
+        let lever = cos_t * y - sin_t * xr;
+        let centripetal = cos_t * xr + sin_t * y;
+        (dx, acc_pivot + lever * theta_ddot - centripetal * theta_dot * theta_dot)
+    }
+}

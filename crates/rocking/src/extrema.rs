@@ -1,0 +1,175 @@
+//! Local extrema, inside one step, of a smooth quantity that is not a
+//! component of the state (the friction demand of a stuck building, the top
+//! acceleration, the pivot reactions).
+//!
+//! The value and the exact time derivative of the quantity are known at both
+//! ends of the step (forward-mode jets through the equations). An extremum
+//! inside shows as a sign change of the derivative between the ends; a pair
+//! of extrema (a maximum and a minimum) leaves the ends' derivatives of one
+//! sign, but then the cubic Hermite interpolant of the four end values, which
+//! matches the quantity to `O(h⁴)`, has its own two critical points there.
+//! So the derivative is sampled at the ends, at the Hermite interpolant's
+//! critical points and between them; every sign change among the samples
+//! brackets an extremum, located by root finding on the exact derivative.
+//! A step whose ends show no extremum and whose interpolant has no critical
+//! point inside costs nothing beyond the end values.
+
+use crate::integrator::find_crossing;
+use crate::jet::Jet;
+
+/// Critical points in `(0, 1)` of the cubic Hermite interpolant of `q0`,
+/// `q1` with slopes `h d0`, `h d1` (at most two, in increasing order).
+fn hermite_critical_points(q0: Jet, q1: Jet, h: f64) -> ([f64; 2], usize) {
+    let delta = q1.v - q0.v;
+    let (s0, s1) = (h * q0.d, h * q1.d);
+    // p(x) = q0 + s0 x + c2 x² + c3 x³; p'(x) = s0 + 2 c2 x + 3 c3 x².
+    let c2 = 3.0 * delta - 2.0 * s0 - s1;
+    let c3 = -2.0 * delta + s0 + s1;
+    let (a, b, c) = (3.0 * c3, 2.0 * c2, s0);
+    let mut out = [0.0; 2];
+    let mut n = 0;
+    let mut push = |x: f64| {
+        if x > 0.0 && x < 1.0 && x.is_finite() {
+            out[n] = x;
+            n += 1;
+        }
+    };
+    let scale = a.abs().max(b.abs()).max(c.abs());
+    if scale == 0.0 {
+        return (out, 0);
+    }
+    if a.abs() <= 1e-12 * scale {
+        if b != 0.0 {
+            push(-c / b);
+        }
+    } else {
+        let disc = b * b - 4.0 * a * c;
+        if disc >= 0.0 {
+            // Citardauq/quadratic pair without cancellation.
+            let q = -0.5 * (b + b.signum() * disc.sqrt());
+            let (x1, x2) = (q / a, if q != 0.0 { c / q } else { f64::NAN });
+            let (lo, hi) = if x1 <= x2 || x2.is_nan() { (x1, x2) } else { (x2, x1) };
+            push(lo);
+            push(hi);
+        }
+    }
+    (out, n)
+}
+
+/// Whether the end values leave room for an extremum inside the step (if
+/// not, [`interior_extrema`] finds none without evaluating anything).
+pub(crate) fn may_have_extremum(q0: Jet, q1: Jet, h: f64) -> bool {
+    h > 0.0 && (q0.d * q1.d < 0.0 || hermite_critical_points(q0, q1, h).1 > 0)
+}
+
+/// Calls `found(t, q)` for each local extremum of `q` found inside
+/// `(t0, t1)`, in increasing time; `eval(t)` gives `q` and `q̇` at `t`.
+pub(crate) fn interior_extrema(t0: f64, q0: Jet, t1: f64, q1: Jet, eval: &mut impl FnMut(f64) -> Jet, found: &mut impl FnMut(f64, f64)) {
+    let h = t1 - t0;
+    if h <= 0.0 {
+        return;
+    }
+    if !may_have_extremum(q0, q1, h) {
+        return;
+    }
+    let (critical, n) = hermite_critical_points(q0, q1, h);
+    // Samples of the derivative: ends, critical points, and between two of them.
+    let mut samples = [(0.0, 0.0); 5];
+    let mut m = 0;
+    samples[m] = (t0, q0.d);
+    m += 1;
+    for (i, &x) in critical[..n].iter().enumerate() {
+        if i == 1 {
+            let mid = t0 + 0.5 * (critical[0] + x) * h;
+            samples[m] = (mid, eval(mid).d);
+            m += 1;
+        }
+        let t = t0 + x * h;
+        samples[m] = (t, eval(t).d);
+        m += 1;
+    }
+    samples[m] = (t1, q1.d);
+    m += 1;
+    // Sign changes between consecutive nonzero samples; a sample exactly on
+    // zero between them is the extremum itself.
+    let mut last: Option<usize> = None;
+    for k in 0..m {
+        let (tb, db) = samples[k];
+        if db == 0.0 {
+            continue;
+        }
+        if let Some(j) = last {
+            let (ta, da) = samples[j];
+            if da * db < 0.0 {
+                if let Some(z) = (j + 1..k).find(|&z| samples[z].1 == 0.0) {
+                    let t = samples[z].0;
+                    found(t, eval(t).v);
+                } else {
+                    // The derivative, signed so that it crosses zero upwards.
+                    let sign = if da > 0.0 { -1.0 } else { 1.0 };
+                    let t = find_crossing(|t| sign * eval(t).d, ta, sign * da, tb, sign * db, 0.0).tb;
+                    found(t, eval(t).v);
+                }
+            }
+        }
+        last = Some(k);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    fn jet_of(f: impl Fn(f64) -> (f64, f64), t: f64) -> Jet {
+        let (v, d) = f(t);
+        Jet::new(v, d)
+    }
+
+    /// sin(t) on [1, 2.2]: one maximum at π/2, value 1, located to the
+    /// bracket's width (a few ulp), so the value is exact to rounding.
+    #[test]
+    fn one_maximum_between_ends_of_opposite_slope() {
+        let f = |t: f64| (t.sin(), t.cos());
+        let mut got = Vec::new();
+        interior_extrema(1.0, jet_of(f, 1.0), 2.2, jet_of(f, 2.2), &mut |t| jet_of(f, t), &mut |t, v| got.push((t, v)));
+        assert_eq!(got.len(), 1);
+        assert_relative_eq!(got[0].0, std::f64::consts::FRAC_PI_2, epsilon = 1e-12);
+        assert_relative_eq!(got[0].1, 1.0, epsilon = 1e-15);
+    }
+
+    /// t³ − 3 a² t with a = 0.1 on [−0.3, 0.3]: slopes at both ends are
+    /// positive (27a² − 3a² > 0), yet there is a maximum at −a and a minimum at
+    /// +a, with values ±2a³. Both are found.
+    #[test]
+    fn a_pair_hidden_from_the_ends_slopes() {
+        let a: f64 = 0.1;
+        let f = move |t: f64| (t * t * t - 3.0 * a * a * t, 3.0 * t * t - 3.0 * a * a);
+        let mut got = Vec::new();
+        interior_extrema(-0.3, jet_of(f, -0.3), 0.3, jet_of(f, 0.3), &mut |t| jet_of(f, t), &mut |t, v| got.push((t, v)));
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert_relative_eq!(got[0].0, -a, epsilon = 1e-12);
+        assert_relative_eq!(got[0].1, 2.0 * a.powi(3), epsilon = 1e-15);
+        assert_relative_eq!(got[1].0, a, epsilon = 1e-12);
+        assert_relative_eq!(got[1].1, -2.0 * a.powi(3), epsilon = 1e-15);
+    }
+
+    /// A monotone quantity reports nothing and evaluates nothing inside.
+    #[test]
+    fn monotone_costs_nothing() {
+        let f = |t: f64| (t.exp(), t.exp());
+        let mut evaluations = 0;
+        interior_extrema(
+            0.0,
+            jet_of(f, 0.0),
+            1.0,
+            jet_of(f, 1.0),
+            &mut |t| {
+                evaluations += 1;
+                jet_of(f, t)
+            },
+            &mut |_, _| panic!("no extremum"),
+        );
+        assert_eq!(evaluations, 0);
+    }
+}
