@@ -92,14 +92,20 @@ impl Condition {
             Condition::Overturn => y[0] * s - FRAC_PI_2,
             Condition::SlipNegative | Condition::SlipPositive => {
                 let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y[0], y[1]);
-                let toward = if self == Condition::SlipNegative { force } else { -force };
-                toward - normal * kernel.mu_s
+                self.slip_margin(force, normal, kernel.mu_s)
             }
             Condition::SlipStop => match regime.building {
                 BuildingRegime::Slip(dir) => -(y[3] * dir.sign()),
                 BuildingRegime::Stick => T::from(-1.0),
             },
         }
+    }
+
+    /// The slip conditions from the stick demand: `±F_req − μs N`.
+    #[inline(always)]
+    pub(crate) fn slip_margin<T: Real>(self, force: T, normal: T, mu_s: f64) -> T {
+        let toward = if self == Condition::SlipNegative { force } else { -force };
+        toward - normal * mu_s
     }
 
     /// Whether the condition is a function of `θ` alone (its extrema are those of `θ`).

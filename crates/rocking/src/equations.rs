@@ -30,6 +30,8 @@ pub(crate) struct Kernel {
     pub(crate) g: f64,
     pub(crate) alpha: f64,
     pub(crate) tan_alpha: f64,
+    sin_alpha: f64,
+    cos_alpha: f64,
     /// `m2 R / I_O` (1/m), so that `p² = k g`.
     pub(crate) k: f64,
     /// `R` (m).
@@ -84,6 +86,8 @@ impl Kernel {
             g: model.gravity(),
             alpha,
             tan_alpha: alpha.tan(),
+            sin_alpha: alpha.sin(),
+            cos_alpha: alpha.cos(),
             k: m2 * radius / inertia,
             radius,
             m2,
@@ -102,8 +106,19 @@ impl Kernel {
     /// `φ = α − s θ` and its sine and cosine.
     #[inline(always)]
     pub(crate) fn lean<T: Real>(&self, s: f64, theta: T) -> Lean<T> {
-        let (sin_phi, cos_phi) = (T::from(self.alpha) - theta * s).sin_cos();
+        // `Real::sin_cos`, not `f64::sin_cos` (the platform's, three times slower).
+        let (sin_phi, cos_phi) = Real::sin_cos(T::from(self.alpha) - theta * s);
         Lean { s, sin_phi, cos_phi }
+    }
+
+    /// `(sin θ, cos θ)` from the lean, by the angle-difference formulas
+    /// (`θ = s (α − φ)`): no second sine.
+    #[inline(always)]
+    pub(crate) fn rotation<T: Real>(&self, lean: Lean<T>) -> (T, T) {
+        (
+            (lean.cos_phi * self.sin_alpha - lean.sin_phi * self.cos_alpha) * lean.s,
+            lean.cos_phi * self.cos_alpha + lean.sin_phi * self.sin_alpha,
+        )
     }
 
     /// (T) solved for `θ̈`, the pivot line's acceleration `Ẍ_p` given:
@@ -156,13 +171,19 @@ impl Kernel {
             TowerRegime::Rest => (a_g * self.total, g_e * self.total),
             TowerRegime::Rocking(pivot) => {
                 let lean = self.lean(pivot.sign(), theta);
-                let theta_ddot = self.tower_equation(lean, a_g, g_e);
-                (
-                    self.building_equation(lean, theta_dot, theta_ddot, a_g),
-                    self.normal_force(lean, theta_dot, theta_ddot, g_e),
-                )
+                self.rocking_stick_demand(lean, theta_dot, self.tower_equation(lean, a_g, g_e), a_g, g_e)
             }
         }
+    }
+
+    /// [`Kernel::stick_demand`] of a rocking tower whose lean and `θ̈` (from
+    /// (T) with `Ẍ_p = a_g`) are known.
+    #[inline(always)]
+    pub(crate) fn rocking_stick_demand<T: Real>(&self, lean: Lean<T>, theta_dot: T, theta_ddot: T, a_g: T, g_e: T) -> (T, T) {
+        (
+            self.building_equation(lean, theta_dot, theta_ddot, a_g),
+            self.normal_force(lean, theta_dot, theta_ddot, g_e),
+        )
     }
 
     /// `θ̈` and `ü` in `regime` for ground acceleration `a_g`, effective gravity
@@ -234,12 +255,13 @@ impl Kernel {
     /// horizontal displacement relative to the building and the absolute
     /// horizontal acceleration of the tower point `(x, y)` (tower coordinates,
     /// origin at the base centre), at rest `(0, Ẍ_p)`. Relative to the pivot
-    /// `(s b, 0)` the point sits at `Rot(θ) (x − s b, y)`.
+    /// `(s b, 0)` the point sits at `Rot(θ) (x − s b, y)`; `rotation` is
+    /// `(sin θ, cos θ)`.
     #[inline(always)]
-    pub(crate) fn point_kinematics<T: Real>(&self, s: Option<f64>, (x, y): (f64, f64), theta: T, theta_dot: T, theta_ddot: T, acc_pivot: T) -> (T, T) {
+    pub(crate) fn point_kinematics<T: Real>(&self, s: Option<f64>, (x, y): (f64, f64), rotation: (T, T), theta_dot: T, theta_ddot: T, acc_pivot: T) -> (T, T) {
         let Some(s) = s else { return (T::from(0.0), acc_pivot) };
         let xr = x - s * self.half_width;
-        let (sin_t, cos_t) = theta.sin_cos();
+        let (sin_t, cos_t) = rotation;
         let dx = cos_t * xr + sin_t * y - xr;
         let lever = cos_t * y - sin_t * xr;
         let centripetal = cos_t * xr + sin_t * y;

@@ -14,7 +14,6 @@
 //! A step whose ends show no extremum and whose interpolant has no critical
 //! point inside costs nothing beyond the end values.
 
-use crate::integrator::find_crossing;
 use crate::jet::Jet;
 
 /// Critical points in `(0, 1)` of the cubic Hermite interpolant of `q0`,
@@ -54,6 +53,92 @@ fn hermite_critical_points(q0: Jet, q1: Jet, h: f64) -> ([f64; 2], usize) {
         }
     }
     (out, n)
+}
+
+/// If the end values leave room for an extremum inside the step (as
+/// [`may_have_extremum`]), the least and greatest values of the cubic Hermite
+/// interpolant of the end values on the step (at its ends and critical
+/// points): an estimate of the quantity's range over the step, accurate to
+/// `O(h⁴)`.
+pub(crate) fn hermite_range(q0: Jet, q1: Jet, h: f64) -> Option<(f64, f64)> {
+    if h <= 0.0 {
+        return None;
+    }
+    let (critical, n) = hermite_critical_points(q0, q1, h);
+    if n == 0 && q0.d * q1.d >= 0.0 {
+        return None;
+    }
+    let delta = q1.v - q0.v;
+    let (s0, s1) = (h * q0.d, h * q1.d);
+    let c2 = 3.0 * delta - 2.0 * s0 - s1;
+    let c3 = -2.0 * delta + s0 + s1;
+    let (mut lo, mut hi) = (q0.v.min(q1.v), q0.v.max(q1.v));
+    for &x in &critical[..n] {
+        let v = q0.v + x * (s0 + x * (c2 + x * c3));
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    Some((lo, hi))
+}
+
+/// Relative accuracy of a located extremum's value.
+const VALUE_RTOL: f64 = 1e-12;
+
+/// The extremum between `ta` and `tb`, where the derivative has the signs of
+/// `da` and `db` (opposite): regula falsi with the Illinois modification on
+/// the derivative, stopped once the value is known to [`VALUE_RTOL`]. Near an
+/// extremum the value varies by at most `|q̇| w` over a bracket of width `w`,
+/// so the bracket need not shrink to rounding (as a root's would).
+fn locate(eval: &mut impl FnMut(f64) -> Jet, mut ta: f64, mut da: f64, mut tb: f64, mut db: f64) -> (f64, f64) {
+    // Signed so that the derivative goes from negative to positive.
+    let sign = if da > 0.0 { -1.0 } else { 1.0 };
+    da *= sign;
+    db *= sign;
+    let mut best = (ta, da.abs(), f64::NAN);
+    let mut side = 0i32;
+    // The derivative's true values at the ends (da, db are scaled by Illinois).
+    let (mut true_a, mut true_b) = (da.abs(), db.abs());
+    for _ in 0..64 {
+        let mut t = (ta * db - tb * da) / (db - da);
+        if !(t > ta && t < tb) {
+            t = 0.5 * (ta + tb);
+        }
+        if t <= ta || t >= tb {
+            break;
+        }
+        let q = eval(t);
+        let dq = sign * q.d;
+        if dq.abs() < best.1 || best.2.is_nan() {
+            best = (t, dq.abs(), q.v);
+        }
+        if dq == 0.0 {
+            break;
+        }
+        if dq < 0.0 {
+            ta = t;
+            da = dq;
+            true_a = dq.abs();
+            if side == -1 {
+                db *= 0.5;
+            }
+            side = -1;
+        } else {
+            tb = t;
+            db = dq;
+            true_b = dq.abs();
+            if side == 1 {
+                da *= 0.5;
+            }
+            side = 1;
+        }
+        if (tb - ta) * true_a.max(true_b) <= VALUE_RTOL * q.v.abs() {
+            break;
+        }
+    }
+    if best.2.is_nan() {
+        best.2 = eval(best.0).v;
+    }
+    (best.0, best.2)
 }
 
 /// Whether the end values leave room for an extremum inside the step (if
@@ -105,10 +190,8 @@ pub(crate) fn interior_extrema(t0: f64, q0: Jet, t1: f64, q1: Jet, eval: &mut im
                     let t = samples[z].0;
                     found(t, eval(t).v);
                 } else {
-                    // The derivative, signed so that it crosses zero upwards.
-                    let sign = if da > 0.0 { -1.0 } else { 1.0 };
-                    let t = find_crossing(|t| sign * eval(t).d, ta, sign * da, tb, sign * db, 0.0).tb;
-                    found(t, eval(t).v);
+                    let (t, v) = locate(eval, ta, da, tb, db);
+                    found(t, v);
                 }
             }
         }

@@ -107,9 +107,14 @@ impl Step<'_> {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
         };
-        let (top_dx, top_abs_acc) = self
-            .kernel
-            .point_kinematics(pivot.map(Pivot::sign), (0.0, self.kernel.height), y[0], y[1], acc.theta, a_g + acc.slip);
+        let (top_dx, top_abs_acc) = self.kernel.point_kinematics(
+            pivot.map(Pivot::sign),
+            (0.0, self.kernel.height),
+            crate::trig::sin_cos(y[0]),
+            y[1],
+            acc.theta,
+            a_g + acc.slip,
+        );
         Sample {
             t,
             ground_acc: a_g,
@@ -131,7 +136,7 @@ impl Step<'_> {
         self.kernel.point_kinematics(
             sample.pivot.map(Pivot::sign),
             (x, y),
-            st.theta,
+            crate::trig::sin_cos(st.theta),
             st.theta_dot,
             sample.theta_ddot,
             sample.ground_acc + sample.slip_acc,

@@ -139,8 +139,10 @@ impl Tracker {
             TowerRegime::Rocking(p) => Some(p.sign()),
         };
         let acc_pivot = a_g + acc.slip;
-        let top = kernel.point_kinematics(s, (0.0, kernel.height), y[0], y[1], acc.theta, acc_pivot).1;
-        let (fx, fy) = kernel.pivot_reactions(s.map(|s| kernel.lean(s, y[0])), y[1], acc.theta, acc_pivot, g_e);
+        let lean = s.map(|s| kernel.lean(s, y[0]));
+        let rotation = lean.map_or((0.0, 1.0), |lean| kernel.rotation(lean));
+        let top = kernel.point_kinematics(s, (0.0, kernel.height), rotation, y[1], acc.theta, acc_pivot).1;
+        let (fx, fy) = kernel.pivot_reactions(lean, y[1], acc.theta, acc_pivot, g_e);
         self.top(top);
         self.pivot(fx, fy);
     }
@@ -161,7 +163,7 @@ impl Tracker {
         // for |θ| < π/2, so its peaks are at the extremes of θ.
         let top = |theta: f64| {
             let s = (theta != 0.0).then(|| theta.signum());
-            kernel.point_kinematics(s, (0.0, kernel.height), theta, 0.0, 0.0, 0.0).0
+            kernel.point_kinematics(s, (0.0, kernel.height), crate::trig::sin_cos(theta), 0.0, 0.0, 0.0).0
         };
         s.max_top_displacement = top(s.theta_range.0).abs().max(top(s.theta_range.1).abs());
         self.summary
