@@ -2,7 +2,8 @@
 //! shards is the unsharded `sweep.csv` byte for byte, each shard holds exactly
 //! its block of rows, and every refusal of `merge` (shards of another sweep, a
 //! missing shard, a repeated one, a truncated file, an existing output) is one
-//! line and exit 1, leaving no merged file behind.
+//! line and exit 1, leaving no merged file behind; the Slurm example with a
+//! stand-in for `sbatch`.
 
 use crate::util::{arg, read, rocking, tempdir, write, Output, SCENARIO};
 use serde_json::Value;
@@ -215,4 +216,54 @@ fn a_bad_shard_is_a_usage_error() {
         assert_eq!(r.code, Some(2), "{bad}: {r:?}");
         assert!(r.stderr.contains("K/N"), "{bad}: {}", r.stderr);
     }
+}
+
+/// A stand-in for Slurm's `sbatch`: runs the script at once, the tasks of an
+/// array one after the other with `SLURM_ARRAY_TASK_ID` set, and prints a job id.
+const FAKE_SBATCH: &str = r#"#!/usr/bin/env bash
+array=""; args=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --array=*) array="${1#--array=}" ;;
+    --parsable|--export=*|--dependency=*|--cpus-per-task=*) ;;
+    *) args+=("$1") ;;
+  esac
+  shift
+done
+if [ -n "$array" ]; then
+  for k in $(seq "${array%-*}" "${array#*-}"); do
+    SLURM_ARRAY_TASK_ID=$k SLURM_CPUS_PER_TASK=1 bash "${args[@]}" >&2 || exit 1
+  done
+else
+  bash "${args[@]}" >&2 || exit 1
+fi
+echo "1$RANDOM;cluster"
+"#;
+
+#[cfg(unix)]
+#[test]
+fn the_slurm_example_runs_the_shards_and_merges_them() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempdir();
+    let file = sweep_file(dir.path(), "s.toml", "");
+    let whole_dir = dir.path().join("whole");
+    ok(rocking(&["sweep", arg(&file), "--out", arg(&whole_dir)]));
+    let bin = dir.path().join("bin");
+    std::fs::create_dir_all(&bin).unwrap_or_else(|e| panic!("{e}"));
+    let sbatch = write(&bin, "sbatch", FAKE_SBATCH);
+    std::fs::set_permissions(&sbatch, std::fs::Permissions::from_mode(0o755)).unwrap_or_else(|e| panic!("{e}"));
+    let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
+    let script = crate::util::example("cluster/slurm-sweep.sh");
+    let out = dir.path().join("study");
+    let r = std::process::Command::new("bash")
+        .args([arg(&script), arg(&file), "5", arg(&out)])
+        .env("PATH", path)
+        .env("ROCKING", env!("CARGO_BIN_EXE_rocking"))
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run bash: {e}"));
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    for k in 1..=5 {
+        assert!(out.join(format!("shards/{k}/shard.json")).exists(), "shard {k}");
+    }
+    assert_eq!(read(&out.join("sweep.csv")), read(&whole_dir.join("sweep.csv")));
 }
