@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Python package's tests: builds the `rocking` command (the tests compare
 # with it), installs the package from this checkout into a fresh virtual
-# environment (pip fetches the build backend, maturin, and numpy, pytest and
-# pandas from PyPI), and runs python/tests/ with pytest.
+# environment (pip fetches the build backend, maturin, and numpy, pytest,
+# pandas and dask.distributed from PyPI), and runs python/tests/ with pytest.
 #
 #   scripts/python-tests.sh [PYTEST ARGS...]
 #
@@ -25,9 +25,10 @@ echo "== fresh virtual environment in $venv ($("$python" --version))"
 "$python" -m venv "$venv"
 pip=("$venv/bin/python" -m pip --disable-pip-version-check --no-input)
 
-echo "== installing the package from the checkout, numpy and pytest"
+echo "== installing the package from the checkout with its dask extra, numpy and pytest"
 # --locked: the extension is built from Cargo.lock as committed, like the CLI.
-MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python" numpy pytest
+# [dask]: the optional extra, for the tests of sweeps on a LocalCluster.
+MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python[dask]" numpy pytest
 # pandas is optional (Result.to_pandas); its tests skip without it.
 if ! "${pip[@]}" install --quiet pandas; then
     echo "pandas could not be installed: the to_pandas tests will skip"
@@ -36,5 +37,5 @@ fi
 echo "== pytest python/tests"
 # From the root, so that python/rocking (without its extension) does not shadow
 # the installed package; every comparison with the command must run, not skip.
-ROCKING_CLI="$CARGO_TARGET_DIR/release/rocking" ROCKING_REQUIRE_CLI=1 \
+ROCKING_CLI="$CARGO_TARGET_DIR/release/rocking" ROCKING_REQUIRE_CLI=1 ROCKING_REQUIRE_DASK=1 \
     "$venv/bin/python" -m pytest -p no:cacheprovider "$root/python/tests" "$@"

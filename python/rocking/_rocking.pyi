@@ -32,6 +32,9 @@ class Scenario:
     def name(self) -> str:
         """The scenario's ``name`` (default: the file stem, or ``<dict>``)."""
         ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]:
+        """Pickles as the TOML text of the scenario and its origin (made absolute)."""
+        ...
     @property
     def origin(self) -> str:
         """The file the scenario was read from, or ``<dict>``."""
@@ -45,10 +48,22 @@ def derived(scenario: Scenario) -> Dict[str, Optional[float]]:
     """The quantities derived from a scenario without running it; see ``rocking.derived``."""
     ...
 
-def sweep_raw(scenario: Scenario, axes: Mapping[str, Any], threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
-    """Runs a sweep of ``scenario`` over ``axes`` with the GIL released; see ``rocking.sweep``."""
+def sweep_raw(
+    scenario: Scenario, axes: Mapping[str, Any], threads: Optional[int] = None, first: int = 0, count: Optional[int] = None
+) -> Dict[str, "np.ndarray"]:
+    """Runs cases ``first .. first + count`` (default: all) of a sweep of ``scenario`` over ``axes`` with the GIL released; see ``rocking.sweep``."""
     ...
 
-def sweep_file_raw(path: Union[str, "os.PathLike[str]"], threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
-    """Runs a sweep file (a scenario with a ``[sweep]`` table); see ``rocking.sweep``."""
+def sweep_len_raw(scenario: Scenario, axes: Mapping[str, Any]) -> int:
+    """The number of cases of a sweep of ``scenario`` over ``axes`` (checked as ``sweep_raw`` checks them)."""
+    ...
+
+def sweep_file_raw(
+    path: Union[str, "os.PathLike[str]"], threads: Optional[int] = None, first: int = 0, count: Optional[int] = None, text: Optional[str] = None
+) -> Dict[str, "np.ndarray"]:
+    """Runs cases ``first .. first + count`` (default: all) of a sweep file (``text``: its content, if given); see ``rocking.sweep``."""
+    ...
+
+def sweep_file_len_raw(path: Union[str, "os.PathLike[str]"], text: Optional[str] = None) -> int:
+    """The number of cases of a sweep file (``text``: its content, if given)."""
     ...

@@ -5,6 +5,8 @@
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
+//! rocking sweep SWEEP.toml --shard K/N [--out DIR]  # one block of a sweep's cases
+//! rocking merge DIR1 DIR2 ... --out DIR             # the shards' rows in one sweep.csv
 //! ```
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
@@ -15,6 +17,7 @@ mod commands;
 mod format;
 mod output;
 mod plot;
+mod shard;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -34,6 +37,8 @@ enum Command {
     Run(commands::run::Args),
     /// Run a parametric sweep: every combination of the [sweep] values is one case, one row of sweep.csv.
     Sweep(commands::sweep::Args),
+    /// Merge the folders of `rocking sweep --shard K/N` into one sweep.csv, identical to the unsharded one.
+    Merge(commands::merge::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
 }
@@ -51,6 +56,7 @@ fn main() -> ExitCode {
         Command::Run(args) => commands::run::execute(args),
         Command::Check(args) => commands::check::execute(args),
         Command::Sweep(args) => commands::sweep::execute(args),
+        Command::Merge(args) => commands::merge::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

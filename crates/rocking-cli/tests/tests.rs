@@ -7,4 +7,5 @@ mod check;
 mod errors;
 mod guard;
 mod run;
+mod shard;
 mod sweep;

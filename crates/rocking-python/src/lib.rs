@@ -28,5 +28,7 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run::derived, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_raw, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_file_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_len_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_file_len_raw, m)?)?;
     Ok(())
 }

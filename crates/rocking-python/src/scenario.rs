@@ -117,6 +117,28 @@ impl PyScenario {
         self.origin.display().to_string()
     }
 
+    /// Pickling (a Dask worker receives the scenario this way): the table as
+    /// TOML text and the origin, made absolute so that a relative record path
+    /// resolves to the same file from another working directory.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String, PathBuf))> {
+        let this = slf.get();
+        let text = toml::to_string(&this.table).map_err(|e| PyValueError::new_err(format!("{}: cannot pickle the scenario: {e}", this.origin.display())))?;
+        let origin = if this.origin == Path::new(DICT_ORIGIN) {
+            this.origin.clone()
+        } else {
+            std::path::absolute(&this.origin).unwrap_or_else(|_| this.origin.clone())
+        };
+        Ok((slf.get_type().getattr("_from_toml_text")?, (text, origin)))
+    }
+
+    /// The scenario of a TOML text read from `origin` (for unpickling).
+    #[staticmethod]
+    fn _from_toml_text(text: &str, origin: PathBuf) -> PyResult<Self> {
+        let table = parse_toml(text, &origin).map_err(|e| scenario_error(&e))?;
+        let scenario = Scenario::from_table(table.clone(), &origin).map_err(|e| scenario_error(&e))?;
+        Ok(Self { table, origin, scenario })
+    }
+
     fn __repr__(&self) -> String {
         format!("Scenario(name={:?}, origin={:?})", self.scenario.name(), self.origin.display().to_string())
     }

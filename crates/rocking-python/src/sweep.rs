@@ -1,5 +1,9 @@
 //! `rocking.sweep`: a parametric study on all cores with the GIL released,
 //! its rows gathered into NumPy columns in case order.
+//!
+//! `first` and `count` run one contiguous block of the cases (the mechanism
+//! of `rocking sweep --shard K/N`): the package cuts a sweep into blocks for
+//! the workers of a Dask cluster and puts their columns end to end.
 
 use crate::convert::table_of;
 use crate::error::scenario_error;
@@ -9,6 +13,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use rocking_scenario::{Cell, RunError, Sweep, ERROR_COLUMN};
+use std::ops::Range;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
@@ -19,29 +24,76 @@ const SIGNAL_CHECK: Duration = Duration::from_millis(100);
 
 /// Runs the cases of `scenario` with `axes` (the `[sweep]` table of a sweep
 /// file, as a dict) on `threads` worker threads (`None`: one per core) and
-/// returns the columns of `sweep.csv` as NumPy arrays, in header order.
+/// returns the columns of `sweep.csv` as NumPy arrays, in header order: the
+/// rows of cases `first .. first + count` (default: every case).
 #[pyfunction]
-#[pyo3(signature = (scenario, axes, threads=None))]
-pub fn sweep_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>, axes: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
+#[pyo3(signature = (scenario, axes, threads=None, first=0, count=None))]
+pub fn sweep_raw<'py>(
+    py: Python<'py>,
+    scenario: &Bound<'py, PyScenario>,
+    axes: &Bound<'py, PyAny>,
+    threads: Option<i64>,
+    first: usize,
+    count: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
     let threads = thread_count(threads)?;
+    let sweep = build(py, scenario, axes)?;
+    run_sweep(py, &sweep, threads, block(first, count))
+}
+
+/// The number of cases of `scenario` swept over `axes` (checks them as `sweep_raw` does).
+#[pyfunction]
+pub fn sweep_len_raw(py: Python<'_>, scenario: &Bound<'_, PyScenario>, axes: &Bound<'_, PyAny>) -> PyResult<usize> {
+    Ok(build(py, scenario, axes)?.len())
+}
+
+fn build(py: Python<'_>, scenario: &Bound<'_, PyScenario>, axes: &Bound<'_, PyAny>) -> PyResult<Sweep> {
     let scenario = scenario.get();
     let origin = scenario.origin();
     let axes = table_of(axes, "sweep").map_err(|u| PyValueError::new_err(u.message(&origin.display().to_string())))?;
     let mut table = scenario.table().clone();
     table.insert("sweep".to_string(), Value::Table(axes));
     // Building the sweep parses its first cases and may read a record: without the GIL.
-    let sweep = py.detach(|| Sweep::from_table(table, origin)).map_err(|e| scenario_error(&e))?;
-    run_sweep(py, &sweep, threads)
+    py.detach(|| Sweep::from_table(table, origin)).map_err(|e| scenario_error(&e))
 }
 
-/// Runs a sweep file (a scenario plus its `[sweep]` table), as `rocking sweep` does.
+/// Runs a sweep file (a scenario plus its `[sweep]` table), as `rocking sweep`
+/// does: cases `first .. first + count` (default: every case). `text`, when
+/// given, is the file's content (a worker that cannot read the file); `path`
+/// then only names it and locates relative record paths.
 #[pyfunction]
-#[pyo3(signature = (path, threads=None))]
-pub fn sweep_file_raw(py: Python<'_>, path: PathBuf, threads: Option<i64>) -> PyResult<Bound<'_, PyDict>> {
+#[pyo3(signature = (path, threads=None, first=0, count=None, text=None))]
+pub fn sweep_file_raw(
+    py: Python<'_>,
+    path: PathBuf,
+    threads: Option<i64>,
+    first: usize,
+    count: Option<usize>,
+    text: Option<String>,
+) -> PyResult<Bound<'_, PyDict>> {
     let threads = thread_count(threads)?;
-    let text = std::fs::read_to_string(&path).map_err(|e| crate::scenario::os_error(&e, &path))?;
-    let sweep = py.detach(|| Sweep::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?;
-    run_sweep(py, &sweep, threads)
+    let sweep = build_file(py, &path, text)?;
+    run_sweep(py, &sweep, threads, block(first, count))
+}
+
+/// The number of cases of a sweep file.
+#[pyfunction]
+#[pyo3(signature = (path, text=None))]
+pub fn sweep_file_len_raw(py: Python<'_>, path: PathBuf, text: Option<String>) -> PyResult<usize> {
+    Ok(build_file(py, &path, text)?.len())
+}
+
+fn build_file(py: Python<'_>, path: &std::path::Path, text: Option<String>) -> PyResult<Sweep> {
+    let text = match text {
+        Some(text) => text,
+        None => std::fs::read_to_string(path).map_err(|e| crate::scenario::os_error(&e, path))?,
+    };
+    py.detach(|| Sweep::from_toml_str(&text, path)).map_err(|e| scenario_error(&e))
+}
+
+/// The cases `first .. first + count` (every case from `first` when `count` is `None`).
+fn block(first: usize, count: Option<usize>) -> Range<usize> {
+    first..count.map_or(usize::MAX, |c| first.saturating_add(c))
 }
 
 fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
@@ -54,13 +106,14 @@ fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
     }
 }
 
-fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>) -> PyResult<Bound<'py, PyDict>> {
+fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases: Range<usize>) -> PyResult<Bound<'py, PyDict>> {
     let header = sweep.header();
-    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(sweep.len())).collect();
+    let rows = cases.end.min(sweep.len()).saturating_sub(cases.start);
+    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(rows)).collect();
     let cancel = AtomicBool::new(false);
     let mut last_check = Instant::now();
     let finished = py.detach(|| {
-        sweep.run(threads, &cancel, |row| {
+        sweep.run_range(cases, threads, &cancel, |row| {
             for (column, cell) in columns.iter_mut().zip(row.cells) {
                 column.push(cell);
             }

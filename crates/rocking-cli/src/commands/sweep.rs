@@ -1,13 +1,16 @@
-//! `rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]`: a
-//! parametric study. The engine is `rocking_scenario::Sweep`; this file writes
-//! `sweep.csv` row by row, shows a progress bar on a terminal and stops
-//! cleanly on Ctrl-C.
+//! `rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N] [--shard K/N]`:
+//! a parametric study. The engine is `rocking_scenario::Sweep`; this file
+//! writes `sweep.csv` row by row, shows a progress bar on a terminal and stops
+//! cleanly on Ctrl-C. With `--shard K/N` it runs only the K-th of N
+//! contiguous blocks of cases and writes `shard.json` next to its rows, for
+//! `rocking merge` (interface.md, "Sweeps beyond one machine").
 
 use crate::format::sig;
 use crate::output;
+use crate::shard::{Manifest, SHARD_JSON};
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
-use rocking_scenario::{RunError, Sweep};
+use rocking_scenario::{RunError, Shard, Sweep};
 use std::fmt;
 use std::fs::File;
 use std::io::{BufWriter, IsTerminal, Write};
@@ -39,6 +42,14 @@ pub struct Args {
     /// Also print the threads used, the time per case and the peak memory.
     #[arg(long, short)]
     pub verbose: bool,
+    /// Run only the K-th of N equal contiguous blocks of cases (1 <= K <= N),
+    /// and write shard.json for `rocking merge`.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, conflicts_with = "plot")]
+    pub shard: Option<Shard>,
+}
+
+fn parse_shard(text: &str) -> Result<Shard, String> {
+    text.parse()
 }
 
 /// The sweep was stopped by Ctrl-C after writing `written` complete rows.
@@ -68,15 +79,23 @@ impl std::error::Error for Interrupted {}
 
 /// Runs the sweep and writes `sweep.csv`.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.sweep).with_context(|| format!("cannot read {}", args.sweep.display()))?;
+    let bytes = std::fs::read(&args.sweep).with_context(|| format!("cannot read {}", args.sweep.display()))?;
+    let text = String::from_utf8(bytes).with_context(|| format!("cannot read {}: not UTF-8 text", args.sweep.display()))?;
     // The sweep's errors already name the file, the key and the cause.
     let sweep = Sweep::from_toml_str(&text, &args.sweep)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.sweep));
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     let csv_path = dir.join(SWEEP_CSV);
+    let shard_path = dir.join(SHARD_JSON);
     let mut inputs = vec![args.sweep.clone()];
     inputs.extend(sweep.inputs().iter().cloned());
-    output::refuse_to_overwrite_inputs(std::slice::from_ref(&csv_path), &inputs)?;
+    output::refuse_to_overwrite_inputs(&[csv_path.clone(), shard_path.clone()], &inputs)?;
+    let cases = args.shard.map_or(0..sweep.len(), |s| s.cases(sweep.len()));
+    // A shard.json left by an earlier run describes the sweep.csv about to be replaced.
+    match std::fs::remove_file(&shard_path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e).with_context(|| format!("cannot remove {}", shard_path.display())),
+        _ => {}
+    }
 
     let file = File::create(&csv_path).with_context(|| format!("cannot write {}", csv_path.display()))?;
     let mut csv = BufWriter::new(file);
@@ -90,9 +109,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
             std::process::exit(130);
         }
     });
-    let progress = progress_bar(sweep.len());
+    let progress = progress_bar(cases.len());
     let start = Instant::now();
-    let result = sweep.run(args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
+    let result = sweep.run_range(cases.clone(), args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
         writeln!(csv, "{}", row.to_csv_line())?;
         progress.inc(1);
         Ok::<(), std::io::Error>(())
@@ -109,14 +128,24 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     if done.cancelled {
         return Err(Interrupted {
             written: done.written,
-            total: sweep.len(),
+            total: cases.len(),
             csv: csv_path,
         }
         .into());
     }
 
+    let mut written = vec![SWEEP_CSV];
+    let part = match args.shard {
+        Some(shard) => {
+            let manifest = Manifest::new("sweep", SWEEP_CSV, shard, sweep.len(), text.as_bytes());
+            std::fs::write(&shard_path, manifest.to_json()).with_context(|| format!("cannot write {}", shard_path.display()))?;
+            written.push(SHARD_JSON);
+            format!(" (shard {shard}: cases {}..{} of {})", cases.start, cases.end, sweep.len())
+        }
+        None => String::new(),
+    };
     let mut lines = vec![format!(
-        "{}: {} cases in {} s{}",
+        "{}: {} cases{part} in {} s{}",
         sweep.name(),
         done.written,
         sig(wall, 3),
@@ -136,7 +165,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
             lines.push(format!("  peak memory (VmHWM) {} MB", sig(kb as f64 / 1024.0, 3)));
         }
     }
-    lines.push(format!("wrote {} in {}", SWEEP_CSV, dir.display()));
+    lines.push(format!("wrote {} in {}", written.join(", "), dir.display()));
     super::print(&(lines.join("\n") + "\n"))?;
     if args.plot {
         crate::plot::sweep_figures(&dir, sweep.name(), &csv_path, &sweep.axis_keys()).context("drawing the figures")?;

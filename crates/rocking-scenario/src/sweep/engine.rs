@@ -12,10 +12,17 @@
 //! A case's scenario is only built when a worker takes it.
 //!
 //! Cancellation: once `cancel` is set, no worker takes a new case; the cases
-//! under way finish, and the rows passed on are exactly cases `0..written`.
+//! under way finish, and the rows passed on are exactly the first `written`
+//! cases of the range.
+//!
+//! [`Sweep::run_range`] runs a contiguous block of cases (a shard, a Dask
+//! task): the rows are those of the whole sweep's cases of that block, each
+//! with its index in the whole sweep, so the blocks of a sweep put end to end
+//! give the rows of [`Sweep::run`].
 
 use super::{Row, Sweep};
 use std::collections::BTreeMap;
+use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{mpsc, Condvar, Mutex, PoisonError};
@@ -32,7 +39,7 @@ const POLL: Duration = Duration::from_millis(20);
 /// How a sweep's run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Finished {
-    /// Rows passed to `on_row`: cases `0..written`, in order.
+    /// Rows passed to `on_row`: the first `written` cases of the range run, in order.
     pub written: usize,
     /// Of those, the cases that failed (their `error` is filled).
     pub failed: usize,
@@ -63,12 +70,29 @@ impl Sweep {
     /// is returned. A panic inside a case (a bug) becomes that case's error.
     /// Memory stays flat in the number of cases: at most [`WINDOW`] rows (64
     /// per thread if more) are held, and `on_row` sees each row once.
-    pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, mut on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
+    pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
+        self.run_range(0..self.len(), threads, cancel, on_row)
+    }
+
+    /// Runs the cases `cases` (indices in the whole sweep; clipped to
+    /// `0..len`) as [`Sweep::run`] runs them all: `on_row` sees their rows in
+    /// order, each the same as that case's row of the whole sweep. An empty
+    /// range runs nothing.
+    pub fn run_range<E>(
+        &self,
+        cases: Range<usize>,
+        threads: Option<usize>,
+        cancel: &AtomicBool,
+        mut on_row: impl FnMut(Row) -> Result<(), E>,
+    ) -> Result<Finished, RunError<E>> {
+        let end = cases.end.min(self.len());
+        let first = cases.start.min(end);
+        let count = end - first;
         let workers = match threads {
             Some(n) if n > 0 => n,
             _ => default_threads(),
         }
-        .clamp(1, self.len().max(1));
+        .clamp(1, count.max(1));
         // The calling thread is one of the workers; the pool holds the others.
         // (A pool thread without a case to run would spin for a while looking
         // for work, and take time slices from those running cases.)
@@ -78,11 +102,11 @@ impl Sweep {
             .thread_name(|i| format!("sweep-{}", i + 1))
             .build()?;
         let window = WINDOW.max(64 * workers);
-        let next = AtomicUsize::new(0);
+        let next = AtomicUsize::new(first);
         let stop = AtomicBool::new(false);
         let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
-        // The number of rows passed on so far, and a signal when it grows.
-        let passed = (Mutex::new(0usize), Condvar::new());
+        // The index of the next row to pass on, and a signal when it grows.
+        let passed = (Mutex::new(first), Condvar::new());
         let (sender, receiver) = mpsc::channel::<Row>();
 
         let (written, failed, result) = pool.in_place_scope(|scope| {
@@ -94,7 +118,7 @@ impl Sweep {
                 scope.spawn(move |_| {
                     while !halted() {
                         let index = next.fetch_add(1, Ordering::Relaxed);
-                        if index >= self.len() {
+                        if index >= end {
                             break;
                         }
                         let (lock, signal) = passed;
@@ -115,7 +139,7 @@ impl Sweep {
             drop(sender);
             let mut order = Reorder {
                 waiting: BTreeMap::new(),
-                written: 0,
+                next: first,
                 failed: 0,
                 result: Ok(()),
                 passed: &passed,
@@ -125,10 +149,10 @@ impl Sweep {
             while !halted() {
                 order.take(receiver.try_iter(), &mut on_row, &stop);
                 let index = next.fetch_add(1, Ordering::Relaxed);
-                if index >= self.len() {
+                if index >= end {
                     break;
                 }
-                while index >= order.written + window && !halted() {
+                while index >= order.next + window && !halted() {
                     match receiver.recv_timeout(POLL) {
                         Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
                         Err(mpsc::RecvTimeoutError::Timeout) => {}
@@ -143,13 +167,13 @@ impl Sweep {
             }
             // The workers' last rows; the loop ends when the last worker does.
             order.take(receiver.iter(), &mut on_row, &stop);
-            (order.written, order.failed, order.result)
+            (order.next - first, order.failed, order.result)
         });
         result?;
         Ok(Finished {
             written,
             failed,
-            cancelled: written < self.len(),
+            cancelled: written < count,
             threads: workers,
         })
     }
@@ -173,8 +197,8 @@ impl Sweep {
 /// Rows put back in case order and passed on as soon as every earlier one has been.
 struct Reorder<'a, E> {
     waiting: BTreeMap<usize, Row>,
-    /// Rows passed on: cases `0..written`.
-    written: usize,
+    /// The index of the next row to pass on (rows before it have been).
+    next: usize,
     failed: usize,
     result: Result<(), RunError<E>>,
     /// Shared with the workers, which wait on it to stay within the window.
@@ -185,25 +209,25 @@ impl<E> Reorder<'_, E> {
     /// Takes `rows` in any order and passes on those now in order; after an
     /// error from `on_row`, sets `stop` and drops every row.
     fn take(&mut self, rows: impl IntoIterator<Item = Row>, on_row: &mut impl FnMut(Row) -> Result<(), E>, stop: &AtomicBool) {
-        let before = self.written;
+        let before = self.next;
         for row in rows {
             if self.result.is_err() {
                 continue;
             }
             self.waiting.insert(row.index, row);
-            while let Some(row) = self.waiting.remove(&self.written) {
+            while let Some(row) = self.waiting.remove(&self.next) {
                 self.failed += usize::from(row.error().is_some());
                 if let Err(e) = on_row(row) {
                     stop.store(true, Ordering::Relaxed);
                     self.result = Err(RunError::Stopped(e));
                     break;
                 }
-                self.written += 1;
+                self.next += 1;
             }
         }
-        if self.written > before {
+        if self.next > before {
             let (lock, signal) = self.passed;
-            *lock.lock().unwrap_or_else(PoisonError::into_inner) = self.written;
+            *lock.lock().unwrap_or_else(PoisonError::into_inner) = self.next;
             signal.notify_all();
         }
     }

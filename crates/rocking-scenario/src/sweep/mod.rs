@@ -8,6 +8,7 @@
 mod axis;
 mod engine;
 mod row;
+mod shard;
 
 #[cfg(test)]
 mod tests;
@@ -15,6 +16,7 @@ mod tests;
 pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
 pub use engine::{Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
+pub use shard::Shard;
 
 use crate::error::{Error, ErrorKind, Fault};
 use crate::ground::RecordCache;

@@ -544,3 +544,60 @@ fn a_record_is_read_once_and_scaled_per_case() {
         rows.iter().map(|r| &r.cells[peak]).collect::<Vec<_>>()
     );
 }
+
+#[test]
+fn shards_are_contiguous_blocks_covering_every_case_once() {
+    // The blocks of interface.md, floor((K−1)·n/N) .. floor(K·n/N), written out
+    // by hand for n = 10, N = 3 and n = 2, N = 3 (an empty block).
+    let blocks = |total: usize, n: usize| (1..=n).map(|k| Shard::new(k, n).map(|s| s.cases(total))).collect::<Result<Vec<_>, _>>();
+    assert_eq!(blocks(10, 3), Ok(vec![0..3, 3..6, 6..10]));
+    assert_eq!(blocks(2, 3), Ok(vec![0..0, 0..1, 1..2]));
+    // In general: end to end from 0 to n, sizes within one of n / N.
+    for total in [0, 1, 7, 100, 1_000_003] {
+        for n in [1, 2, 3, 7, 16, 1000] {
+            let b = blocks(total, n).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(b[0].start, 0);
+            assert_eq!(b[n - 1].end, total);
+            assert!(b.windows(2).all(|w| w[0].end == w[1].start), "{total} in {n}: {b:?}");
+            assert!(b.iter().all(|r| r.len() == total / n || r.len() == total / n + 1), "{total} in {n}");
+        }
+    }
+    // No overflow of (K − 1)·n for a sweep whose count barely fits.
+    assert_eq!(Shard::new(2, 2).map(|s| s.cases(usize::MAX)), Ok(usize::MAX / 2..usize::MAX));
+}
+
+#[test]
+fn shard_text_is_k_slash_n_with_one_based_k() {
+    assert_eq!("3/16".parse::<Shard>().map(|s| (s.k(), s.n())), Ok((3, 16)));
+    assert_eq!("1/1".parse::<Shard>().map(|s| s.to_string()), Ok("1/1".to_string()));
+    for bad in ["0/3", "4/3", "1/0", "3", "a/b", "-1/3", "1/3/4", ""] {
+        let e = bad.parse::<Shard>().err().unwrap_or_else(|| panic!("{bad:?} should be refused"));
+        assert!(e.contains("K/N"), "{bad:?}: {e}");
+    }
+}
+
+#[test]
+fn blocks_of_cases_put_end_to_end_are_the_whole_sweep() {
+    // 3 × 5 cases, one of them failing (mu_kinetic > mu_static), in blocks
+    // of 7 (some empty) on 2 threads and 1: the same CSV lines as one run.
+    let s = ok(r#""building.mu_kinetic" = [0.5, 1.0, 2.0]
+"ground.amplitude" = { from = 0.4, to = 1.6, steps = 5 }"#);
+    let whole: Vec<String> = rows(&s, Some(2)).iter().map(Row::to_csv_line).collect();
+    assert!(whole.iter().any(|l| !l.ends_with(',')), "one case fails: {whole:?}");
+    let mut joined = Vec::new();
+    for k in 1..=7 {
+        let cases = Shard::new(k, 7).map(|sh| sh.cases(s.len())).unwrap_or_else(|e| panic!("{e}"));
+        let threads = Some(1 + k % 2);
+        let done = s.run_range(cases.clone(), threads, &AtomicBool::new(false), |row| {
+            assert!(cases.contains(&row.index), "row {} outside {cases:?}", row.index);
+            joined.push(row.to_csv_line());
+            Ok::<(), Infallible>(())
+        });
+        let done = done.unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((done.written, done.cancelled), (cases.len(), false));
+    }
+    assert_eq!(joined, whole);
+    // A range past the end is clipped, not an error.
+    let done = s.run_range(s.len() - 1..s.len() + 5, None, &AtomicBool::new(false), |_| Ok::<(), Infallible>(()));
+    assert_eq!(done.map(|d| d.written).ok(), Some(1));
+}

@@ -1,0 +1,269 @@
+//! `rocking merge DIR... --out DIR`: the shards of a study (folders written by
+//! `rocking sweep --shard K/N`) put back into one file, in case order,
+//! byte-identical to the file of the unsharded run (interface.md, "Sweeps
+//! beyond one machine").
+//!
+//! Everything is checked before a byte is kept: every folder's `shard.json`
+//! (same kind, same study fingerprint, same `rocking` version, same number of
+//! shards and cases), every shard from 1 to N exactly once, the same header in
+//! every file, and in each file as many rows as its shard has cases, the last
+//! one ended by a line break. The rows are copied as bytes (never parsed and
+//! written again, so nothing of them can change) into a temporary file in the
+//! output folder, renamed into place once complete: an interrupted or refused
+//! merge leaves no partial file, and an existing file is never replaced.
+
+use crate::shard::{Manifest, SHARD_JSON};
+use anyhow::{bail, Context};
+use std::fs::File;
+use std::io::{BufRead, BufReader, BufWriter, Read, Write};
+use std::path::{Path, PathBuf};
+
+/// Arguments of `rocking merge`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The shards' folders (each with its shard.json), in any order.
+    #[arg(required = true, value_name = "DIR")]
+    pub shards: Vec<PathBuf>,
+    /// Output folder, created if needed; the merged file must not exist in it yet.
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+/// The file of the merged rows of each kind of shard this version can merge.
+fn merged_file(kind: &str) -> Option<&'static str> {
+    match kind {
+        "sweep" => Some(super::sweep::SWEEP_CSV),
+        _ => None,
+    }
+}
+
+/// Checks the shards and writes the merged file.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let shards: Vec<(PathBuf, Manifest)> = args.shards.iter().map(|d| Ok((d.clone(), Manifest::read(d)?))).collect::<anyhow::Result<_>>()?;
+    let ordered = check_set(&shards)?;
+    let (first_dir, first) = ordered[0];
+    let name = merged_file(&first.kind).with_context(|| {
+        format!(
+            "{}: kind: {:?} is not a kind of shard this rocking can merge (it merges \"sweep\")",
+            first_dir.join(SHARD_JSON).display(),
+            first.kind
+        )
+    })?;
+    if first.file != name {
+        bail!(
+            "{}: file: {:?}, expected {name:?} for kind {:?}",
+            first_dir.join(SHARD_JSON).display(),
+            first.file,
+            first.kind
+        );
+    }
+
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create the output folder {}", args.out.display()))?;
+    let target = args.out.join(name);
+    if target.exists() {
+        bail!("refusing to write {}: it exists already (remove it, or choose another --out)", target.display());
+    }
+    let mut temp = tempfile::Builder::new()
+        .prefix(&format!(".{name}."))
+        .tempfile_in(&args.out)
+        .with_context(|| format!("cannot write in {}", args.out.display()))?;
+    {
+        let mut out = BufWriter::new(temp.as_file_mut());
+        let mut header: Option<(Vec<u8>, &Path)> = None;
+        for (dir, manifest) in &ordered {
+            let path = dir.join(&manifest.file);
+            let file = File::open(&path).with_context(|| format!("cannot read {}", path.display()))?;
+            let mut reader = BufReader::with_capacity(1 << 16, file);
+            let mut line = Vec::new();
+            let mut scan = Records::default();
+            scan.read_record(&mut reader, &mut line)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            if line.is_empty() || !scan.complete() {
+                bail!("{}: truncated: no complete header line", path.display());
+            }
+            match &header {
+                None => {
+                    out.write_all(&line).with_context(|| format!("cannot write {}", target.display()))?;
+                    header = Some((line.clone(), dir));
+                }
+                Some((h, other)) if *h != line => bail!(
+                    "{}: its columns differ from those of {} (shards of different sweeps?)",
+                    path.display(),
+                    other.join(&manifest.file).display()
+                ),
+                Some(_) => {}
+            }
+            let rows = copy_records(&mut reader, &mut out, &mut scan).with_context(|| format!("merging {} into {}", path.display(), target.display()))?;
+            if !scan.complete() {
+                bail!("{}: truncated: its last row has no line break (an interrupted or cut copy?)", path.display());
+            }
+            if rows != manifest.cases.len() {
+                bail!(
+                    "{}: truncated or altered: {rows} rows, but {} says shard {} has {} cases",
+                    path.display(),
+                    dir.join(SHARD_JSON).display(),
+                    manifest.shard,
+                    manifest.cases.len()
+                );
+            }
+        }
+        out.flush().with_context(|| format!("cannot write {}", target.display()))?;
+    }
+    temp.as_file().sync_all().with_context(|| format!("cannot write {}", target.display()))?;
+    // `persist_noclobber`: a file that appeared meanwhile is not replaced either.
+    temp.persist_noclobber(&target)
+        .map_err(|e| e.error)
+        .with_context(|| format!("cannot write {}", target.display()))?;
+    super::print(&format!(
+        "merged {} shards ({} cases) into {}\n",
+        ordered.len(),
+        first.total_cases,
+        target.display()
+    ))
+}
+
+/// The shards in order 1..=N, after checking they are all the shards of one study, each once.
+fn check_set(shards: &[(PathBuf, Manifest)]) -> anyhow::Result<Vec<&(PathBuf, Manifest)>> {
+    let (first_dir, first) = &shards[0];
+    let first_json = first_dir.join(SHARD_JSON);
+    for (dir, m) in &shards[1..] {
+        let json = dir.join(SHARD_JSON);
+        let differs = |what: &str, a: &dyn std::fmt::Display, b: &dyn std::fmt::Display| {
+            anyhow::anyhow!("{}: shard of another {what}: {a}, but {} has {b}", json.display(), first_json.display())
+        };
+        if m.kind != first.kind {
+            return Err(differs("kind of study", &m.kind, &first.kind));
+        }
+        if m.fingerprint != first.fingerprint {
+            return Err(differs("sweep (the sweep files differ)", &m.fingerprint, &first.fingerprint));
+        }
+        if m.rocking_version != first.rocking_version {
+            return Err(differs("version of rocking", &m.rocking_version, &first.rocking_version));
+        }
+        if m.shard.n() != first.shard.n() {
+            return Err(differs(
+                "cut (another number of shards)",
+                &format!("{} shards", m.shard.n()),
+                &format!("{} shards", first.shard.n()),
+            ));
+        }
+        if m.total_cases != first.total_cases || m.file != first.file {
+            return Err(differs(
+                "sweep",
+                &format!("{} cases in {}", m.total_cases, m.file),
+                &format!("{} cases in {}", first.total_cases, first.file),
+            ));
+        }
+    }
+    let n = first.shard.n();
+    let mut slots: Vec<Option<&(PathBuf, Manifest)>> = vec![None; n];
+    for entry in shards {
+        let slot = &mut slots[entry.1.shard.k() - 1];
+        if let Some((other, _)) = slot {
+            bail!(
+                "{}: shard {} is given twice (also {})",
+                entry.0.join(SHARD_JSON).display(),
+                entry.1.shard,
+                other.join(SHARD_JSON).display()
+            );
+        }
+        *slot = Some(entry);
+    }
+    let missing: Vec<String> = slots
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.is_none())
+        .map(|(i, _)| format!("{}/{n}", i + 1))
+        .collect();
+    if !missing.is_empty() {
+        bail!(
+            "missing shard{} {} (the sweep of {} is cut in {n}: give every shard's folder)",
+            if missing.len() > 1 { "s" } else { "" },
+            missing.join(", "),
+            first_json.display()
+        );
+    }
+    Ok(slots.into_iter().flatten().collect())
+}
+
+/// Where a CSV scan stands: inside a quoted field or not, at the start of a record or not.
+///
+/// Written by hand: the merge copies the rows as bytes and only needs to know
+/// where each record ends (a line break outside quotes, RFC 4180); the csv
+/// crate would parse every field and write it again.
+#[derive(Debug, Default)]
+struct Records {
+    quoted: bool,
+    /// A record has begun and not ended yet.
+    open: bool,
+}
+
+impl Records {
+    /// Whether the bytes seen so far end with a complete record.
+    fn complete(&self) -> bool {
+        !self.open
+    }
+
+    /// Scans `bytes`, returning the number of records they end.
+    fn scan(&mut self, bytes: &[u8]) -> usize {
+        let mut ended = 0;
+        for &b in bytes {
+            match b {
+                b'"' => {
+                    self.quoted = !self.quoted;
+                    self.open = true;
+                }
+                b'\n' if !self.quoted => {
+                    ended += 1;
+                    self.open = false;
+                }
+                _ => self.open = true,
+            }
+        }
+        ended
+    }
+
+    /// Reads one record (the header) into `line`, its line break included.
+    fn read_record(&mut self, reader: &mut impl BufRead, line: &mut Vec<u8>) -> std::io::Result<()> {
+        loop {
+            let start = line.len();
+            if reader.read_until(b'\n', line)? == 0 {
+                return Ok(());
+            }
+            if self.scan(&line[start..]) > 0 || !line.ends_with(b"\n") {
+                return Ok(());
+            }
+        }
+    }
+}
+
+/// Copies the rest of `reader` into `out`, returning the number of records it ends.
+fn copy_records(reader: &mut impl Read, out: &mut impl Write, scan: &mut Records) -> std::io::Result<usize> {
+    let mut buffer = vec![0u8; 1 << 16];
+    let mut rows = 0;
+    loop {
+        let n = match reader.read(&mut buffer) {
+            Ok(0) => return Ok(rows),
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        rows += scan.scan(&buffer[..n]);
+        out.write_all(&buffer[..n])?;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Records;
+
+    #[test]
+    fn records_end_at_line_breaks_outside_quotes() {
+        let mut scan = Records::default();
+        // Three records, one holding a quoted line break and an escaped quote.
+        assert_eq!(scan.scan(b"a,b\n\"x\ny\",\"say \"\"hi\"\"\"\n1,2\n"), 3);
+        assert!(scan.complete());
+        assert_eq!(scan.scan(b"3,4"), 0);
+        assert!(!scan.complete(), "a last row without its line break");
+    }
+}
