@@ -5,6 +5,8 @@
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
+//! rocking keys [--markdown]                        # every scenario key, unit, default, range
+//! rocking --version
 //! ```
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
@@ -36,6 +38,8 @@ enum Command {
     Sweep(commands::sweep::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
+    /// List every scenario key with its unit, default and valid range (--markdown: the documentation's reference page).
+    Keys(commands::keys::Args),
 }
 
 fn main() -> ExitCode {
@@ -51,6 +55,7 @@ fn main() -> ExitCode {
         Command::Run(args) => commands::run::execute(args),
         Command::Check(args) => commands::check::execute(args),
         Command::Sweep(args) => commands::sweep::execute(args),
+        Command::Keys(args) => commands::keys::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
