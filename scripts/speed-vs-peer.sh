@@ -3,13 +3,15 @@
 # block on a fixed base, 20 s of 0.5 g at 2 Hz, rtol 1e-8 (atol 1e-10). Prints
 # each side's seconds per case (best of ROUNDS rounds; ours is the mean of 1000
 # in-process runs per round, the peer's what it prints for its one case), the
-# ratio, and both max θ/α. Needs python3 with scipy (`pip install scipy`).
+# ratio, and both max θ/α. The peer is scripts/peer/scipy_peer.py (SciPy's
+# DOP853 with events and a restart at every impact; PEER=path overrides it).
+# Needs python3 with scipy (`pip install scipy`).
 #
 #   scripts/speed-vs-peer.sh [ROUNDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-5}
-peer=${PEER:-../shared/bench/scipy_peer.py}
+peer=${PEER:-scripts/peer/scipy_peer.py}
 cargo build --release --quiet -p rocking --example peer_case
 ours_bin="${CARGO_TARGET_DIR:-target}/release/examples/peer_case"
 best_peer=1e9

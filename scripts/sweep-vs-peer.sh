@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The SciPy peer (../shared/bench/scipy_peer.py) and `rocking sweep` on the same
+# The SciPy peer (scripts/peer/scipy_peer.py) and `rocking sweep` on the same
 # grid: the 0.5 m × 2 m block on a fixed base, 10 s of harmonic shaking at
 # rtol 1e-8 (atol 1e-10, the peer's rtol · 1e-2). Prints the seconds per case
 # of each, their ratio, the rate on 2 threads over the rate on 1, and the
@@ -24,7 +24,7 @@ amplitudes=${1:-0.3,0.5,0.7,0.9}
 frequencies=${2:-$(python3 -c 'print(",".join(str(1 + 0.25 * i) for i in range(25)))')}
 rounds=${3:-3}
 repeats=${4:-10}
-peer=${PEER:-../shared/bench/scipy_peer.py}
+peer=${PEER:-scripts/peer/scipy_peer.py}
 
 cargo build --release --quiet -p rocking-cli
 rocking="${CARGO_TARGET_DIR:-target}/release/rocking"

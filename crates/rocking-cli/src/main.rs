@@ -7,6 +7,8 @@
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! rocking sweep SWEEP.toml --shard K/N [--out DIR]  # one block of a sweep's cases
 //! rocking merge DIR1 DIR2 ... --out DIR             # the shards' rows in one sweep.csv
+//! rocking keys [--markdown]                        # every scenario key, unit, default, range
+//! rocking --version
 //! ```
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
@@ -41,6 +43,8 @@ enum Command {
     Merge(commands::merge::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
+    /// List every scenario key with its unit, default and valid range (--markdown: the documentation's reference page).
+    Keys(commands::keys::Args),
 }
 
 fn main() -> ExitCode {
@@ -57,6 +61,7 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::execute(args),
         Command::Sweep(args) => commands::sweep::execute(args),
         Command::Merge(args) => commands::merge::execute(args),
+        Command::Keys(args) => commands::keys::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -6,6 +6,7 @@ mod util;
 mod check;
 mod errors;
 mod guard;
+mod keys;
 mod run;
 mod shard;
 mod sweep;

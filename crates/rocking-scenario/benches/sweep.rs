@@ -6,7 +6,7 @@
 //!
 //! `cargo bench -p rocking-scenario --bench sweep`; criterion prints the rate
 //! in cases per second. Compare with the peer on the same grid
-//! (`python3 ../shared/bench/scipy_peer.py 0.5 2.0 10 1e-8 "0.3,0.5,0.7,0.9" "1,1.25,…,7"`),
+//! (`python3 scripts/peer/scipy_peer.py 0.5 2.0 10 1e-8 "0.3,0.5,0.7,0.9" "1,1.25,…,7"`),
 //! or run both, the whole command against the peer, with `scripts/sweep-vs-peer.sh`.
 
 // criterion_group! generates an undocumented function.

@@ -4,13 +4,10 @@ use crate::error::{ErrorKind, Fault};
 use crate::read::Section;
 use rocking::{Building, NormalForce};
 
-/// Every key of `[building]`.
-pub(crate) const KEYS: &[&str] = &["mass", "mu_static", "mu_kinetic", "normal_force"];
-
 /// The building. `mass` and `mu_static` are required; `mu_kinetic` defaults to
 /// `mu_static` (a single Coulomb coefficient), `normal_force` to "constant".
 pub(crate) fn parse(s: &Section<'_>) -> Result<Building, Fault> {
-    s.only(KEYS)?;
+    s.only(&crate::keys::section_keys("building"))?;
     let required = |key: &str, what: &str| -> Result<f64, Fault> {
         s.number(key)?
             .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))

@@ -30,7 +30,8 @@ pub enum GroundKind {
     Record,
 }
 
-const KINDS: &[(&str, GroundKind)] = &[
+/// The ground types by the name written in `type`.
+pub(crate) const KINDS: &[(&str, GroundKind)] = &[
     ("harmonic", GroundKind::Harmonic),
     ("sine-pulse", GroundKind::SinePulse),
     ("cosine-pulse", GroundKind::CosinePulse),
@@ -40,31 +41,14 @@ const KINDS: &[(&str, GroundKind)] = &[
     ("none", GroundKind::None),
 ];
 
-/// Every key of `[ground]`, whatever the type.
-pub(crate) const ALL_KEYS: &[&str] = &[
-    "type",
-    "amplitude",
-    "amplitude_ratio",
-    "frequency",
-    "frequency_ratio",
-    "duration",
-    "phase",
-    "t0",
-    "file",
-    "format",
-    "scale",
-    "units",
-    "dt",
-];
-
 impl GroundKind {
     /// The name used in `type`.
     pub fn as_str(self) -> &'static str {
         KINDS.iter().find(|(_, k)| *k == self).map_or("none", |(name, _)| name)
     }
 
-    /// The keys this type takes.
-    fn keys(self) -> &'static [&'static str] {
+    /// The keys this type takes (each documented in [`crate::keys::SCENARIO_KEYS`]).
+    pub(crate) fn keys(self) -> &'static [&'static str] {
         match self {
             GroundKind::None => &["type"],
             GroundKind::Harmonic => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "duration", "phase"],
@@ -148,8 +132,9 @@ pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fau
         .choice("type", KINDS)?
         .ok_or_else(|| Fault::new(s.key("type"), ErrorKind::Missing(format!("required: one of {}", names.join(", ")))))?;
     let valid = kind.keys();
+    let all_keys = crate::keys::section_keys("ground");
     for key in s.keys() {
-        if ALL_KEYS.contains(&key) && !valid.contains(&key) {
+        if all_keys.contains(&key) && !valid.contains(&key) {
             return Err(Fault::new(
                 s.key(key),
                 ErrorKind::NotApplicable(format!("does not apply to type = \"{}\" (its keys: {})", kind.as_str(), valid.join(", "))),

@@ -6,11 +6,6 @@ use crate::read::{finite, positive, Section};
 use rocking::{Initial, Settings, Tower};
 use std::f64::consts::FRAC_PI_2;
 
-/// Every key of `[simulation]`.
-pub(crate) const KEYS: &[&str] = &["duration", "g", "output_dt", "rtol", "atol"];
-/// Every key of `[initial]`.
-pub(crate) const INITIAL_KEYS: &[&str] = &["theta", "theta_over_alpha", "theta_dot"];
-
 /// Default simulated time (s).
 pub const DEFAULT_DURATION: f64 = 20.0;
 /// Default gravity (m/s²).
@@ -41,7 +36,7 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
             output_dt: DEFAULT_OUTPUT_DT,
         });
     };
-    s.only(KEYS)?;
+    s.only(&crate::keys::section_keys("simulation"))?;
     let get = |key: &str, default: f64| -> Result<f64, Fault> { positive(&s.key(key), s.number(key)?.unwrap_or(default)) };
     let duration = get("duration", DEFAULT_DURATION)?;
     let output_dt = get("output_dt", DEFAULT_OUTPUT_DT)?;
@@ -66,7 +61,7 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
 /// `[initial]`: `theta` (rad) or `theta_over_alpha`, and `theta_dot` (rad/s); default at rest.
 pub(crate) fn parse_initial(s: Option<&Section<'_>>, tower: Option<&Tower>) -> Result<Initial, Fault> {
     let Some(s) = s else { return Ok(Initial::default()) };
-    s.only(INITIAL_KEYS)?;
+    s.only(&crate::keys::section_keys("initial"))?;
     s.exclusive("theta", "theta_over_alpha")?;
     let (theta_key, theta) = match (s.number("theta")?, s.number("theta_over_alpha")?) {
         (Some(theta), _) => ("theta", finite(&s.key("theta"), theta)?),

@@ -6,22 +6,6 @@ use crate::error::{ErrorKind, Fault};
 use crate::read::Section;
 use rocking::{MassInput, Section as TowerSection, Tower, TowerGeometry};
 
-/// Every key of `[tower]`.
-pub(crate) const KEYS: &[&str] = &[
-    "width",
-    "height",
-    "mass",
-    "density",
-    "depth",
-    "section",
-    "wall_thickness",
-    "inertia_pivot",
-    "restitution",
-    "points",
-    "radius",
-    "alpha",
-];
-
 /// Keys of the geometric description that a tower given by `radius` and `alpha` does not take.
 const GEOMETRY_ONLY: &[&str] = &["width", "height", "density", "depth", "section", "wall_thickness"];
 
@@ -33,7 +17,7 @@ enum SectionKind {
 
 /// The tower and the extra points (x, y) in m, tower coordinates, to report.
 pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> {
-    s.only(KEYS)?;
+    s.only(&crate::keys::section_keys("tower"))?;
     let required = |key: &str, what: &str| -> Result<f64, Fault> {
         s.number(key)?
             .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))

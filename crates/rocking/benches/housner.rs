@@ -3,7 +3,7 @@
 //! same block on a sliding building.
 //!
 //! `cargo bench -p rocking --bench housner`; compare with
-//! `python3 ../shared/bench/scipy_peer.py 0.5 2.0 20 1e-8 0.5 2.0` (see the README).
+//! `python3 scripts/peer/scipy_peer.py 0.5 2.0 20 1e-8 0.5 2.0` (see the README).
 
 // criterion_group! generates an undocumented function.
 #![allow(missing_docs)]

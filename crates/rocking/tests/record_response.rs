@@ -1,7 +1,7 @@
 //! Responses to recorded accelerograms: the integrator steps onto the sample
 //! instants (the kinks of the input), so a record resampled onto its own
 //! instants, scaled exactly, or mirrored gives the expected response. Uses the
-//! 1940 El Centro record of the shared material (skipped when `../shared` is absent).
+//! 1940 El Centro N-S record of the repository (`data/records/`).
 
 #![allow(clippy::unwrap_used)]
 
@@ -10,15 +10,12 @@ mod common;
 use common::*;
 use rocking::{CsvOptions, GroundMotion, Initial, NormalForce, Record, RecordFormat, Settings, Summary};
 
-fn el_centro() -> Option<Record> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/data/records/elcentro_1940_ns.AT2");
-    match std::fs::read_to_string(path) {
-        Ok(text) => Some(Record::parse(&text, Some(RecordFormat::At2), &CsvOptions::default(), G).unwrap()),
-        Err(_) => {
-            eprintln!("skipped: {path} is absent");
-            None
-        }
-    }
+/// The El Centro 1940 N-S record of the repository (`data/records/`); a
+/// missing file fails the test rather than skipping it.
+fn el_centro() -> Record {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/records/elcentro_1940_ns.AT2");
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"));
+    Record::parse(&text, Some(RecordFormat::At2), &CsvOptions::default(), G).unwrap()
 }
 
 fn respond(record: Record) -> Summary {
@@ -39,7 +36,7 @@ fn respond(record: Record) -> Summary {
 /// and so, bit for bit, the same summary; the run both rocks and slides.
 #[test]
 fn resampled_onto_its_own_instants_gives_the_same_summary() {
-    let Some(record) = el_centro() else { return };
+    let record = el_centro();
     let ground = GroundMotion::Record(record.clone());
     let values = record.times().iter().map(|&t| ground.acceleration(t)).collect();
     let resampled = Record::from_samples(record.times().to_vec(), values).unwrap();
@@ -53,7 +50,7 @@ fn resampled_onto_its_own_instants_gives_the_same_summary() {
 /// mirrors the response (θ → −θ, u → −u) to rounding.
 #[test]
 fn scaling_and_mirroring() {
-    let Some(record) = el_centro() else { return };
+    let record = el_centro();
     let doubled = Record::from_samples(record.times().to_vec(), record.values().iter().map(|v| 2.0 * v).collect()).unwrap();
     assert_eq!(format!("{:?}", respond(record.scaled(2.0))), format!("{:?}", respond(doubled)));
     let (a, b) = (respond(record.clone()), respond(record.scaled(-1.0)));
@@ -66,7 +63,7 @@ fn scaling_and_mirroring() {
 /// building slides lets it stop, and the time in each regime adds up to the run.
 #[test]
 fn time_in_regimes_adds_up_and_motion_dies_out() {
-    let Some(record) = el_centro() else { return };
+    let record = el_centro();
     let s = respond(record);
     let total: f64 = s.time_in_motion.iter().sum();
     assert!((total - 35.0).abs() < 1e-9, "{total}: {s:?}");

@@ -5,7 +5,7 @@
 //! The rules and an example are on [`Sweep`]; the order of rows and the
 //! memory bound on [`Sweep::run`].
 
-mod axis;
+pub(crate) mod axis;
 mod engine;
 mod row;
 mod shard;

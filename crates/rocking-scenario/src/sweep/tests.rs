@@ -5,7 +5,7 @@
 
 use super::axis::STRING_KEYS;
 use super::*;
-use crate::{building, ground, simulation, summary_json, summary_scalars, tower};
+use crate::{summary_json, summary_scalars};
 use std::convert::Infallible;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -487,13 +487,8 @@ fn csv_text_is_quoted_only_when_needed() {
 #[test]
 fn the_sweepable_keys_are_the_scalar_keys_of_every_section() {
     let mut expected: Vec<String> = vec!["name".into()];
-    for (section, keys) in [
-        ("tower", tower::KEYS),
-        ("building", building::KEYS),
-        ("ground", ground::ALL_KEYS),
-        ("initial", simulation::INITIAL_KEYS),
-        ("simulation", simulation::KEYS),
-    ] {
+    for section in crate::SECTIONS {
+        let keys = crate::keys::section_keys(section);
         expected.extend(keys.iter().filter(|k| **k != "points").map(|k| format!("{section}.{k}")));
     }
     let mut actual: Vec<String> = SWEEPABLE_KEYS.iter().map(|k| k.to_string()).collect();

@@ -1,0 +1,29 @@
+//! `rocking keys [--markdown]`: every scenario key with its unit, default and
+//! valid range, from the table the parser checks keys against. `--markdown`
+//! prints the reference page of the documentation (`docs/src/reference/keys.md`).
+
+use rocking_scenario::{keys_markdown, SCENARIO_KEYS};
+use std::fmt::Write;
+
+/// Arguments of `rocking keys`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Print the documentation's reference page (Markdown) instead of one line per key.
+    #[arg(long)]
+    pub markdown: bool,
+}
+
+/// Prints the keys.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    if args.markdown {
+        return super::print(&keys_markdown());
+    }
+    let width = SCENARIO_KEYS.iter().map(|k| k.key.chars().count()).max().unwrap_or(0);
+    let mut out = String::new();
+    for k in SCENARIO_KEYS {
+        let unit = if k.unit.is_empty() { "-" } else { k.unit };
+        // Writing to a String cannot fail.
+        let _ = writeln!(out, "{:width$}  {unit:6} default: {}; valid: {}. {}", k.key, k.default, k.range, k.meaning);
+    }
+    super::print(&out)
+}
