@@ -55,6 +55,28 @@ pub enum RunError<E> {
     Stopped(E),
 }
 
+/// Numbered cases that give one row each: a sweep's, or a fragility study's.
+pub(crate) trait Cases: Sync {
+    /// The number of cases.
+    fn len(&self) -> usize;
+    /// Runs case `index` on this thread: its row (with `error` filled if it failed).
+    fn run_case(&self, index: usize) -> Row;
+    /// The row of case `index` that failed with `message`.
+    fn failed_row(&self, index: usize, message: &str) -> Row;
+}
+
+impl Cases for Sweep {
+    fn len(&self) -> usize {
+        Sweep::len(self)
+    }
+    fn run_case(&self, index: usize) -> Row {
+        Sweep::run_case(self, index)
+    }
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        Sweep::failed_row(self, index, message)
+    }
+}
+
 impl Sweep {
     /// Runs every case on `threads` worker threads (`None`: one per core, or
     /// `RAYON_NUM_THREADS`) of a pool of its own, and calls `on_row` on the
@@ -63,111 +85,121 @@ impl Sweep {
     /// is returned. A panic inside a case (a bug) becomes that case's error.
     /// Memory stays flat in the number of cases: at most [`WINDOW`] rows (64
     /// per thread if more) are held, and `on_row` sees each row once.
-    pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, mut on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
-        let workers = match threads {
-            Some(n) if n > 0 => n,
-            _ => default_threads(),
+    pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
+        run_cases(self, threads, cancel, on_row)
+    }
+}
+
+/// Runs the cases of `cases` as [`Sweep::run`] says (which is this, for a sweep).
+pub(crate) fn run_cases<C: Cases, E>(
+    this: &C,
+    threads: Option<usize>,
+    cancel: &AtomicBool,
+    mut on_row: impl FnMut(Row) -> Result<(), E>,
+) -> Result<Finished, RunError<E>> {
+    let workers = match threads {
+        Some(n) if n > 0 => n,
+        _ => default_threads(),
+    }
+    .clamp(1, this.len().max(1));
+    // The calling thread is one of the workers; the pool holds the others.
+    // (A pool thread without a case to run would spin for a while looking
+    // for work, and take time slices from those running cases.)
+    let pool = rayon::ThreadPoolBuilder::new()
+        // (`0` would mean one per core: a lone worker gets a pool of one idle thread.)
+        .num_threads((workers - 1).max(1))
+        .thread_name(|i| format!("sweep-{}", i + 1))
+        .build()?;
+    let window = WINDOW.max(64 * workers);
+    let next = AtomicUsize::new(0);
+    let stop = AtomicBool::new(false);
+    let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
+    // The number of rows passed on so far, and a signal when it grows.
+    let passed = (Mutex::new(0usize), Condvar::new());
+    let (sender, receiver) = mpsc::channel::<Row>();
+
+    let (written, failed, result) = pool.in_place_scope(|scope| {
+        // The calling thread runs cases too (it would otherwise wake for
+        // every row and take a core's time slices from the workers).
+        for _ in 1..workers {
+            let sender = sender.clone();
+            let (next, passed, halted) = (&next, &passed, &halted);
+            scope.spawn(move |_| {
+                while !halted() {
+                    let index = next.fetch_add(1, Ordering::Relaxed);
+                    if index >= this.len() {
+                        break;
+                    }
+                    let (lock, signal) = passed;
+                    let mut done = lock.lock().unwrap_or_else(PoisonError::into_inner);
+                    while index >= *done + window {
+                        if halted() {
+                            return;
+                        }
+                        done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
+                    }
+                    drop(done);
+                    if sender.send(guarded_case(this, index)).is_err() {
+                        break;
+                    }
+                }
+            });
         }
-        .clamp(1, self.len().max(1));
-        // The calling thread is one of the workers; the pool holds the others.
-        // (A pool thread without a case to run would spin for a while looking
-        // for work, and take time slices from those running cases.)
-        let pool = rayon::ThreadPoolBuilder::new()
-            // (`0` would mean one per core: a lone worker gets a pool of one idle thread.)
-            .num_threads((workers - 1).max(1))
-            .thread_name(|i| format!("sweep-{}", i + 1))
-            .build()?;
-        let window = WINDOW.max(64 * workers);
-        let next = AtomicUsize::new(0);
-        let stop = AtomicBool::new(false);
-        let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
-        // The number of rows passed on so far, and a signal when it grows.
-        let passed = (Mutex::new(0usize), Condvar::new());
-        let (sender, receiver) = mpsc::channel::<Row>();
-
-        let (written, failed, result) = pool.in_place_scope(|scope| {
-            // The calling thread runs cases too (it would otherwise wake for
-            // every row and take a core's time slices from the workers).
-            for _ in 1..workers {
-                let sender = sender.clone();
-                let (next, passed, halted) = (&next, &passed, &halted);
-                scope.spawn(move |_| {
-                    while !halted() {
-                        let index = next.fetch_add(1, Ordering::Relaxed);
-                        if index >= self.len() {
-                            break;
-                        }
-                        let (lock, signal) = passed;
-                        let mut done = lock.lock().unwrap_or_else(PoisonError::into_inner);
-                        while index >= *done + window {
-                            if halted() {
-                                return;
-                            }
-                            done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
-                        }
-                        drop(done);
-                        if sender.send(self.guarded_case(index)).is_err() {
-                            break;
-                        }
-                    }
-                });
+        drop(sender);
+        let mut order = Reorder {
+            waiting: BTreeMap::new(),
+            written: 0,
+            failed: 0,
+            result: Ok(()),
+            passed: &passed,
+        };
+        // Run cases here while there are any, passing on what the workers
+        // sent in between; a case beyond the window waits for rows first.
+        while !halted() {
+            order.take(receiver.try_iter(), &mut on_row, &stop);
+            let index = next.fetch_add(1, Ordering::Relaxed);
+            if index >= this.len() {
+                break;
             }
-            drop(sender);
-            let mut order = Reorder {
-                waiting: BTreeMap::new(),
-                written: 0,
-                failed: 0,
-                result: Ok(()),
-                passed: &passed,
-            };
-            // Run cases here while there are any, passing on what the workers
-            // sent in between; a case beyond the window waits for rows first.
-            while !halted() {
-                order.take(receiver.try_iter(), &mut on_row, &stop);
-                let index = next.fetch_add(1, Ordering::Relaxed);
-                if index >= self.len() {
-                    break;
+            while index >= order.written + window && !halted() {
+                match receiver.recv_timeout(POLL) {
+                    Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    // No worker left: every earlier row is in.
+                    Err(mpsc::RecvTimeoutError::Disconnected) => break,
                 }
-                while index >= order.written + window && !halted() {
-                    match receiver.recv_timeout(POLL) {
-                        Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
-                        Err(mpsc::RecvTimeoutError::Timeout) => {}
-                        // No worker left: every earlier row is in.
-                        Err(mpsc::RecvTimeoutError::Disconnected) => break,
-                    }
-                }
-                if halted() {
-                    break;
-                }
-                order.take(std::iter::once(self.guarded_case(index)), &mut on_row, &stop);
             }
-            // The workers' last rows; the loop ends when the last worker does.
-            order.take(receiver.iter(), &mut on_row, &stop);
-            (order.written, order.failed, order.result)
-        });
-        result?;
-        Ok(Finished {
-            written,
-            failed,
-            cancelled: written < self.len(),
-            threads: workers,
-        })
-    }
+            if halted() {
+                break;
+            }
+            order.take(std::iter::once(guarded_case(this, index)), &mut on_row, &stop);
+        }
+        // The workers' last rows; the loop ends when the last worker does.
+        order.take(receiver.iter(), &mut on_row, &stop);
+        (order.written, order.failed, order.result)
+    });
+    result?;
+    Ok(Finished {
+        written,
+        failed,
+        cancelled: written < this.len(),
+        threads: workers,
+    })
+}
 
-    /// Case `index`'s row; a panic inside the case (a bug) becomes its error.
-    fn guarded_case(&self, index: usize) -> Row {
-        catch_unwind(AssertUnwindSafe(|| self.run_case(index))).unwrap_or_else(|panic| self.panicked(index, &*panic))
-    }
+/// Case `index`'s row; a panic inside the case (a bug) becomes its error.
+fn guarded_case<C: Cases>(cases: &C, index: usize) -> Row {
+    catch_unwind(AssertUnwindSafe(|| cases.run_case(index))).unwrap_or_else(|panic| panicked(cases, index, &*panic))
+}
 
-    /// The row of a case whose run panicked.
-    fn panicked(&self, index: usize, panic: &(dyn std::any::Any + Send)) -> Row {
-        let message = panic
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_string())
-            .or_else(|| panic.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unknown panic".into());
-        self.failed_row(index, &format!("internal error (please report it): {message}"))
-    }
+/// The row of a case whose run panicked.
+fn panicked<C: Cases>(cases: &C, index: usize, panic: &(dyn std::any::Any + Send)) -> Row {
+    let message = panic
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into());
+    cases.failed_row(index, &format!("internal error (please report it): {message}"))
 }
 
 /// Rows put back in case order and passed on as soon as every earlier one has been.
