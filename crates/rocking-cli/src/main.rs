@@ -4,12 +4,13 @@
 //! ```text
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
+//! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! ```
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
 //! stderr naming the file, the key and what is wrong), 2 on bad usage, 130
-//! when a sweep is interrupted by Ctrl-C (after writing the rows finished).
+//! when a sweep or a study is interrupted by Ctrl-C (after writing the rows finished).
 
 mod commands;
 mod format;
@@ -34,6 +35,8 @@ enum Command {
     Run(commands::run::Args),
     /// Run a parametric sweep: every combination of the [sweep] values is one case, one row of sweep.csv.
     Sweep(commands::sweep::Args),
+    /// Run a fragility study: a suite of records scaled to levels of an intensity measure; stripes, fitted fragility curves.
+    Fragility(commands::fragility::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
 }
@@ -51,6 +54,7 @@ fn main() -> ExitCode {
         Command::Run(args) => commands::run::execute(args),
         Command::Check(args) => commands::check::execute(args),
         Command::Sweep(args) => commands::sweep::execute(args),
+        Command::Fragility(args) => commands::fragility::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -83,8 +83,8 @@ pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
 pub use study::{
-    fit as fit_fragility, log_likelihood, pga, pgv, Fit, LimitState, Measure, Stripe, Study, StudyRecord, Tally, Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER,
-    FRACTIONS_HEADER, FRAGILITY_HEADER, METHOD as FIT_METHOD, STUDY_KEYS,
+    fit as fit_fragility, log_likelihood, pga, pgv, probability as fragility_probability, Fit, LimitState, Measure, Stripe, Study, StudyRecord, Tally,
+    Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER, FRACTIONS_HEADER, FRAGILITY_HEADER, METHOD as FIT_METHOD, STUDY_KEYS,
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};

@@ -1,6 +1,7 @@
 //! One file per subcommand; each has its clap `Args` and an `execute`.
 
 pub mod check;
+pub mod fragility;
 pub mod run;
 pub mod sweep;
 

@@ -47,6 +47,11 @@ pub struct Fit {
 /// The `method` of a fit that exists.
 pub const METHOD: &str = "binomial maximum likelihood (Baker 2015)";
 
+/// The fragility `P(x) = Φ(ln(x/θ) / β)`: the probability of exceeding at level `level`.
+pub fn probability(level: f64, median: f64, beta: f64) -> f64 {
+    Normal::standard().cdf((level / median).ln() / beta)
+}
+
 /// `ln Φ(z)`, accurate far in the lower tail (where `Φ(z)` underflows).
 fn ln_cdf(z: f64) -> f64 {
     if z > -30.0 {

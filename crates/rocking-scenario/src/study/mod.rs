@@ -13,7 +13,7 @@ mod fit;
 mod limit;
 mod measure;
 
-pub use fit::{fit, log_likelihood, Fit, Stripe, METHOD};
+pub use fit::{fit, log_likelihood, probability, Fit, Stripe, METHOD};
 pub use limit::{LimitState, Tally, Threshold, FRACTIONS_HEADER, FRAGILITY_HEADER};
 pub use measure::{pga, pgv, Measure};
 
