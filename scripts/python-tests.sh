@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Python package's tests: builds the `rocking` command (the tests compare
 # with it), installs the package from this checkout into a fresh virtual
-# environment (pip fetches the build backend, maturin, and numpy, pytest and
-# pandas from PyPI), and runs python/tests/ with pytest.
+# environment (pip fetches the build backend, maturin, and numpy, pytest,
+# scipy and pandas from PyPI), and runs python/tests/ with pytest.
 #
 #   scripts/python-tests.sh [PYTEST ARGS...]
 #
@@ -25,9 +25,9 @@ echo "== fresh virtual environment in $venv ($("$python" --version))"
 "$python" -m venv "$venv"
 pip=("$venv/bin/python" -m pip --disable-pip-version-check --no-input)
 
-echo "== installing the package from the checkout, numpy and pytest"
+echo "== installing the package from the checkout, numpy, pytest and scipy (the fragility fit is checked against SciPy)"
 # --locked: the extension is built from Cargo.lock as committed, like the CLI.
-MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python" numpy pytest
+MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python" numpy pytest scipy
 # pandas is optional (Result.to_pandas); its tests skip without it.
 if ! "${pip[@]}" install --quiet pandas; then
     echo "pandas could not be installed: the to_pandas tests will skip"

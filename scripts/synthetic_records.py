@@ -20,7 +20,10 @@ vanish at zero frequency (the Clough-Penzien correction is not applied): the
 records' velocities drift a little, which matters for PGV, not PGA.
 
     python3 scripts/synthetic_records.py      # needs numpy; same files every time
+    python3 scripts/synthetic_records.py --out DIR --count N   # N records (seeds 1..N) elsewhere
 """
+
+import argparse
 
 from pathlib import Path
 
@@ -79,11 +82,15 @@ def write_at2(path, seed, acc):
 
 
 def main():
-    OUT.mkdir(parents=True, exist_ok=True)
-    for seed in SEEDS:
-        path = OUT / f"kt_{seed:02d}.AT2"
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=OUT, help="folder of the records (default: data/records/synthetic)")
+    parser.add_argument("--count", type=int, default=len(SEEDS), help="number of records, seeds 1..count (default: 11)")
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    for seed in range(1, args.count + 1):
+        path = args.out / f"kt_{seed:02d}.AT2"
         write_at2(path, seed, kanai_tajimi(seed))
-        print(f"wrote {path.relative_to(ROOT)}")
+        print(f"wrote {path}")
 
 
 if __name__ == "__main__":

@@ -52,3 +52,9 @@ def sweep_raw(scenario: Scenario, axes: Mapping[str, Any], threads: Optional[int
 def sweep_file_raw(path: Union[str, "os.PathLike[str]"], threads: Optional[int] = None) -> Dict[str, "np.ndarray"]:
     """Runs a sweep file (a scenario with a ``[sweep]`` table); see ``rocking.sweep``."""
     ...
+
+def fragility_raw(
+    study: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads: Optional[int] = None
+) -> Dict[str, Dict[str, "np.ndarray"]]:
+    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns; see ``rocking.fragility``."""
+    ...

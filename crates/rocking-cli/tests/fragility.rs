@@ -226,3 +226,29 @@ fn bad_studies_fail_with_one_line_naming_the_key() {
         );
     }
 }
+
+/// The example study runs (a second or so): 12 records (El Centro, then the
+/// 11 synthetic ones in sorted order) × 20 levels, a fit for each limit state
+/// the suite exceeds, and its figures.
+#[test]
+fn the_example_study_runs() {
+    let dir = tempdir();
+    let r = rocking(&["fragility", "examples/fragility/tower-on-church.toml", "--out", arg(dir.path()), "--plot"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let (_, rows) = csv(&dir.path().join("stripes.csv"));
+    assert_eq!(rows.len(), 12 * 20);
+    let mut records: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+    records.dedup();
+    assert_eq!(records[0], "../../data/records/elcentro_1940_ns.AT2");
+    assert_eq!(
+        records[1..],
+        (1..=11).map(|k| format!("../../data/records/synthetic/kt_{k:02}.AT2")).collect::<Vec<_>>()
+    );
+    assert!(rows.iter().all(|r| r.last().is_some_and(String::is_empty)), "no case fails");
+    let (_, fits) = csv(&dir.path().join("fragility.csv"));
+    let names: Vec<&str> = fits.iter().map(|f| f[0].as_str()).collect();
+    assert_eq!(names, ["half-alpha", "slide-2cm", "collapse"]);
+    for f in ["ida.svg", "fragility.svg"] {
+        assert!(read(&dir.path().join(f)).contains("bell tower on a sliding church"), "{f}");
+    }
+}
