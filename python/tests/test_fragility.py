@@ -49,9 +49,11 @@ def test_the_fit_agrees_with_scipy(result: rocking.Fragility) -> None:
             continue
         mine = fr["limit_state"] == state
         median, beta = scipy_fit(fr["level"][mine], fr["cases"][mine], fr["exceeded"][mine])
-        # Both optimisers stop within ~1e-6 of the flat top of the likelihood.
-        assert result.fragility["median"][i] == pytest.approx(median, rel=1e-4), state
-        assert result.fragility["beta"][i] == pytest.approx(beta, rel=1e-4), state
+        # At the top the log-likelihood is flat to second order: a relative change of
+        # 1e-7 in θ or β moves it by ~1e-13, below what either optimiser resolves
+        # (the example's fits agree to 5e-8); 1e-6 leaves a margin.
+        assert result.fragility["median"][i] == pytest.approx(median, rel=1e-6), state
+        assert result.fragility["beta"][i] == pytest.approx(beta, rel=1e-6), state
         fitted += 1
     assert fitted >= 2
 

@@ -5,7 +5,11 @@
 //! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
 //! No printing, no command line: the `rocking` binary and the bindings use it.
 //! A [`Sweep`] (interface.md, "Sweep file") runs every combination of values
-//! of some keys in parallel, one [`Row`] per case in a fixed order.
+//! of some keys in parallel, one [`Row`] per case in a fixed order. A
+//! [`Study`] (interface.md, "Fragility studies") runs a suite of records
+//! scaled to levels of an intensity measure on the same engine, counts the
+//! exceedances of its limit states ([`Tally`]) and fits lognormal fragility
+//! curves ([`fit_fragility`]).
 //!
 //! ## Keys: what is required, what defaults
 //!

@@ -102,7 +102,8 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
             None => None,
         };
         let overturned = matches!(cell(overturned_column), Some(Cell::Bool(true)));
-        if let Some(curve) = ida.get_mut(row.index / levels) {
+        // Only for the figure: one point per case.
+        if let Some(curve) = ida.get_mut(row.index / levels).filter(|_| args.plot) {
             curve.points.push((study.levels()[row.index % levels], value, overturned));
         }
         progress.inc(1);
