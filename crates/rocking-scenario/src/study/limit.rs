@@ -237,3 +237,59 @@ impl Tally {
         out
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header() -> Vec<String> {
+        ["record", "level", "scale", "max_theta_over_alpha", "overturned", "error"]
+            .map(String::from)
+            .to_vec()
+    }
+
+    fn row(index: usize, theta: Cell, overturned: Cell, error: Cell) -> Row {
+        let cells = vec![Cell::Text("r".into()), Cell::Float(0.0), Cell::Float(1.0), theta, overturned, error];
+        Row { index, cells }
+    }
+
+    /// Counted by hand: a numeric state exceeds strictly above its threshold
+    /// (an empty cell never does), a boolean one when true, and a failed case
+    /// counts in neither `cases` nor `exceeded`.
+    #[test]
+    fn tally_counts_by_hand() {
+        let states = [
+            LimitState {
+                name: "half".into(),
+                field: "max_theta_over_alpha".into(),
+                threshold: Threshold::Above(0.5),
+            },
+            LimitState {
+                name: "collapse".into(),
+                field: "overturned".into(),
+                threshold: Threshold::True,
+            },
+        ];
+        let mut tally = Tally::new(&states, &[0.1, 0.2], &header());
+        // Level 0.1 (even indices): 0.5 (not above), 0.7 with overturned, empty, failed.
+        // Level 0.2 (odd indices): 0.51, 3.0 with overturned.
+        let rows = [
+            row(0, Cell::Float(0.5), Cell::Bool(false), Cell::Empty),
+            row(1, Cell::Float(0.51), Cell::Bool(false), Cell::Empty),
+            row(2, Cell::Float(0.7), Cell::Bool(true), Cell::Empty),
+            row(3, Cell::Float(3.0), Cell::Bool(true), Cell::Empty),
+            row(4, Cell::Empty, Cell::Bool(false), Cell::Empty),
+            row(6, Cell::Empty, Cell::Empty, Cell::Text("boom".into())),
+        ];
+        for r in &rows {
+            tally.add(r);
+        }
+        let counts = |i: usize| tally.stripes(i).iter().map(|s| (s.cases, s.exceeded)).collect::<Vec<_>>();
+        assert_eq!(counts(0), [(3, 1), (2, 2)]);
+        assert_eq!(counts(1), [(3, 1), (2, 1)]);
+        assert_eq!(
+            tally.fractions_csv(),
+            "limit_state,level,cases,exceeded\nhalf,0.1,3,1\nhalf,0.2,2,2\ncollapse,0.1,3,1\ncollapse,0.2,2,1\n"
+        );
+    }
+}
