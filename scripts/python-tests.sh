@@ -2,7 +2,7 @@
 # The Python package's tests: builds the `rocking` command (the tests compare
 # with it), installs the package from this checkout into a fresh virtual
 # environment (pip fetches the build backend, maturin, and numpy, pytest,
-# pandas and dask.distributed from PyPI), and runs python/tests/ with pytest.
+# pandas, scipy and dask.distributed from PyPI), and runs python/tests/ with pytest.
 #
 #   scripts/python-tests.sh [PYTEST ARGS...]
 #
@@ -25,10 +25,10 @@ echo "== fresh virtual environment in $venv ($("$python" --version))"
 "$python" -m venv "$venv"
 pip=("$venv/bin/python" -m pip --disable-pip-version-check --no-input)
 
-echo "== installing the package from the checkout with its dask extra, numpy and pytest"
+echo "== installing the package from the checkout with its dask extra, numpy, pytest and scipy (the fragility fit is checked against SciPy)"
 # --locked: the extension is built from Cargo.lock as committed, like the CLI.
 # [dask]: the optional extra, for the tests of sweeps on a LocalCluster.
-MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python[dask]" numpy pytest
+MATURIN_PEP517_ARGS="--locked" "${pip[@]}" install --quiet "$root/python[dask]" numpy pytest scipy
 # pandas is optional for users (Result.to_pandas), but required here: CI runs
 # every test, none skips.
 "${pip[@]}" install --quiet pandas

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, 
 
 from ._rocking import Scenario, __version__
 from ._rocking import derived as _derived
+from ._rocking import fragility_raw as _fragility_raw
 from ._rocking import run_raw as _run_raw
 from ._rocking import sweep_file_len_raw as _sweep_file_len_raw
 from ._rocking import sweep_file_raw as _sweep_file_raw
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["Result", "Scenario", "ScenarioLike", "derived", "run", "sweep", "__version__"]
+__all__ = ["Fragility", "Result", "Scenario", "ScenarioLike", "derived", "fragility", "run", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
@@ -199,3 +200,52 @@ def sweep(
     from ._dask import sweep_on
 
     return sweep_on(client, s, axes, threads, blocks)
+
+
+class Fragility:
+    """The outcome of :func:`fragility`: what ``rocking fragility`` writes, as NumPy columns.
+
+    Attributes:
+        stripes: The columns of ``stripes.csv``, one row per (record, level) in
+            case order: ``record`` (object array of ``str``, the path as the glob
+            gave it), ``level``, ``scale`` (float64), then the scalar fields of
+            ``summary.json`` as :func:`sweep` gives them, then ``error``
+            (``""`` for a case that ran).
+        fragility: The columns of ``fragility.csv``, one entry per limit state:
+            ``limit_state``, ``median`` and ``beta`` (float64, ``NaN`` where no fit
+            exists), ``cases``, ``exceeded`` (int64), ``method`` (why there is no
+            fit, when there is none).
+        fractions: The columns of ``fractions.csv``: ``limit_state``, ``level``,
+            ``cases``, ``exceeded``, one entry per limit state and level.
+    """
+
+    def __init__(self, stripes: Dict[str, "np.ndarray"], fragility: Dict[str, "np.ndarray"], fractions: Dict[str, "np.ndarray"]) -> None:
+        self.stripes = stripes
+        self.fragility = fragility
+        self.fractions = fractions
+
+    def __repr__(self) -> str:
+        n = len(next(iter(self.stripes.values()))) if self.stripes else 0
+        return f"<rocking.Fragility: {n} cases, limit states {list(self.fragility['limit_state'])}>"
+
+
+def fragility(study: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threads: Optional[int] = None) -> Fragility:
+    """Runs a fragility study, as ``rocking fragility`` does, on all cores with the GIL released.
+
+    Args:
+        study: The path of a study file (a scenario without ``[ground]`` plus a
+            ``[study]`` table), or a dict with the same keys (``study.limit_state``
+            a list of dicts; record patterns then relative to the current directory).
+        threads: Worker threads (default: one per core).
+
+    Returns:
+        A :class:`Fragility`: the stripes, the fitted lognormal fragility of each
+        limit state (binomial maximum likelihood, Baker 2015) and the observed fractions.
+
+    Raises:
+        ValueError: The study is invalid (``file: study.key: …``).
+        OSError: The study file cannot be read.
+        KeyboardInterrupt: Ctrl-C stops the study after the cases under way.
+    """
+    raw = _fragility_raw(study, threads)
+    return Fragility(raw["stripes"], raw["fragility"], raw["fractions"])

@@ -67,3 +67,9 @@ def sweep_file_raw(
 def sweep_file_len_raw(path: Union[str, "os.PathLike[str]"], text: Optional[str] = None) -> int:
     """The number of cases of a sweep file (``text``: its content, if given)."""
     ...
+
+def fragility_raw(
+    study: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads: Optional[int] = None
+) -> Dict[str, Dict[str, "np.ndarray"]]:
+    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns; see ``rocking.fragility``."""
+    ...

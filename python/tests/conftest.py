@@ -36,10 +36,18 @@ def is_sweep_file(path: Path) -> bool:
     return any(line.strip().startswith("[sweep]") for line in text.splitlines())
 
 
+def is_study_file(path: Path) -> bool:
+    """Whether a TOML file is a fragility study (has a top-level ``[study]`` table)."""
+    text = path.read_text(encoding="utf-8")
+    if tomllib is not None:
+        return "study" in tomllib.loads(text)
+    return any(line.strip().startswith("[study]") for line in text.splitlines())
+
+
 def example_files(sweeps: bool) -> List[Path]:
-    """``examples/*.toml`` and ``examples/*/*.toml``: the scenarios, or the sweep files."""
+    """``examples/*.toml`` and ``examples/*/*.toml``: the scenarios, or the sweep files (fragility studies are neither)."""
     files = sorted(EXAMPLES.glob("*.toml")) + sorted(EXAMPLES.glob("*/*.toml"))
-    return [f for f in files if is_sweep_file(f) == sweeps]
+    return [f for f in files if is_sweep_file(f) == sweeps and not is_study_file(f)]
 
 
 def _find_cli() -> Optional[Path]:

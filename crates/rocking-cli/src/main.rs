@@ -4,6 +4,7 @@
 //! ```text
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
+//! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! rocking sweep SWEEP.toml --shard K/N [--out DIR]  # one block of a sweep's cases
 //! rocking merge DIR1 DIR2 ... --out DIR             # the shards' rows in one sweep.csv
@@ -13,7 +14,7 @@
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
 //! stderr naming the file, the key and what is wrong), 2 on bad usage, 130
-//! when a sweep is interrupted by Ctrl-C (after writing the rows finished).
+//! when a sweep or a study is interrupted by Ctrl-C (after writing the rows finished).
 
 mod commands;
 mod format;
@@ -41,6 +42,8 @@ enum Command {
     Sweep(commands::sweep::Args),
     /// Merge the folders of `rocking sweep --shard K/N` into one sweep.csv, identical to the unsharded one.
     Merge(commands::merge::Args),
+    /// Run a fragility study: a suite of records scaled to levels of an intensity measure; stripes, fitted fragility curves.
+    Fragility(commands::fragility::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
     /// List every scenario key with its unit, default and valid range (--markdown: the documentation's reference page).
@@ -62,6 +65,7 @@ fn main() -> ExitCode {
         Command::Sweep(args) => commands::sweep::execute(args),
         Command::Merge(args) => commands::merge::execute(args),
         Command::Keys(args) => commands::keys::execute(args),
+        Command::Fragility(args) => commands::fragility::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -4,7 +4,7 @@
 //! (`python/` at the repository root, built by maturin). It wraps
 //! `rocking-scenario`: a scenario from a TOML file or a dict, a run with its
 //! history as NumPy arrays, a parametric sweep on all cores, and the derived
-//! quantities. The Python package adds the `Result` class and the docs; the
+//! quantities, and fragility studies. The Python package adds the `Result` class and the docs; the
 //! stubs are in `python/rocking/_rocking.pyi`.
 //!
 //! The GIL is released while a case or a sweep runs. Errors are `ValueError`
@@ -13,6 +13,7 @@
 
 mod convert;
 mod error;
+mod fragility;
 mod run;
 mod scenario;
 mod sweep;
@@ -30,5 +31,6 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_file_raw, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_file_len_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(fragility::fragility_raw, m)?)?;
     Ok(())
 }

@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 use toml::Value;
 
 /// How often the sweep looks for Ctrl-C (KeyboardInterrupt) while it runs.
-const SIGNAL_CHECK: Duration = Duration::from_millis(100);
+pub(crate) const SIGNAL_CHECK: Duration = Duration::from_millis(100);
 
 /// Runs the cases of `scenario` with `axes` (the `[sweep]` table of a sweep
 /// file, as a dict) on `threads` worker threads (`None`: one per core) and
@@ -96,7 +96,7 @@ fn block(first: usize, count: Option<usize>) -> Range<usize> {
     first..count.map_or(usize::MAX, |c| first.saturating_add(c))
 }
 
-fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
+pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
     match threads {
         None => Ok(None),
         Some(n) => match usize::try_from(n) {
@@ -147,7 +147,7 @@ const BOOL_COLUMNS: [&str; 2] = ["overturned", "tower_uplift_detected"];
 /// is empty), booleans as bool (`False` where empty: a failed case, see
 /// `error`), text as an object array of `str` (`""` where empty), and a
 /// mixture as an object array of Python values (`None` where empty).
-fn column<'py>(py: Python<'py>, name: &str, cells: Vec<Cell>) -> PyResult<Bound<'py, PyAny>> {
+pub(crate) fn column<'py>(py: Python<'py>, name: &str, cells: Vec<Cell>) -> PyResult<Bound<'py, PyAny>> {
     let all = |f: fn(&Cell) -> bool| cells.iter().all(|c| c.is_empty() || f(c));
     let all_empty = cells.iter().all(Cell::is_empty);
     let is_text = all(|c| matches!(c, Cell::Text(_))) && (!all_empty || TEXT_COLUMNS.contains(&name));

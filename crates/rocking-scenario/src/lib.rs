@@ -5,7 +5,11 @@
 //! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
 //! No printing, no command line: the `rocking` binary and the bindings use it.
 //! A [`Sweep`] (interface.md, "Sweep file") runs every combination of values
-//! of some keys in parallel, one [`Row`] per case in a fixed order.
+//! of some keys in parallel, one [`Row`] per case in a fixed order. A
+//! [`Study`] (interface.md, "Fragility studies") runs a suite of records
+//! scaled to levels of an intensity measure on the same engine, counts the
+//! exceedances of its limit states ([`Tally`]) and fits lognormal fragility
+//! curves ([`fit_fragility`]).
 //!
 //! ## Keys: what is required, what defaults
 //!
@@ -69,6 +73,7 @@ mod read;
 mod run;
 mod scenario;
 mod simulation;
+mod study;
 mod summary;
 mod sweep;
 mod tower;
@@ -83,5 +88,9 @@ pub use keys::{keys_markdown, KeyDoc, KeyKind, SCENARIO_KEYS};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
+pub use study::{
+    fit as fit_fragility, log_likelihood, pga, pgv, probability as fragility_probability, Fit, LimitState, Measure, Stripe, Study, StudyRecord, Tally,
+    Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER, FRACTIONS_HEADER, FRAGILITY_HEADER, METHOD as FIT_METHOD, STUDY_KEYS,
+};
 pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Shard, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};

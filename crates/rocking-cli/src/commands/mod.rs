@@ -1,8 +1,9 @@
 //! One file per subcommand; each has its clap `Args` and an `execute`.
 
 pub mod check;
-pub mod merge;
+pub mod fragility;
 pub mod keys;
+pub mod merge;
 pub mod run;
 pub mod sweep;
 

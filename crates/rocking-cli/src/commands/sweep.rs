@@ -174,7 +174,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
 }
 
 /// A bar with the rate and the time left on stderr, when stderr is a terminal; hidden otherwise.
-fn progress_bar(len: usize) -> ProgressBar {
+pub(crate) fn progress_bar(len: usize) -> ProgressBar {
     if !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
@@ -186,7 +186,7 @@ fn progress_bar(len: usize) -> ProgressBar {
 }
 
 /// The process's peak resident memory (kB), from `/proc/self/status` (Linux only).
-fn peak_memory_kb() -> Option<u64> {
+pub(crate) fn peak_memory_kb() -> Option<u64> {
     let status = std::fs::read_to_string(Path::new("/proc/self/status")).ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     line.split_whitespace().nth(1)?.parse().ok()

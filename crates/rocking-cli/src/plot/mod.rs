@@ -5,7 +5,11 @@
 //! (the building's slip and the top displacement). A sweep: `sweep_max_theta`
 //! (max θ/α against the first swept key, one curve per value of the second,
 //! the paper's Figure 6) and, for two numeric keys, `sweep_map` (a heat map).
+//! A fragility study: `ida` (the response against the level, one line per
+//! record) and `fragility` (observed fractions and fitted curves).
 
+mod fragility;
+mod ida;
 mod labels;
 mod legend;
 mod raster;
@@ -18,7 +22,7 @@ mod sweep_table;
 mod theta;
 mod timeline;
 
-use rocking_scenario::Outcome;
+use rocking_scenario::{Measure, Outcome, Stripe};
 use std::path::{Path, PathBuf};
 
 /// The files `run_figures` writes.
@@ -57,6 +61,61 @@ pub fn sweep_figures(dir: &Path, title: &str, csv: &Path, axis_keys: &[String]) 
     if let Some(map) = sweep_map::MapFigure::new(title, &table) {
         files.extend(style::render(dir, "sweep_map", sweep_map::SIZE, &map)?);
     }
+    Ok(files)
+}
+
+/// One record's line of the IDA figure: `(level, value, overturned)` per case in level order.
+#[derive(Debug, Clone)]
+pub struct IdaCurve {
+    /// The record's path as `stripes.csv` names it.
+    pub record: String,
+    /// Per case: the level, the response field (`None` for a failed case), whether it overturned.
+    pub points: Vec<(f64, Option<f64>, bool)>,
+}
+
+/// What the figures of a fragility study show.
+#[derive(Debug, Clone)]
+pub struct StudyFigures {
+    /// The study's name.
+    pub title: String,
+    /// The intensity measure (the x axis).
+    pub measure: Measure,
+    /// The field of the first limit state (the y axis of the IDA figure).
+    pub ida_field: String,
+    /// Its threshold, if numeric.
+    pub ida_threshold: Option<f64>,
+    /// One line per record.
+    pub ida: Vec<IdaCurve>,
+    /// One entry per limit state.
+    pub states: Vec<StateCurve>,
+}
+
+/// A limit state's points and curve in the fragility figure.
+#[derive(Debug, Clone)]
+pub struct StateCurve {
+    /// The limit state's name.
+    pub name: String,
+    /// Its cases and exceedances per level.
+    pub stripes: Vec<Stripe>,
+    /// The fitted `(median, β)`, if a fit exists.
+    pub fit: Option<(f64, f64)>,
+}
+
+impl StudyFigures {
+    /// The label of the x axis: the measure and its unit.
+    fn measure_label(&self) -> String {
+        match self.measure {
+            Measure::Pga => "PGA (g)".into(),
+            Measure::Pgv => "PGV (m/s)".into(),
+            Measure::PgaRatio => "PGA / (g tan α) (–)".into(),
+        }
+    }
+}
+
+/// Draws the figures of a fragility study into `dir`: `ida` and `fragility` (SVG and PNG).
+pub fn study_figures(dir: &Path, figures: &StudyFigures) -> anyhow::Result<Vec<PathBuf>> {
+    let mut files = style::render(dir, "ida", ida::SIZE, &ida::IdaFigure(figures))?;
+    files.extend(style::render(dir, "fragility", fragility::SIZE, &fragility::FragilityFigure(figures))?);
     Ok(files)
 }
 

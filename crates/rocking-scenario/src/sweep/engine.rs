@@ -62,6 +62,28 @@ pub enum RunError<E> {
     Stopped(E),
 }
 
+/// Numbered cases that give one row each: a sweep's, or a fragility study's.
+pub(crate) trait Cases: Sync {
+    /// The number of cases.
+    fn len(&self) -> usize;
+    /// Runs case `index` on this thread: its row (with `error` filled if it failed).
+    fn run_case(&self, index: usize) -> Row;
+    /// The row of case `index` that failed with `message`.
+    fn failed_row(&self, index: usize, message: &str) -> Row;
+}
+
+impl Cases for Sweep {
+    fn len(&self) -> usize {
+        Sweep::len(self)
+    }
+    fn run_case(&self, index: usize) -> Row {
+        Sweep::run_case(self, index)
+    }
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        Sweep::failed_row(self, index, message)
+    }
+}
+
 impl Sweep {
     /// Runs every case on `threads` worker threads (`None`: one per core, or
     /// `RAYON_NUM_THREADS`) of a pool of its own, and calls `on_row` on the
@@ -83,9 +105,23 @@ impl Sweep {
         cases: Range<usize>,
         threads: Option<usize>,
         cancel: &AtomicBool,
-        mut on_row: impl FnMut(Row) -> Result<(), E>,
+        on_row: impl FnMut(Row) -> Result<(), E>,
     ) -> Result<Finished, RunError<E>> {
-        let end = cases.end.min(self.len());
+        run_cases(self, cases, threads, cancel, on_row)
+    }
+}
+
+/// Runs the cases `cases` of `this` (indices clipped to `0..len`) as
+/// [`Sweep::run_range`] says (which is this, for a sweep): rows in order.
+pub(crate) fn run_cases<C: Cases, E>(
+    this: &C,
+    cases: Range<usize>,
+    threads: Option<usize>,
+    cancel: &AtomicBool,
+    mut on_row: impl FnMut(Row) -> Result<(), E>,
+) -> Result<Finished, RunError<E>> {
+    {
+        let end = cases.end.min(this.len());
         let first = cases.start.min(end);
         let count = end - first;
         let workers = match threads {
@@ -130,7 +166,7 @@ impl Sweep {
                             done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
                         }
                         drop(done);
-                        if sender.send(self.guarded_case(index)).is_err() {
+                        if sender.send(guarded_case(this, index)).is_err() {
                             break;
                         }
                     }
@@ -163,7 +199,7 @@ impl Sweep {
                 if halted() {
                     break;
                 }
-                order.take(std::iter::once(self.guarded_case(index)), &mut on_row, &stop);
+                order.take(std::iter::once(guarded_case(this, index)), &mut on_row, &stop);
             }
             // The workers' last rows; the loop ends when the last worker does.
             order.take(receiver.iter(), &mut on_row, &stop);
@@ -177,21 +213,21 @@ impl Sweep {
             threads: workers,
         })
     }
+}
 
-    /// Case `index`'s row; a panic inside the case (a bug) becomes its error.
-    fn guarded_case(&self, index: usize) -> Row {
-        catch_unwind(AssertUnwindSafe(|| self.run_case(index))).unwrap_or_else(|panic| self.panicked(index, &*panic))
-    }
+/// Case `index`'s row; a panic inside the case (a bug) becomes its error.
+fn guarded_case<C: Cases>(cases: &C, index: usize) -> Row {
+    catch_unwind(AssertUnwindSafe(|| cases.run_case(index))).unwrap_or_else(|panic| panicked(cases, index, &*panic))
+}
 
-    /// The row of a case whose run panicked.
-    fn panicked(&self, index: usize, panic: &(dyn std::any::Any + Send)) -> Row {
-        let message = panic
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_string())
-            .or_else(|| panic.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unknown panic".into());
-        self.failed_row(index, &format!("internal error (please report it): {message}"))
-    }
+/// The row of a case whose run panicked.
+fn panicked<C: Cases>(cases: &C, index: usize, panic: &(dyn std::any::Any + Send)) -> Row {
+    let message = panic
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into());
+    cases.failed_row(index, &format!("internal error (please report it): {message}"))
 }
 
 /// Rows put back in case order and passed on as soon as every earlier one has been.

@@ -14,6 +14,7 @@ mod shard;
 mod tests;
 
 pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
+pub(crate) use engine::{run_cases, Cases};
 pub use engine::{Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 pub use shard::Shard;
@@ -366,7 +367,7 @@ fn flatten_axes(table: &Table, prefix: &str, out: &mut Vec<(String, AxisSpec)>) 
 }
 
 /// `text` on one line (a row of `sweep.csv` holds a one-line message).
-fn one_line(text: &str) -> String {
+pub(crate) fn one_line(text: &str) -> String {
     text.split(['\n', '\r']).map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 
@@ -374,7 +375,13 @@ fn one_line(text: &str) -> String {
 /// those of [`summary_fields`]): the keys
 /// do not depend on the outcome (absent quantities are `null`), so those of a
 /// trivial run (a building at rest for a millisecond) are those of every case.
-fn summary_keys() -> Result<Vec<String>, Fault> {
+pub(crate) fn summary_keys() -> Result<Vec<String>, Fault> {
+    Ok(summary_template()?.into_iter().map(|(k, _)| k).collect())
+}
+
+/// The summary fields of a trivial run (see [`summary_keys`]): their names,
+/// and cells that tell text and boolean fields from numeric ones.
+pub(crate) fn summary_template() -> Result<Vec<(String, Cell)>, Fault> {
     use rocking::{simulate, Building, GroundMotion, Initial, Model, NormalForce, Settings};
     let model = Model::new(None, Some(Building::new(1.0, 0.5, 0.5, NormalForce::Constant)?), crate::DEFAULT_G)?;
     let settings = Settings {
@@ -389,5 +396,5 @@ fn summary_keys() -> Result<Vec<String>, Fault> {
         history: None,
         events: Vec::new(),
     };
-    Ok(summary_fields(&outcome).into_iter().map(|(k, _)| k).collect())
+    Ok(summary_fields(&outcome))
 }

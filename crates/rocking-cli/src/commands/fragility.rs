@@ -1,0 +1,200 @@
+//! `rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]`: a
+//! fragility study (interface.md, "Fragility studies"). The study and its
+//! cases are `rocking_scenario::Study`, run on the sweep's engine; this file
+//! writes `stripes.csv` row by row (with a progress bar and a clean stop on
+//! Ctrl-C), then `fragility.csv` and `fractions.csv` from the exceedances
+//! counted on the way, and with `--plot` the figures `ida` and `fragility`.
+
+use super::sweep::{peak_memory_kb, progress_bar, Interrupted};
+use crate::format::sig;
+use crate::output;
+use crate::plot::{IdaCurve, StateCurve, StudyFigures};
+use anyhow::Context;
+use rocking_scenario::{Cell, RunError, Study, Threshold};
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+/// One row per case.
+pub const STRIPES_CSV: &str = "stripes.csv";
+/// One row per limit state: the fitted fragility.
+pub const FRAGILITY_CSV: &str = "fragility.csv";
+/// One row per limit state and level: the observed fraction.
+pub const FRACTIONS_CSV: &str = "fractions.csv";
+
+/// Set by the first Ctrl-C: no new case starts.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// Arguments of `rocking fragility`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The study file: a scenario without [ground] plus a [study] table (records, measure, levels, limit states).
+    pub study: PathBuf,
+    /// Output folder, created if needed [default: out/<study file stem>].
+    /// stripes.csv, fragility.csv and fractions.csv there are overwritten; an input file never is.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Also draw the response against the level per record (ida) and the fragility curves (fragility).
+    #[arg(long)]
+    pub plot: bool,
+    /// Worker threads [default: one per core].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub threads: Option<u32>,
+    /// Also print the threads used, the time per case and the peak memory.
+    #[arg(long, short)]
+    pub verbose: bool,
+}
+
+/// Runs the study and writes its files.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(&args.study).with_context(|| format!("cannot read {}", args.study.display()))?;
+    // The study's errors already name the file, the key and the cause.
+    let study = Study::from_toml_str(&text, &args.study)?;
+    let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.study));
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+    let stripes_path = dir.join(STRIPES_CSV);
+    let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV].iter().map(|f| dir.join(f)).collect();
+    if args.plot {
+        outputs.extend(["ida.svg", "ida.png", "fragility.svg", "fragility.png"].iter().map(|f| dir.join(f)));
+    }
+    let mut inputs = vec![args.study.clone()];
+    inputs.extend(study.inputs());
+    output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
+
+    let file = File::create(&stripes_path).with_context(|| format!("cannot write {}", stripes_path.display()))?;
+    let mut csv = BufWriter::new(file);
+    writeln!(csv, "{}", study.csv_header()).with_context(|| format!("cannot write {}", stripes_path.display()))?;
+
+    let _ = ctrlc::set_handler(|| {
+        if INTERRUPTED.swap(true, Ordering::SeqCst) {
+            eprintln!("interrupted twice: stopping now; the last row of stripes.csv may be incomplete");
+            std::process::exit(130);
+        }
+    });
+    let mut tally = study.tally();
+    // The response of the first limit state's field per case, for the IDA figure (one number per case).
+    let header = study.header();
+    let first = study.limit_states().first();
+    let ida_field = first.map_or("max_theta_over_alpha", |s| s.field.as_str()).to_string();
+    let ida_column = header.iter().position(|h| *h == ida_field);
+    let overturned_column = header.iter().position(|h| h == "overturned");
+    let mut ida: Vec<IdaCurve> = study
+        .records()
+        .iter()
+        .map(|r| IdaCurve {
+            record: r.path.clone(),
+            points: Vec::with_capacity(study.levels().len()),
+        })
+        .collect();
+
+    let progress = progress_bar(study.len());
+    let start = Instant::now();
+    let levels = study.levels().len();
+    let result = study.run(args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
+        writeln!(csv, "{}", row.to_csv_line())?;
+        tally.add(&row);
+        let cell = |c: Option<usize>| c.and_then(|c| row.cells.get(c));
+        let value = match cell(ida_column) {
+            Some(Cell::Bool(b)) => Some(f64::from(u8::from(*b))),
+            Some(c) => c.as_f64(),
+            None => None,
+        };
+        let overturned = matches!(cell(overturned_column), Some(Cell::Bool(true)));
+        // Only for the figure: one point per case.
+        if let Some(curve) = ida.get_mut(row.index / levels).filter(|_| args.plot) {
+            curve.points.push((study.levels()[row.index % levels], value, overturned));
+        }
+        progress.inc(1);
+        Ok::<(), std::io::Error>(())
+    });
+    progress.finish_and_clear();
+    let flushed = csv.flush();
+    let done = match result {
+        Ok(done) => done,
+        Err(RunError::Stopped(e)) => return Err(e).with_context(|| format!("cannot write {}", stripes_path.display())),
+        Err(e) => return Err(e.into()),
+    };
+    flushed.with_context(|| format!("cannot write {}", stripes_path.display()))?;
+    let wall = start.elapsed().as_secs_f64();
+    if done.cancelled {
+        return Err(Interrupted {
+            written: done.written,
+            total: study.len(),
+            csv: stripes_path,
+        }
+        .into());
+    }
+    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv()), (FRACTIONS_CSV, tally.fractions_csv())] {
+        let path = dir.join(name);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+
+    let fits = tally.fits();
+    let mut lines = vec![format!(
+        "{}: {} records × {} levels = {} cases in {} s{}",
+        study.name(),
+        study.records().len(),
+        levels,
+        done.written,
+        sig(wall, 3),
+        match done.failed {
+            0 => String::new(),
+            n => format!(", {n} failed (see the error column)"),
+        }
+    )];
+    let unit = study.measure().unit();
+    for (state, fit) in study.limit_states().iter().zip(&fits) {
+        lines.push(match (fit.median, fit.beta) {
+            (Some(m), Some(b)) => format!(
+                "  {}: median {} {}{}, beta {} ({} of {} cases exceeded)",
+                state.name,
+                study.measure().as_str(),
+                sig(m, 4),
+                if unit.is_empty() { String::new() } else { format!(" {unit}") },
+                sig(b, 3),
+                fit.exceeded,
+                fit.cases
+            ),
+            _ => format!("  {}: {}", state.name, fit.method),
+        });
+    }
+    if args.verbose {
+        lines.push(format!(
+            "  {} threads, {} ms per case ({} ms of one thread's time)",
+            done.threads,
+            sig(1e3 * wall / done.written.max(1) as f64, 3),
+            sig(1e3 * wall * done.threads as f64 / done.written.max(1) as f64, 3)
+        ));
+        if let Some(kb) = peak_memory_kb() {
+            lines.push(format!("  peak memory (VmHWM) {} MB", sig(kb as f64 / 1024.0, 3)));
+        }
+    }
+    lines.push(format!("wrote {STRIPES_CSV}, {FRAGILITY_CSV}, {FRACTIONS_CSV} in {}", dir.display()));
+    super::print(&(lines.join("\n") + "\n"))?;
+    if args.plot {
+        let figures = StudyFigures {
+            title: study.name().to_string(),
+            measure: study.measure(),
+            ida_field,
+            ida_threshold: first.and_then(|s| match s.threshold {
+                Threshold::Above(x) => Some(x),
+                Threshold::True => None,
+            }),
+            ida,
+            states: study
+                .limit_states()
+                .iter()
+                .enumerate()
+                .map(|(i, s)| StateCurve {
+                    name: s.name.clone(),
+                    stripes: tally.stripes(i),
+                    fit: fits[i].median.zip(fits[i].beta),
+                })
+                .collect(),
+        };
+        crate::plot::study_figures(&dir, &figures).context("drawing the figures")?;
+    }
+    Ok(())
+}

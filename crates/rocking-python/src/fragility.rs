@@ -1,0 +1,97 @@
+//! `rocking.fragility`: a fragility study on all cores with the GIL released:
+//! the stripes as NumPy columns in case order, the fitted fragility per limit
+//! state and the observed fractions.
+
+use crate::convert::table_of;
+use crate::error::scenario_error;
+use crate::sweep::{column, thread_count, SIGNAL_CHECK};
+use numpy::PyArray1;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use rocking_scenario::{Cell, RunError, Study};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::time::Instant;
+
+/// Runs a study given as the path of a study file or as a dict with its keys
+/// (relative record patterns then resolve against the current directory).
+/// Returns `{"stripes": {column: array}, "fragility": {column: array},
+/// "fractions": {column: array}}`.
+#[pyfunction]
+#[pyo3(signature = (study, threads=None))]
+pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
+    let threads = thread_count(threads)?;
+    let study = if let Ok(path) = study.extract::<PathBuf>() {
+        let text = std::fs::read_to_string(&path).map_err(|e| crate::scenario::os_error(&e, &path))?;
+        py.detach(|| Study::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
+    } else {
+        let table = table_of(study, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
+        py.detach(|| Study::from_table(table, Path::new("<dict>"))).map_err(|e| scenario_error(&e))?
+    };
+
+    let header = study.header();
+    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(study.len())).collect();
+    let mut tally = study.tally();
+    let cancel = AtomicBool::new(false);
+    let mut last_check = Instant::now();
+    let finished = py.detach(|| {
+        study.run(threads, &cancel, |row| {
+            tally.add(&row);
+            for (column, cell) in columns.iter_mut().zip(row.cells) {
+                column.push(cell);
+            }
+            if last_check.elapsed() < SIGNAL_CHECK {
+                return Ok(());
+            }
+            last_check = Instant::now();
+            // Ctrl-C: the handler raises KeyboardInterrupt here, and the study stops.
+            Python::attach(|py| py.check_signals())
+        })
+    });
+    match finished {
+        Ok(_) => {}
+        Err(RunError::Stopped(e)) => return Err(e),
+        Err(e) => return Err(PyRuntimeError::new_err(format!("{}: {e}", study.origin().display()))),
+    }
+    let stripes = PyDict::new(py);
+    for (name, cells) in header.iter().zip(columns) {
+        stripes.set_item(name, column(py, name, cells)?)?;
+    }
+
+    let states = study.limit_states();
+    let fits = tally.fits();
+    let text = |py: Python<'py>, items: Vec<String>| -> Bound<'py, PyAny> {
+        let objects: Vec<Py<PyAny>> = items.iter().map(|s| PyString::new(py, s).into_any().unbind()).collect();
+        PyArray1::from_vec(py, objects).into_any()
+    };
+    let floats = |py: Python<'py>, items: Vec<f64>| PyArray1::<f64>::from_vec(py, items).into_any();
+    let fragility = PyDict::new(py);
+    fragility.set_item("limit_state", text(py, states.iter().map(|s| s.name.clone()).collect()))?;
+    fragility.set_item("median", floats(py, fits.iter().map(|f| f.median.unwrap_or(f64::NAN)).collect()))?;
+    fragility.set_item("beta", floats(py, fits.iter().map(|f| f.beta.unwrap_or(f64::NAN)).collect()))?;
+    fragility.set_item("cases", PyArray1::<i64>::from_vec(py, fits.iter().map(|f| f.cases as i64).collect()))?;
+    fragility.set_item("exceeded", PyArray1::<i64>::from_vec(py, fits.iter().map(|f| f.exceeded as i64).collect()))?;
+    fragility.set_item("method", text(py, fits.iter().map(|f| f.method.clone()).collect()))?;
+
+    let (mut names, mut levels, mut cases, mut exceeded) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (i, state) in states.iter().enumerate() {
+        for s in tally.stripes(i) {
+            names.push(state.name.clone());
+            levels.push(s.level);
+            cases.push(s.cases as i64);
+            exceeded.push(s.exceeded as i64);
+        }
+    }
+    let fractions = PyDict::new(py);
+    fractions.set_item("limit_state", text(py, names))?;
+    fractions.set_item("level", floats(py, levels))?;
+    fractions.set_item("cases", PyArray1::<i64>::from_vec(py, cases))?;
+    fractions.set_item("exceeded", PyArray1::<i64>::from_vec(py, exceeded))?;
+
+    let out = PyDict::new(py);
+    out.set_item("stripes", stripes)?;
+    out.set_item("fragility", fragility)?;
+    out.set_item("fractions", fractions)?;
+    Ok(out)
+}

@@ -1,0 +1,599 @@
+//! Fragility studies (interface.md, "Fragility studies"): a scenario without
+//! `[ground]` plus a `[study]` table naming a suite of records (glob
+//! patterns), an intensity measure and its levels, and limit states. Every
+//! (record, level) is one case: the record scaled so that its measure equals
+//! the level, run on the sweep's engine (all cores, rows in order, flat
+//! memory, cancellation, a failing case fills `error`).
+//!
+//! The outputs' columns are in one place here: [`Study::header`] for
+//! `stripes.csv`, [`FRAGILITY_HEADER`] and [`FRACTIONS_HEADER`]; a
+//! [`Tally`] counts the exceedances as the rows stream by.
+
+mod fit;
+mod limit;
+mod measure;
+
+pub use fit::{fit, log_likelihood, probability, Fit, Stripe, METHOD};
+pub use limit::{LimitState, Tally, Threshold, FRACTIONS_HEADER, FRAGILITY_HEADER};
+pub use measure::{pga, pgv, Measure};
+
+use crate::error::{closest, ErrorKind, Fault};
+use crate::ground::RecordCache;
+use crate::read::{as_number, with_article};
+use crate::sweep::{one_line, run_cases, summary_template, Cases};
+use crate::{summary_fields, Cell, Error, Finished, Row, RunError, RunOptions, Scenario, ERROR_COLUMN};
+use rocking::{GroundMotion, Record, RecordFormat};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use toml::{Table, Value};
+
+/// The keys of `[study]`.
+pub const STUDY_KEYS: &[&str] = &["records", "format", "units", "dt", "measure", "levels", "free_after", "limit_state"];
+/// Seconds simulated after the end of each record when `free_after` is not given.
+pub const DEFAULT_FREE_AFTER: f64 = 10.0;
+/// The first columns of `stripes.csv`, before the summary's fields.
+pub const CASE_COLUMNS: [&str; 3] = ["record", "level", "scale"];
+
+/// One record of a study: its path and its measure unscaled.
+#[derive(Debug, Clone)]
+pub struct StudyRecord {
+    /// The path as the glob gave it, relative to the study file (`/` separated).
+    pub path: String,
+    /// The record's intensity measure at scale 1 (units of the measure, > 0).
+    pub measure: f64,
+    /// The time of its last sample (s).
+    pub duration: f64,
+    /// The `[ground]` table of its cases, without `scale`.
+    ground: Table,
+}
+
+/// A validated fragility study.
+#[derive(Debug, Clone)]
+pub struct Study {
+    origin: PathBuf,
+    name: String,
+    base: Table,
+    records: Vec<StudyRecord>,
+    measure: Measure,
+    levels: Vec<f64>,
+    free_after: f64,
+    limit_states: Vec<LimitState>,
+    summary_keys: Vec<String>,
+    cache: RecordCache,
+}
+
+impl Study {
+    /// Parses and validates the TOML text of a study file; reads every record
+    /// once for its measure. `origin` names the file in errors and is the
+    /// folder of the glob patterns.
+    pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
+        Self::from_table(crate::parse_toml(text, origin)?, origin)
+    }
+
+    /// A study from a JSON object with the structure of the TOML file (as a Python dict gives it).
+    pub fn from_json(value: serde_json::Value, origin: &Path) -> Result<Self, Error> {
+        let table = crate::json::to_table(value).map_err(|f| f.in_file(origin))?;
+        Self::from_table(table, origin)
+    }
+
+    /// A study from a table holding a scenario (without `[ground]` and
+    /// `simulation.duration`) and its `[study]` table.
+    pub fn from_table(mut table: Table, origin: &Path) -> Result<Self, Error> {
+        let fail = |f: Fault| f.in_file(origin);
+        let study = match table.remove("study") {
+            Some(Value::Table(t)) => t,
+            Some(other) => {
+                return Err(fail(Fault::new(
+                    "study",
+                    ErrorKind::WrongType {
+                        expected: "a table (a [study] section)",
+                        got: with_article(&other),
+                    },
+                )))
+            }
+            None => {
+                return Err(fail(Fault::new(
+                    "study",
+                    ErrorKind::Missing("missing section [study]: give records, measure, levels and limit states".into()),
+                )))
+            }
+        };
+        if table.contains_key("ground") {
+            return Err(fail(Fault::new(
+                "ground",
+                ErrorKind::NotApplicable("a study takes its ground motions from study.records: remove [ground]".into()),
+            )));
+        }
+        let simulation = match table.get("simulation") {
+            Some(Value::Table(t)) => Some(t),
+            _ => None,
+        };
+        if simulation.is_some_and(|s| s.contains_key("duration")) {
+            return Err(fail(Fault::new(
+                "simulation.duration",
+                ErrorKind::NotApplicable("a study's case lasts its record plus study.free_after: remove simulation.duration".into()),
+            )));
+        }
+        if let Some(k) = study.keys().find(|k| !STUDY_KEYS.contains(&k.as_str())) {
+            return Err(fail(Fault::new(
+                format!("study.{k}"),
+                ErrorKind::UnknownKey {
+                    suggestion: closest(k, STUDY_KEYS),
+                    valid: STUDY_KEYS.to_vec(),
+                },
+            )));
+        }
+        let template = summary_template().map_err(fail)?;
+        let measure = parse_measure(&study).map_err(fail)?;
+        let levels = parse_levels(&study).map_err(fail)?;
+        let free_after = match study.get("free_after") {
+            None => DEFAULT_FREE_AFTER,
+            Some(v) => match as_number(v) {
+                Some(x) if x.is_finite() && x >= 0.0 => x,
+                Some(x) => return Err(fail(Fault::invalid("study.free_after", format!("must be a finite number >= 0 (s), got {x}")))),
+                None => {
+                    return Err(fail(Fault::new(
+                        "study.free_after",
+                        ErrorKind::WrongType {
+                            expected: "a number (s)",
+                            got: with_article(v),
+                        },
+                    )))
+                }
+            },
+        };
+        let limit_states = limit::parse(study.get("limit_state"), &template).map_err(fail)?;
+        let ground_keys = ground_keys(&study).map_err(fail)?;
+        let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
+        let paths = glob_records(study.get("records"), &folder).map_err(fail)?;
+        let name = match table.get("name") {
+            Some(Value::String(s)) => s.clone(),
+            _ => origin.file_stem().map_or_else(|| "study".to_string(), |s| s.to_string_lossy().into_owned()),
+        };
+        let mut this = Self {
+            origin: origin.to_path_buf(),
+            name,
+            base: table,
+            records: Vec::with_capacity(paths.len()),
+            measure,
+            levels,
+            free_after,
+            limit_states,
+            summary_keys: template.into_iter().map(|(k, _)| k).collect(),
+            cache: RecordCache::default(),
+        };
+        for path in paths {
+            let record = this.read_record(path, &ground_keys, &folder)?;
+            this.records.push(record);
+        }
+        Ok(this)
+    }
+
+    /// Reads one record: its format (for the CSV-only keys), motion and measure.
+    fn read_record(&self, path: String, keys: &GroundKeys, folder: &Path) -> Result<StudyRecord, Error> {
+        let file = folder.join(&path);
+        let format = match keys.format {
+            Some(f) => f,
+            None => {
+                let text = std::fs::read_to_string(&file).map_err(|e| {
+                    Fault::new(
+                        "study.records",
+                        ErrorKind::Read {
+                            path: file.clone(),
+                            reason: crate::error::io_reason(&e),
+                        },
+                    )
+                    .in_file(&self.origin)
+                })?;
+                Record::guess_format(&text)
+                    .map_err(|source| Fault::new("study.records", ErrorKind::Record { path: file.clone(), source }).in_file(&self.origin))?
+            }
+        };
+        let mut ground = Table::new();
+        ground.insert("type".into(), Value::String("record".into()));
+        ground.insert("file".into(), Value::String(path.clone()));
+        if let Some(name) = &keys.format_name {
+            ground.insert("format".into(), Value::String(name.clone()));
+        }
+        if format == RecordFormat::Csv {
+            for (k, v) in &keys.csv {
+                ground.insert(k.clone(), v.clone());
+            }
+        }
+        let table = self.table_with(&ground, 1.0, 0.0);
+        let case = Scenario::from_table(table, &self.origin)
+            .and_then(|s| s.build_with(Some(&self.cache)))
+            .map_err(study_error)?;
+        let GroundMotion::Record(record) = &case.ground else {
+            return Err(Fault::invalid("study.records", format!("{path} is not a record")).in_file(&self.origin));
+        };
+        let tan_alpha = case.model.derived().alpha.map(f64::tan);
+        if self.measure == Measure::PgaRatio && tan_alpha.is_none() {
+            return Err(Fault::new(
+                "study.measure",
+                ErrorKind::NotApplicable("\"pga_ratio\" is PGA / (g tan α) of the tower: it needs a [tower]".into()),
+            )
+            .in_file(&self.origin));
+        }
+        let measure = self.measure.of(record, case.model.gravity(), tan_alpha);
+        if !(measure.is_finite() && measure > 0.0) {
+            return Err(Fault::invalid(
+                "study.records",
+                format!(
+                    "{}: its {} is {measure}: a record must have a measure > 0 to be scaled to a level",
+                    file.display(),
+                    self.measure.as_str()
+                ),
+            )
+            .in_file(&self.origin));
+        }
+        Ok(StudyRecord {
+            path,
+            measure,
+            duration: record.duration(),
+            ground,
+        })
+    }
+
+    /// The base scenario with `ground` (scaled by `scale`) and a duration of the record's plus `free_after`.
+    fn table_with(&self, ground: &Table, scale: f64, duration: f64) -> Table {
+        let mut table = self.base.clone();
+        let mut ground = ground.clone();
+        ground.insert("scale".into(), Value::Float(scale));
+        table.insert("ground".into(), Value::Table(ground));
+        if duration > 0.0 {
+            let simulation = table.entry("simulation").or_insert_with(|| Value::Table(Table::new()));
+            if let Value::Table(s) = simulation {
+                s.insert("duration".into(), Value::Float(duration));
+            }
+        }
+        table
+    }
+
+    /// The number of cases: records × levels.
+    pub fn len(&self) -> usize {
+        self.records.len() * self.levels.len()
+    }
+    /// Never true: a study has at least one record and one level.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    /// The base scenario's `name` (default: the file stem).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// The study file (or origin).
+    pub fn origin(&self) -> &Path {
+        &self.origin
+    }
+    /// The records, in case order.
+    pub fn records(&self) -> &[StudyRecord] {
+        &self.records
+    }
+    /// The record files (resolved), for `--out` checks.
+    pub fn inputs(&self) -> Vec<PathBuf> {
+        let folder = self.origin.parent().unwrap_or(Path::new(""));
+        self.records.iter().map(|r| folder.join(&r.path)).collect()
+    }
+    /// The intensity measure.
+    pub fn measure(&self) -> Measure {
+        self.measure
+    }
+    /// The levels, in case order.
+    pub fn levels(&self) -> &[f64] {
+        &self.levels
+    }
+    /// Seconds simulated after each record.
+    pub fn free_after(&self) -> f64 {
+        self.free_after
+    }
+    /// The limit states, in file order.
+    pub fn limit_states(&self) -> &[LimitState] {
+        &self.limit_states
+    }
+
+    /// The columns of `stripes.csv`: `record`, `level`, `scale`, the scalar
+    /// fields of `summary.json` as in `sweep.csv`, then `error`.
+    pub fn header(&self) -> Vec<String> {
+        let mut h: Vec<String> = CASE_COLUMNS.iter().map(|s| s.to_string()).collect();
+        h.extend(self.summary_keys.iter().cloned());
+        h.push(ERROR_COLUMN.to_string());
+        h
+    }
+
+    /// The header as one line of CSV.
+    pub fn csv_header(&self) -> String {
+        crate::csv_line(self.header().iter().map(String::as_str))
+    }
+
+    /// The record and level of case `index` (records vary slowest), `None` past the end.
+    pub fn case(&self, index: usize) -> Option<(&StudyRecord, f64)> {
+        let n = self.levels.len();
+        let record = self.records.get(index / n.max(1))?;
+        Some((record, self.levels[index % n]))
+    }
+
+    /// The scale of case `index`: its level over its record's measure.
+    pub fn scale(&self, index: usize) -> Option<f64> {
+        self.case(index).map(|(r, level)| level / r.measure)
+    }
+
+    /// The scenario table of case `index`: the base, `[ground]` the record
+    /// with its `scale`, `simulation.duration` the record's plus `free_after`.
+    pub fn case_table(&self, index: usize) -> Option<Table> {
+        let (record, level) = self.case(index)?;
+        Some(self.table_with(&record.ground, level / record.measure, record.duration + self.free_after))
+    }
+
+    /// Runs case `index` on this thread: its row (with `error` filled if it failed).
+    pub fn run_case(&self, index: usize) -> Row {
+        let Some(table) = self.case_table(index) else {
+            return self.failed_row(index, "no such case");
+        };
+        let outcome = Scenario::from_table(table, &self.origin)
+            .and_then(|s| s.build_with(Some(&self.cache)))
+            .and_then(|case| case.run(RunOptions::SUMMARY));
+        match outcome {
+            Ok(outcome) => {
+                let mut cells = self.case_cells(index);
+                cells.extend(summary_fields(&outcome).into_iter().map(|(_, cell)| cell));
+                cells.push(Cell::Empty);
+                Row { index, cells }
+            }
+            Err(e) => self.failed_row(index, &e.fault.to_string()),
+        }
+    }
+
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        let mut cells = self.case_cells(index);
+        cells.extend(std::iter::repeat_n(Cell::Empty, self.summary_keys.len()));
+        cells.push(Cell::Text(one_line(message)));
+        Row { index, cells }
+    }
+
+    fn case_cells(&self, index: usize) -> Vec<Cell> {
+        let mut cells = Vec::with_capacity(CASE_COLUMNS.len() + self.summary_keys.len() + 1);
+        match self.case(index) {
+            Some((record, level)) => {
+                cells.push(Cell::Text(record.path.clone()));
+                cells.push(Cell::Float(level));
+                cells.push(Cell::Float(level / record.measure));
+            }
+            None => cells.extend([Cell::Empty, Cell::Empty, Cell::Empty]),
+        }
+        cells
+    }
+
+    /// Runs every case as [`crate::Sweep::run`] does: `on_row` gets the rows
+    /// in case order on the calling thread.
+    pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
+        run_cases(self, 0..self.len(), threads, cancel, on_row)
+    }
+
+    /// A tally of exceedances for this study's limit states and levels.
+    pub fn tally(&self) -> Tally {
+        Tally::new(&self.limit_states, &self.levels, &self.header())
+    }
+}
+
+impl Cases for Study {
+    fn len(&self) -> usize {
+        Study::len(self)
+    }
+    fn run_case(&self, index: usize) -> Row {
+        Study::run_case(self, index)
+    }
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        Study::failed_row(self, index, message)
+    }
+}
+
+/// An error of building a study's case, its `ground.*` key named as the `study.*` key the user wrote.
+fn study_error(mut e: Error) -> Error {
+    let renamed = match e.fault.key.as_deref() {
+        Some("ground.file") | Some("ground.scale") => Some("study.records"),
+        Some("ground.format") => Some("study.format"),
+        Some("ground.units") => Some("study.units"),
+        Some("ground.dt") => Some("study.dt"),
+        Some("simulation.duration") => Some("study.free_after"),
+        _ => None,
+    };
+    if let Some(key) = renamed {
+        e.fault.key = Some(key.to_string());
+    }
+    e
+}
+
+/// `format`, `units` and `dt` of `[study]`, applied to each record's `[ground]`.
+struct GroundKeys {
+    format: Option<RecordFormat>,
+    format_name: Option<String>,
+    /// `units` and `dt`, for CSV files only.
+    csv: Vec<(String, Value)>,
+}
+
+fn ground_keys(study: &Table) -> Result<GroundKeys, Fault> {
+    let (format, format_name) = match study.get("format") {
+        None => (None, None),
+        Some(Value::String(s)) => {
+            let f = match s.as_str() {
+                "at2" => RecordFormat::At2,
+                "esm" => RecordFormat::Esm,
+                "csv" => RecordFormat::Csv,
+                other => {
+                    return Err(Fault::invalid(
+                        "study.format",
+                        format!("must be one of \"at2\", \"esm\", \"csv\", got \"{other}\""),
+                    ))
+                }
+            };
+            (Some(f), Some(s.clone()))
+        }
+        Some(other) => {
+            return Err(Fault::new(
+                "study.format",
+                ErrorKind::WrongType {
+                    expected: "a string (\"at2\", \"esm\" or \"csv\")",
+                    got: with_article(other),
+                },
+            ))
+        }
+    };
+    let csv = ["units", "dt"]
+        .iter()
+        .filter_map(|k| study.get(*k).map(|v| (k.to_string(), v.clone())))
+        .collect();
+    Ok(GroundKeys { format, format_name, csv })
+}
+
+fn parse_measure(study: &Table) -> Result<Measure, Fault> {
+    let names: Vec<&'static str> = Measure::ALL.iter().map(|(n, _)| *n).collect();
+    match study.get("measure") {
+        None => Err(Fault::new(
+            "study.measure",
+            ErrorKind::Missing("required: the intensity measure, \"pga\" (g), \"pgv\" (m/s) or \"pga_ratio\"".into()),
+        )),
+        Some(Value::String(s)) => Measure::ALL.iter().find(|(n, _)| n == s).map(|(_, m)| *m).ok_or_else(|| {
+            Fault::invalid(
+                "study.measure",
+                format!(
+                    "must be one of \"pga\", \"pgv\", \"pga_ratio\", got \"{s}\"{}",
+                    closest(s, &names).map_or(String::new(), |c| format!(" (did you mean \"{c}\"?)"))
+                ),
+            )
+        }),
+        Some(other) => Err(Fault::new(
+            "study.measure",
+            ErrorKind::WrongType {
+                expected: "a string (\"pga\", \"pgv\" or \"pga_ratio\")",
+                got: with_article(other),
+            },
+        )),
+    }
+}
+
+/// `levels`: a list of numbers > 0, or `{ from, to, steps }` / `{ from, to, step }`
+/// expanded as a sweep's range is.
+fn parse_levels(study: &Table) -> Result<Vec<f64>, Fault> {
+    let key = "study.levels";
+    let value = study
+        .get("levels")
+        .ok_or_else(|| Fault::new(key, ErrorKind::Missing("required: a list of levels or a range { from, to, steps }".into())))?;
+    let levels = match value {
+        Value::Array(items) => {
+            if items.is_empty() {
+                return Err(Fault::invalid(key, "the list of levels is empty: give at least one"));
+            }
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| {
+                    as_number(v).ok_or_else(|| {
+                        Fault::new(
+                            format!("{key}[{i}]"),
+                            ErrorKind::WrongType {
+                                expected: "a number",
+                                got: with_article(v),
+                            },
+                        )
+                    })
+                })
+                .collect::<Result<Vec<f64>, Fault>>()?
+        }
+        Value::Table(_) => {
+            // A range reads and expands as a sweep axis does; its errors name the study's key.
+            let axis = crate::AxisSpec::from_toml("ground.amplitude", value)
+                .and_then(|spec| spec.expand("ground.amplitude"))
+                .map_err(|mut f| {
+                    f.key = f.key.map(|k| k.replace("sweep.\"ground.amplitude\"", key));
+                    f
+                })?;
+            axis.values().iter().filter_map(as_number).collect()
+        }
+        other => {
+            return Err(Fault::new(
+                key,
+                ErrorKind::WrongType {
+                    expected: "a list of levels or a range { from, to, steps } / { from, to, step }",
+                    got: with_article(other),
+                },
+            ))
+        }
+    };
+    if let Some((i, x)) = levels.iter().enumerate().find(|(_, x)| !(x.is_finite() && **x > 0.0)) {
+        return Err(Fault::invalid(format!("{key}[{i}]"), format!("must be a finite number > 0, got {x}")));
+    }
+    Ok(levels)
+}
+
+/// The record files of `records` (glob patterns relative to `folder`), each
+/// pattern's matches sorted, a file matched twice kept once; paths relative to `folder`.
+fn glob_records(value: Option<&Value>, folder: &Path) -> Result<Vec<String>, Fault> {
+    let key = "study.records";
+    let patterns: Vec<&str> = match value {
+        None => {
+            return Err(Fault::new(
+                key,
+                ErrorKind::Missing("required: glob patterns of the record files, e.g. [\"records/*.AT2\"]".into()),
+            ))
+        }
+        Some(Value::String(s)) => vec![s.as_str()],
+        Some(Value::Array(items)) => items
+            .iter()
+            .enumerate()
+            .map(|(i, v)| match v {
+                Value::String(s) => Ok(s.as_str()),
+                other => Err(Fault::new(
+                    format!("{key}[{i}]"),
+                    ErrorKind::WrongType {
+                        expected: "a string (a glob pattern)",
+                        got: with_article(other),
+                    },
+                )),
+            })
+            .collect::<Result<_, _>>()?,
+        Some(other) => {
+            return Err(Fault::new(
+                key,
+                ErrorKind::WrongType {
+                    expected: "a list of glob patterns",
+                    got: with_article(other),
+                },
+            ))
+        }
+    };
+    let escaped = glob::Pattern::escape(&folder.to_string_lossy());
+    let mut paths: Vec<String> = Vec::new();
+    for (i, pattern) in patterns.iter().enumerate() {
+        let full = if folder.as_os_str().is_empty() || Path::new(pattern).is_absolute() {
+            pattern.to_string()
+        } else {
+            format!("{escaped}/{pattern}")
+        };
+        let matches = glob::glob(&full).map_err(|e| Fault::invalid(format!("{key}[{i}]"), format!("\"{pattern}\" is not a glob pattern: {e}")))?;
+        let mut found: Vec<String> = matches
+            .filter_map(Result::ok)
+            .filter(|p| p.is_file())
+            .map(|p| {
+                let relative = p.strip_prefix(folder).map(Path::to_path_buf).unwrap_or(p);
+                relative.to_string_lossy().replace('\\', "/")
+            })
+            .collect();
+        found.sort();
+        for path in found {
+            if !paths.contains(&path) {
+                paths.push(path);
+            }
+        }
+    }
+    if paths.is_empty() {
+        return Err(Fault::invalid(
+            key,
+            format!(
+                "no file matches {} (patterns are relative to the study file)",
+                patterns.iter().map(|p| format!("\"{p}\"")).collect::<Vec<_>>().join(", ")
+            ),
+        ));
+    }
+    Ok(paths)
+}
