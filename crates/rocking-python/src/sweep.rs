@@ -14,6 +14,9 @@ use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 use toml::Value;
 
+/// The most worker threads, as `rocking sweep --threads` takes.
+const MAX_THREADS: usize = 4096;
+
 /// How often the sweep looks for Ctrl-C (KeyboardInterrupt) while it runs.
 const SIGNAL_CHECK: Duration = Duration::from_millis(100);
 
@@ -39,7 +42,7 @@ pub fn sweep_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>, axes: 
 #[pyo3(signature = (path, threads=None))]
 pub fn sweep_file_raw(py: Python<'_>, path: PathBuf, threads: Option<i64>) -> PyResult<Bound<'_, PyDict>> {
     let threads = thread_count(threads)?;
-    let text = std::fs::read_to_string(&path).map_err(|e| crate::scenario::os_error(&e, &path))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
     let sweep = py.detach(|| Sweep::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?;
     run_sweep(py, &sweep, threads)
 }
@@ -48,8 +51,9 @@ fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
     match threads {
         None => Ok(None),
         Some(n) => match usize::try_from(n) {
-            Ok(n) if n >= 1 => Ok(Some(n)),
-            _ => Err(PyValueError::new_err(format!("threads must be None or an integer >= 1, got {n}"))),
+            // The command's limit (`--threads` takes 1..=4096).
+            Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(Some(n)),
+            _ => Err(PyValueError::new_err(format!("threads: {n} is not in 1..={MAX_THREADS}"))),
         },
     }
 }

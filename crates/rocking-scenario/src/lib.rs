@@ -60,6 +60,7 @@
 //! ```
 
 mod building;
+pub mod columns;
 mod dotted;
 mod error;
 mod ground;

@@ -18,6 +18,7 @@ use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
 use crate::response::{EndReason, Summary, Tracker};
 use std::f64::consts::FRAC_PI_2;
+use std::ops::ControlFlow;
 
 /// Angular velocity (rad/s) below which an impact ends the rocking: the
 /// cascade of ever smaller impacts is cut there, in finite time.
@@ -286,7 +287,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
         let t_stop = first.map_or(t1, |(tb, _)| tb);
-        self.emit_step(Interpolant::Constant(self.y), t_stop);
+        self.emit_step(Interpolant::Constant(self.y), t_stop)?;
         self.t = t_stop;
         self.restart = true;
         self.record_instant();
@@ -388,7 +389,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         } else {
             Interpolant::Constant(y1)
         };
-        self.emit_step(interpolant, t_stop);
+        self.emit_step(interpolant, t_stop)?;
         if let (Some((tb, c)), Interpolant::Dense(d)) = (first, interpolant) {
             self.t = tb;
             self.y = if tb >= t1 { y1 } else { d.state(tb) };
@@ -413,7 +414,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Tells the observer about the stretch from the current time to `t1`, and
     /// accumulates the time spent in the regime.
-    fn emit_step(&mut self, interpolant: Interpolant, t1: f64) {
+    fn emit_step(&mut self, interpolant: Interpolant, t1: f64) -> Result<(), Error> {
         self.tracker.time(self.regime.motion(), t1 - self.t);
         if self.observer.wants_steps() {
             let step = Step {
@@ -424,8 +425,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 t1,
                 regime: self.regime,
             };
-            self.observer.on_step(&step);
+            if let ControlFlow::Break(halt) = self.observer.on_step(&step) {
+                return Err(Error::halted(halt, self.t));
+            }
         }
+        Ok(())
     }
 
     /// Feeds the tracker the response at the current instant.
@@ -510,7 +514,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 }
             }
         };
-        self.emit(kind, before);
+        self.emit(kind, before)?;
         Ok(())
     }
 
@@ -523,7 +527,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.y[1] *= self.kernel.restitution;
         self.tracker.summary.impacts += 1;
         self.regime.tower = TowerRegime::Rocking(pivot.flipped());
-        self.emit(EventKind::Impact, before);
+        self.emit(EventKind::Impact, before)?;
         if self.y[1].abs() < REST_ANGULAR_VELOCITY {
             let before = self.y;
             self.y[1] = 0.0;
@@ -531,13 +535,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let acc = self.kernel.pivot_acceleration_at_rest(self.regime.building, self.a_g(self.t));
             // If it would lift at once, `settle` switches to rocking: no rest in between.
             if self.kernel.uplift_margin(acc) <= 0.0 {
-                self.emit(EventKind::Rest, before);
+                self.emit(EventKind::Rest, before)?;
             }
         }
         Ok(())
     }
 
-    fn emit(&mut self, kind: EventKind, before: [f64; 4]) {
+    fn emit(&mut self, kind: EventKind, before: [f64; 4]) -> Result<(), Error> {
         self.tracker.summary.events += 1;
         let event = Event {
             time: self.t,
@@ -546,8 +550,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             after: State::from_array(self.y),
             regime: self.regime,
         };
-        self.observer.on_event(&event);
+        if let ControlFlow::Break(halt) = self.observer.on_event(&event) {
+            return Err(Error::halted(halt, self.t));
+        }
         self.record_instant();
+        Ok(())
     }
 }
 

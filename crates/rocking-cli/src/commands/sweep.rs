@@ -27,7 +27,8 @@ pub struct Args {
     /// The sweep file: a scenario plus a [sweep] table of dotted keys and their values.
     pub sweep: PathBuf,
     /// Output folder, created if needed [default: out/<sweep file stem>].
-    /// sweep.csv there is overwritten; an input file never is.
+    /// The files of an earlier run of this tool there are replaced (stale
+    /// figures removed) once the sweep ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Also draw max θ/α against the first swept key (and a heat map for two numeric keys).
@@ -72,13 +73,15 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // The sweep's errors already name the file, the key and the cause.
     let sweep = Sweep::from_toml_str(&text, &args.sweep)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.sweep));
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     let csv_path = dir.join(SWEEP_CSV);
     let mut inputs = vec![args.sweep.clone()];
     inputs.extend(sweep.inputs().iter().cloned());
     output::refuse_to_overwrite_inputs(std::slice::from_ref(&csv_path), &inputs)?;
+    // Written under a staging folder and moved into place at the end (or on
+    // Ctrl-C, with the rows finished): never a mix with an earlier sweep.
+    let staging = output::Staging::new(&dir, &inputs)?;
 
-    let file = File::create(&csv_path).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let file = File::create(staging.path(SWEEP_CSV)).with_context(|| format!("cannot write {}", csv_path.display()))?;
     let mut csv = BufWriter::new(file);
     writeln!(csv, "{}", sweep.csv_header()).with_context(|| format!("cannot write {}", csv_path.display()))?;
 
@@ -86,7 +89,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // Without a handler (one already set), Ctrl-C simply ends the process.
     let _ = ctrlc::set_handler(|| {
         if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            eprintln!("interrupted twice: stopping now; the last row of sweep.csv may be incomplete");
+            eprintln!("interrupted twice: stopping now; sweep.csv not written");
             std::process::exit(130);
         }
     });
@@ -107,6 +110,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     flushed.with_context(|| format!("cannot write {}", csv_path.display()))?;
     let wall = start.elapsed().as_secs_f64();
     if done.cancelled {
+        staging.commit()?;
         return Err(Interrupted {
             written: done.written,
             total: sweep.len(),
@@ -137,10 +141,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         }
     }
     lines.push(format!("wrote {} in {}", SWEEP_CSV, dir.display()));
-    super::print(&(lines.join("\n") + "\n"))?;
     if args.plot {
-        crate::plot::sweep_figures(&dir, sweep.name(), &csv_path, &sweep.axis_keys()).context("drawing the figures")?;
+        crate::plot::sweep_figures(staging.folder(), sweep.name(), &staging.path(SWEEP_CSV), &sweep.axis_keys()).context("drawing the figures")?;
     }
+    staging.commit()?;
+    super::print(&(lines.join("\n") + "\n"))?;
     Ok(())
 }
 

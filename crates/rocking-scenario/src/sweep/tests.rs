@@ -5,6 +5,7 @@
 
 use super::axis::STRING_KEYS;
 use super::*;
+use crate::summary_fields;
 use crate::{building, ground, simulation, summary_json, summary_scalars, tower};
 use std::convert::Infallible;
 use std::sync::atomic::{AtomicBool, Ordering};
