@@ -95,8 +95,18 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     });
     let progress = progress_bar(sweep.len());
     let start = Instant::now();
+    // The figures are drawn from the rows as they come, not from sweep.csv read back.
+    let header = sweep.header();
+    let mut table = if args.plot {
+        Some(crate::plot::SweepTable::for_rows(&header, &sweep.axis_keys()).context("drawing the figures")?)
+    } else {
+        None
+    };
     let result = sweep.run(args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
         writeln!(csv, "{}", row.to_csv_line())?;
+        if let Some(table) = &mut table {
+            table.push(&row.cells);
+        }
         progress.inc(1);
         Ok::<(), std::io::Error>(())
     });
@@ -141,8 +151,8 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         }
     }
     lines.push(format!("wrote {} in {}", SWEEP_CSV, dir.display()));
-    if args.plot {
-        crate::plot::sweep_figures(staging.folder(), sweep.name(), &staging.path(SWEEP_CSV), &sweep.axis_keys()).context("drawing the figures")?;
+    if let Some(table) = table {
+        crate::plot::sweep_figures_of(staging.folder(), sweep.name(), &table.finish()).context("drawing the figures")?;
     }
     staging.commit()?;
     super::print(&(lines.join("\n") + "\n"))?;
