@@ -65,3 +65,40 @@ fn a_sweep_into_a_run_folder_removes_the_run_files_and_keeps_the_others() {
     // Two cases: the header and two rows.
     assert_eq!(read(&out.join("sweep.csv")).lines().count(), 3);
 }
+
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let dir = tempdir();
+    // 10^6 history rows over 1000 s: far longer than the test waits.
+    let text = SCENARIO
+        .replace("duration = 1.0", "duration = 1000.0")
+        .replace("output_dt = 0.003", "output_dt = 0.001");
+    let file = write(dir.path(), "long.toml", &text);
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(&out).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(out.join("summary.json"), "earlier").unwrap_or_else(|e| panic!("{e}"));
+    let child = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(["run", arg(&file), "--out", arg(&out)])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    // Wait until the history is being written in the staging folder.
+    let partial = out.join(format!(".rocking-partial-{}", child.id())).join("history.csv");
+    let start = Instant::now();
+    while std::fs::metadata(&partial).map_or(0, |m| m.len()) < 100_000 {
+        assert!(start.elapsed() < Duration::from_secs(60), "no history after a minute");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
+    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
+    let r = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let stderr = String::from_utf8_lossy(&r.stderr);
+    assert_eq!(r.status.code(), Some(130), "{stderr}");
+    assert_eq!(stderr.trim(), "interrupted: nothing written");
+    assert_eq!(names(&out), ["summary.json"]);
+    assert_eq!(read(&out.join("summary.json")), "earlier");
+}
