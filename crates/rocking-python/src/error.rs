@@ -16,27 +16,27 @@ pub fn scenario_error(e: &rocking_scenario::Error) -> PyErr {
     match e.kind() {
         ErrorKind::Simulation(rocking::Error::Stopped { .. }) => PyKeyboardInterrupt::new_err(e.to_string()),
         ErrorKind::Simulation(_) => PyRuntimeError::new_err(e.to_string()),
-        ErrorKind::Read { path, os_error, .. } => file_error(e.to_string(), *os_error, path),
+        ErrorKind::Read { os_error, .. } => file_error(e.to_string(), *os_error),
         _ => PyValueError::new_err(e.to_string()),
     }
 }
 
 /// The exception of a file that cannot be read: the `OSError` subclass of its
-/// error number (`FileNotFoundError` for `ENOENT`, as `open()` raises) with
-/// `message` as its text and `errno`, `strerror` and `filename` set.
-pub fn file_error(message: String, errno: Option<i32>, path: &Path) -> PyErr {
+/// error number (`FileNotFoundError` for `ENOENT`, as `open()` raises), its
+/// `errno` set and its text the command's one-line message (which names the
+/// file). `strerror` and `filename` stay `None`: were they set, Python would
+/// print `[Errno 2] …: 'file'` in place of the command's message.
+pub fn file_error(message: String, errno: Option<i32>) -> PyErr {
     Python::attach(|py| {
-        let filename = path.display().to_string();
-        // OSError(errno, strerror) picks the subclass; its text is then replaced
-        // by the command's one-line message.
-        let made = py
-            .get_type::<PyOSError>()
-            .call1((errno.unwrap_or(0), message.clone(), filename.clone()))
-            .and_then(|exc| {
-                exc.setattr("args", (message.clone(),))?;
-                exc.setattr("strerror", message.clone())?;
-                Ok(PyErr::from_value(exc))
-            });
+        // OSError(errno, strerror) picks the subclass; an exception of that class
+        // made from the message alone, with only `errno` set, prints the message.
+        let made = py.get_type::<PyOSError>().call1((errno.unwrap_or(0), "")).and_then(|probe| {
+            let exc = probe.get_type().call1((message,))?;
+            if let Some(n) = errno {
+                exc.setattr("errno", n)?;
+            }
+            Ok(PyErr::from_value(exc))
+        });
         made.unwrap_or_else(|e| e)
     })
 }
@@ -44,5 +44,5 @@ pub fn file_error(message: String, errno: Option<i32>, path: &Path) -> PyErr {
 /// The exception of an I/O error on `path`, with the command's message
 /// (`cannot read PATH: reason (os error N)`).
 pub fn io_error(e: &std::io::Error, path: &Path) -> PyErr {
-    file_error(format!("cannot read {}: {e}", path.display()), e.raw_os_error(), path)
+    file_error(format!("cannot read {}: {e}", path.display()), e.raw_os_error())
 }
