@@ -220,12 +220,25 @@ pub const EVENTS: &[Column<Event>] = &[
     },
 ];
 
+/// What a summary field holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A number (or `null`).
+    Number,
+    /// `true` or `false`.
+    Flag,
+    /// A name.
+    Text,
+}
+
 /// A field of `summary.json` (a dotted name is nested: `time_in_regime_s.rest`)
 /// and a column of `sweep.csv`.
 #[derive(Clone, Copy)]
 pub struct Field {
     /// Key, dotted when nested.
     pub name: &'static str,
+    /// What the values are (the type of a Python column when every case failed).
+    pub kind: Kind,
     /// SI unit, empty for a count, a ratio, a flag or a name.
     pub unit: &'static str,
     /// What it is, for the reference.
@@ -263,6 +276,7 @@ fn time_in(o: &Outcome, m: Motion) -> Cell {
 pub const SUMMARY: &[Field] = &[
     Field {
         name: "name",
+        kind: Kind::Text,
         unit: "",
         meaning: "the scenario's name",
         present: always,
@@ -270,6 +284,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "alpha_rad",
+        kind: Kind::Number,
         unit: "rad",
         meaning: "slenderness angle α of the tower",
         present: always,
@@ -277,6 +292,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "R_m",
+        kind: Kind::Number,
         unit: "m",
         meaning: "distance R from a base corner to the centre of mass",
         present: always,
@@ -284,6 +300,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "p_rad_s",
+        kind: Kind::Number,
         unit: "rad/s",
         meaning: "frequency parameter p of the tower",
         present: always,
@@ -291,6 +308,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "restitution",
+        kind: Kind::Number,
         unit: "",
         meaning: "coefficient of restitution r of an impact",
         present: always,
@@ -298,6 +316,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "uplift_acceleration_g",
+        kind: Kind::Number,
         unit: "g",
         meaning: "ground acceleration that lifts the tower from rest",
         present: always,
@@ -305,6 +324,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "slip_acceleration_g",
+        kind: Kind::Number,
         unit: "g",
         meaning: "ground acceleration that makes the building slip from rest",
         present: always,
@@ -312,6 +332,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_abs_theta_rad",
+        kind: Kind::Number,
         unit: "rad",
         meaning: "largest rotation in absolute value",
         present: always,
@@ -319,6 +340,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_theta_over_alpha",
+        kind: Kind::Number,
         unit: "",
         meaning: "largest rotation over α",
         present: always,
@@ -326,6 +348,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_abs_slip_m",
+        kind: Kind::Number,
         unit: "m",
         meaning: "largest slip in absolute value",
         present: always,
@@ -333,6 +356,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "final_slip_m",
+        kind: Kind::Number,
         unit: "m",
         meaning: "slip at the end of the run",
         present: always,
@@ -340,6 +364,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "impacts",
+        kind: Kind::Number,
         unit: "",
         meaning: "number of impacts",
         present: always,
@@ -347,6 +372,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "overturned",
+        kind: Kind::Flag,
         unit: "",
         meaning: "whether the tower overturned",
         present: always,
@@ -354,6 +380,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "overturn_time_s",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time of overturning",
         present: always,
@@ -361,6 +388,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "first_uplift_time_s",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time of the first uplift",
         present: always,
@@ -368,6 +396,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "first_slip_time_s",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time the building first slipped",
         present: always,
@@ -375,6 +404,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_top_displacement_m",
+        kind: Kind::Number,
         unit: "m",
         meaning: "largest horizontal displacement of the top relative to the building",
         present: always,
@@ -382,6 +412,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_top_abs_acceleration_m_s2",
+        kind: Kind::Number,
         unit: "m/s²",
         meaning: "largest absolute horizontal acceleration of the top",
         present: always,
@@ -389,6 +420,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_pivot_friction_demand",
+        kind: Kind::Number,
         unit: "",
         meaning: "largest ratio of friction force to normal force at the pivot",
         present: always,
@@ -396,6 +428,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "tower_uplift_detected",
+        kind: Kind::Flag,
         unit: "",
         meaning: "whether the tower ever lifted",
         present: always,
@@ -403,6 +436,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "time_in_regime_s.rest",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time at rest",
         present: always,
@@ -410,6 +444,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "time_in_regime_s.rocking",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time rocking on a fixed base",
         present: always,
@@ -417,6 +452,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "time_in_regime_s.sliding",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time sliding with the tower at rest",
         present: always,
@@ -424,6 +460,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "time_in_regime_s.rocking_sliding",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time rocking and sliding",
         present: always,
@@ -431,6 +468,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "end_time_s",
+        kind: Kind::Number,
         unit: "s",
         meaning: "time the run ended",
         present: always,
@@ -438,6 +476,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "end_reason",
+        kind: Kind::Text,
         unit: "",
         meaning: "`end_of_duration` or `overturned`",
         present: always,
@@ -453,6 +492,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "min_theta_rad",
+        kind: Kind::Number,
         unit: "rad",
         meaning: "least rotation",
         present: always,
@@ -460,6 +500,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "max_theta_rad",
+        kind: Kind::Number,
         unit: "rad",
         meaning: "largest rotation",
         present: always,
@@ -467,6 +508,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "events",
+        kind: Kind::Number,
         unit: "",
         meaning: "number of events (rows of events.csv)",
         present: always,
@@ -474,6 +516,7 @@ pub const SUMMARY: &[Field] = &[
     },
     Field {
         name: "rhs_evaluations",
+        kind: Kind::Number,
         unit: "",
         meaning: "evaluations of the equations of motion",
         present: always,
@@ -484,6 +527,7 @@ pub const SUMMARY: &[Field] = &[
 /// The last field of `summary.json` (and column of `sweep.csv` before `error`): the run's wall-clock time.
 pub const WALL_TIME: Field = Field {
     name: "wall_time_s",
+    kind: Kind::Number,
     unit: "s",
     meaning: "wall-clock time of the run (the only field that differs between two runs of the same case)",
     present: always,
@@ -636,6 +680,7 @@ mod tests {
         let mut fields = SUMMARY.to_vec();
         fields.push(Field {
             name: "impacts_plus_one",
+            kind: Kind::Number,
             unit: "",
             meaning: "a field added for the test",
             present: always,
@@ -647,6 +692,22 @@ mod tests {
         assert_eq!(cells.last().map(|(k, _)| k.as_str()), Some("impacts_plus_one"));
         assert_eq!(cells.last().map(|(_, c)| c.clone()), Some(Cell::Int(o.summary.impacts as i64 + 1)));
         assert!(outputs_markdown_of(HISTORY, HISTORY_POINTS, EVENTS, &fields).contains("`impacts_plus_one`"));
+    }
+
+    #[test]
+    fn each_field_kind_is_that_of_its_cells() {
+        // A run with a tower and one without a building (null slip quantities).
+        for o in [outcome(""), outcome("points = [[0.0, 6.0]]")] {
+            for f in SUMMARY {
+                let cell = (f.read)(&o);
+                let ok = match f.kind {
+                    Kind::Text => matches!(cell, Cell::Text(_)),
+                    Kind::Flag => matches!(cell, Cell::Bool(_)),
+                    Kind::Number => matches!(cell, Cell::Float(_) | Cell::Int(_) | Cell::Empty),
+                };
+                assert!(ok, "{}: {:?} is not a {:?}", f.name, cell, f.kind);
+            }
+        }
     }
 
     #[test]
