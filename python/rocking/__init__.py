@@ -13,9 +13,11 @@ scenarios as the ``rocking`` command and gives the same numbers::
     theta = result.history["theta"]          # NumPy float64 array, one row per output_dt
     grid = rocking.sweep(scenario, {"ground.frequency": {"from": 3, "to": 7, "steps": 41}})
 
-Errors raise ``ValueError`` (bad input) or ``RuntimeError`` (a numerical
-failure of a run) with the one-line message of the command line,
-``file: key: what is wrong`` (``<dict>`` in place of the file for a dict).
+Errors raise one exception per kind, each with the one-line message of the
+command line, ``file: key: what is wrong`` (``<dict>`` in place of the file
+for a dict): ``FileNotFoundError``/``OSError`` for a file that cannot be read
+(a scenario, a sweep file, a record), ``ValueError`` for bad input,
+``RuntimeError`` for a numerical failure of a run.
 """
 
 from __future__ import annotations
@@ -23,6 +25,8 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Union
 
+from ._rocking import EVENT_COLUMNS as _EVENT_COLUMNS
+from ._rocking import HISTORY_COLUMNS as _HISTORY_COLUMNS
 from ._rocking import Scenario, __version__
 from ._rocking import derived as _derived
 from ._rocking import fragility_raw as _fragility_raw
@@ -43,10 +47,10 @@ __all__ = ["Fragility", "Result", "Scenario", "ScenarioLike", "derived", "fragil
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
 
-HISTORY_COLUMNS = ("t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc")
+HISTORY_COLUMNS = _HISTORY_COLUMNS
 """The float64 columns of :attr:`Result.history` before ``regime`` and the extra points (``p1_dx``, ``p1_abs_acc``, …)."""
 
-EVENT_COLUMNS = ("t", "kind", "theta", "theta_dot_before", "theta_dot_after", "slip_vel", "slip", "regime")
+EVENT_COLUMNS = _EVENT_COLUMNS
 """The keys of each event in :attr:`Result.events`, the columns of ``events.csv``."""
 
 
@@ -120,8 +124,10 @@ def run(scenario: ScenarioLike) -> Result:
         A :class:`Result` with the summary, the history and the events.
 
     Raises:
+        FileNotFoundError: The ground-motion record does not exist (``OSError`` if it cannot be read otherwise).
         ValueError: The scenario or its ground-motion record is invalid.
         RuntimeError: The integration failed (``file: integration failed at t = … s: …``).
+        KeyboardInterrupt: Ctrl-C stops the run.
     """
     s = _as_scenario(scenario)
     summary, history, events = _run_raw(s)
@@ -183,7 +189,9 @@ def sweep(
         failure) does not stop the others: its message is in ``error``.
 
     Raises:
-        ValueError: The base scenario or an axis is invalid (``file: sweep."key": …``).
+        FileNotFoundError: The sweep file or a record does not exist (``OSError`` if it cannot be read otherwise).
+        ValueError: The base scenario or an axis is invalid (``file: sweep."key": …``), or
+            ``threads`` is outside 1..=4096 (the command's limit).
         KeyboardInterrupt: Ctrl-C stops the sweep after the cases under way.
     """
     if axes is None:

@@ -6,6 +6,16 @@ from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
 import numpy as np
 
 __version__: str
+HISTORY_COLUMNS: Tuple[str, ...]
+"""The float64 columns of the history before ``regime`` and the extra points (from the library's column list)."""
+EVENT_COLUMNS: Tuple[str, ...]
+"""The keys of each event, the columns of ``events.csv`` (from the library's column list)."""
+
+# Errors, one exception per kind, each with the one-line message of the command:
+#   FileNotFoundError / OSError  a file cannot be read (the scenario, a sweep file, a record)
+#   ValueError                   bad input (``file: key: what is wrong``)
+#   RuntimeError                 a numerical failure of a run
+#   KeyboardInterrupt            Ctrl-C (or the exception of the SIGINT handler) during a run or a sweep
 
 class Scenario:
     """A validated scenario: a tower, a building or both, a ground motion, initial state and settings."""
@@ -14,7 +24,8 @@ class Scenario:
     def from_toml(path: Union[str, "os.PathLike[str]"]) -> "Scenario":
         """Reads and validates a scenario file (TOML); a relative record path is resolved against its folder.
 
-        Raises ``ValueError`` (``file: key: what is wrong``) or ``OSError`` if the file cannot be read.
+        Raises ``ValueError`` (``file: key: what is wrong``), or ``FileNotFoundError`` (``OSError``)
+        if the file cannot be read, with the command's message (``cannot read file: …``).
         """
         ...
     @staticmethod
@@ -22,7 +33,8 @@ class Scenario:
         """Validates a scenario given as a dict with the keys of the TOML file (sections as nested dicts).
 
         ``None`` is an absent key; a relative ``ground.file`` is resolved against the current directory.
-        Raises ``ValueError`` (``<dict>: key: what is wrong``).
+        Raises ``ValueError`` (``<dict>: key: what is wrong``), also for a list or dict that
+        contains itself or is nested more than 16 deep.
         """
         ...
     def to_dict(self) -> Dict[str, Any]:
@@ -41,7 +53,11 @@ class Scenario:
         ...
 
 def run_raw(scenario: Scenario) -> Tuple[Dict[str, Any], Dict[str, "np.ndarray"], List[Dict[str, Any]]]:
-    """Runs a scenario with the GIL released: ``(summary, history, events)``; see ``rocking.run``."""
+    """Runs a scenario with the GIL released: ``(summary, history, events)``; see ``rocking.run``.
+
+    Raises ``FileNotFoundError``/``OSError`` (the record cannot be read), ``ValueError`` (bad input),
+    ``RuntimeError`` (a numerical failure); Ctrl-C stops the run.
+    """
     ...
 
 def derived(scenario: Scenario) -> Dict[str, Optional[float]]:
@@ -51,7 +67,10 @@ def derived(scenario: Scenario) -> Dict[str, Optional[float]]:
 def sweep_raw(
     scenario: Scenario, axes: Mapping[str, Any], threads: Optional[int] = None, first: int = 0, count: Optional[int] = None
 ) -> Dict[str, "np.ndarray"]:
-    """Runs cases ``first .. first + count`` (default: all) of a sweep of ``scenario`` over ``axes`` with the GIL released; see ``rocking.sweep``."""
+    """Runs cases ``first .. first + count`` (default: all) of a sweep of ``scenario`` over ``axes`` with the GIL released; see ``rocking.sweep``.
+
+    Raises ``ValueError`` (bad input, ``threads`` outside 1..=4096), ``FileNotFoundError``/``OSError``.
+    """
     ...
 
 def sweep_len_raw(scenario: Scenario, axes: Mapping[str, Any]) -> int:
@@ -61,7 +80,10 @@ def sweep_len_raw(scenario: Scenario, axes: Mapping[str, Any]) -> int:
 def sweep_file_raw(
     path: Union[str, "os.PathLike[str]"], threads: Optional[int] = None, first: int = 0, count: Optional[int] = None, text: Optional[str] = None
 ) -> Dict[str, "np.ndarray"]:
-    """Runs cases ``first .. first + count`` (default: all) of a sweep file (``text``: its content, if given); see ``rocking.sweep``."""
+    """Runs cases ``first .. first + count`` (default: all) of a sweep file (``text``: its content, if given); see ``rocking.sweep``.
+
+    Raises ``FileNotFoundError``/``OSError`` (the file cannot be read), ``ValueError`` (bad input).
+    """
     ...
 
 def sweep_file_len_raw(path: Union[str, "os.PathLike[str]"], text: Optional[str] = None) -> int:
@@ -71,5 +93,8 @@ def sweep_file_len_raw(path: Union[str, "os.PathLike[str]"], text: Optional[str]
 def fragility_raw(
     study: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads: Optional[int] = None
 ) -> Dict[str, Dict[str, "np.ndarray"]]:
-    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns; see ``rocking.fragility``."""
+    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns; see ``rocking.fragility``.
+
+    Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
+    """
     ...

@@ -4,12 +4,13 @@ with the one-line message of the `rocking` command (`file: key: what`)."""
 from __future__ import annotations
 
 import copy
+import errno
 from pathlib import Path
 
 import pytest
 import rocking
 
-from conftest import EXAMPLES, cli_error
+from conftest import EXAMPLES, cli_error, run_cli
 
 CHURCH = {
     "name": "church",
@@ -113,11 +114,15 @@ def test_a_numerical_failure_raises_runtime_error(cli: Path, tmp_path: Path) -> 
     assert "integration failed at t = " in expected and "Painlevé" in expected
 
 
-def test_an_unreadable_file_raises_os_error(tmp_path: Path) -> None:
-    """A missing scenario file: FileNotFoundError, as open() raises."""
+def test_an_unreadable_file_raises_os_error(cli: Path, tmp_path: Path) -> None:
+    """A missing scenario file: FileNotFoundError, as open() raises, with the command's message."""
+    path = tmp_path / "nowhere.toml"
     with pytest.raises(FileNotFoundError) as info:
-        rocking.Scenario.from_toml(tmp_path / "nowhere.toml")
-    assert info.value.filename == str(tmp_path / "nowhere.toml")
+        rocking.Scenario.from_toml(path)
+    assert info.value.errno == errno.ENOENT
+    assert str(info.value) == cli_error(cli, "check", path)
+    with pytest.raises(FileNotFoundError):
+        rocking.sweep(path)
 
 
 def test_a_toml_syntax_error(cli: Path, tmp_path: Path) -> None:
@@ -131,13 +136,53 @@ def test_a_toml_syntax_error(cli: Path, tmp_path: Path) -> None:
     assert "line 2" in expected
 
 
-def test_a_missing_record_is_a_value_error_at_run_time(cli: Path, tmp_path: Path) -> None:
-    """The record is read when the scenario runs; its absence is bad input, with the command's message."""
+def test_a_missing_record_is_a_file_not_found_error_at_run_time(cli: Path, tmp_path: Path) -> None:
+    """The record is read when the scenario runs: FileNotFoundError (once a ValueError), with the command's message."""
     path = tmp_path / "record.toml"
     path.write_text('[tower]\nwidth = 1.0\nheight = 4.0\nmass = 1.0e4\n\n[ground]\ntype = "record"\nfile = "missing.csv"\n', encoding="utf-8")
     scenario = rocking.Scenario.from_toml(path)
     expected = cli_error(cli, "run", path, "--out", tmp_path / "out")
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FileNotFoundError) as info:
         rocking.run(scenario)
     assert str(info.value) == expected
+    assert info.value.errno == errno.ENOENT
     assert "missing.csv" in expected
+
+
+def test_too_many_threads_are_refused_as_the_command_refuses_them(cli: Path, tmp_path: Path) -> None:
+    """threads=100000 once started 100,000 threads; the command takes at most 4096."""
+    path = tmp_path / "s.toml"
+    path.write_text((EXAMPLES / "tower-on-church.toml").read_text(encoding="utf-8") + '\n[sweep]\n"ground.frequency" = [4.0]\n', encoding="utf-8")
+    done = run_cli(cli, "sweep", path, "--threads", "100000", "--out", tmp_path / "out")
+    assert done.returncode == 2 and "100000 is not in 1..=4096" in done.stderr, done.stderr
+    with pytest.raises(ValueError, match=r"^threads: 100000 is not in 1\.\.=4096$"):
+        rocking.sweep(rocking.Scenario.from_dict(CHURCH), {"ground.frequency": [4.0]}, threads=100000)
+    rows = rocking.sweep(rocking.Scenario.from_dict(CHURCH), {"ground.frequency": [4.0]}, threads=4096)
+    assert len(rows["ground.frequency"]) == 1
+
+
+def test_a_list_that_contains_itself_is_a_value_error() -> None:
+    """Once a crash of the interpreter (unbounded recursion): now the key is named."""
+    d = copy.deepcopy(CHURCH)
+    points: list = [[0.0, 6.0]]
+    points.append(points)
+    d["tower"]["points"] = points
+    with pytest.raises(ValueError, match=r"^<dict>: tower\.points: nested more than 16 levels deep"):
+        rocking.Scenario.from_dict(d)
+
+
+def test_a_dict_that_contains_itself_is_a_value_error() -> None:
+    d = copy.deepcopy(CHURCH)
+    d["ground"]["self"] = d["ground"]
+    with pytest.raises(ValueError, match=r"^<dict>: ground\.self: nested more than 16 levels deep"):
+        rocking.Scenario.from_dict(d)
+
+
+def test_lists_nested_20000_deep_are_a_value_error() -> None:
+    d = copy.deepcopy(CHURCH)
+    deep: list = [0.0]
+    for _ in range(20000):
+        deep = [deep]
+    d["tower"]["points"] = deep
+    with pytest.raises(ValueError, match=r"^<dict>: tower\.points: nested more than 16 levels deep"):
+        rocking.Scenario.from_dict(d)

@@ -130,3 +130,43 @@ def test_derived_without_a_run() -> None:
         assert d[key] == summary[key], key
     # No building: no slip threshold.
     assert rocking.derived(EXAMPLES / "housner-block.toml")["slip_acceleration_g"] is None
+
+
+class Interrupted(Exception):
+    """Raised by the test's SIGINT handler (in place of KeyboardInterrupt, which would stop pytest)."""
+
+
+def test_ctrl_c_stops_a_run() -> None:
+    """SIGINT during a long run: the handler's exception comes out of rocking.run within a fraction of a second.
+
+    Were signals not checked while the run goes, the exception would come only
+    after the whole run (several seconds), and the time check would fail.
+    """
+    import os
+    import signal
+    import threading
+    import time
+
+    d = rocking.Scenario.from_toml(EXAMPLES / "tower-on-church.toml").to_dict()
+    d["simulation"]["duration"] = 2.0
+    start = time.perf_counter()
+    rocking.run(d)
+    per_second = (time.perf_counter() - start) / 2.0
+    d["simulation"]["duration"] = max(2.0, 5.0 / per_second)  # about 5 s of work
+    d["ground"]["duration"] = d["simulation"]["duration"]
+
+    def handler(signum, frame):  # type: ignore[no-untyped-def]
+        raise Interrupted
+
+    previous = signal.signal(signal.SIGINT, handler)
+    timer = threading.Timer(0.3, os.kill, args=(os.getpid(), signal.SIGINT))
+    try:
+        t0 = time.perf_counter()
+        timer.start()
+        with pytest.raises(Interrupted):
+            rocking.run(d)
+        elapsed = time.perf_counter() - t0
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
+    assert elapsed < 2.0, f"the run stopped {elapsed:.2f} s after it started (about 5 s of work, SIGINT at 0.3 s)"

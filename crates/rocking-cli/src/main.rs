@@ -14,7 +14,8 @@
 //!
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
 //! stderr naming the file, the key and what is wrong), 2 on bad usage, 130
-//! when a sweep or a study is interrupted by Ctrl-C (after writing the rows finished).
+//! when a sweep or a study is interrupted by Ctrl-C (after writing the rows finished) or
+//! a run is (writing nothing).
 
 mod commands;
 mod format;
@@ -69,7 +70,7 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) if e.is::<commands::sweep::Interrupted>() => {
+        Err(e) if e.is::<commands::sweep::Interrupted>() || e.is::<commands::run::Interrupted>() => {
             eprintln!("{e}");
             ExitCode::from(130)
         }

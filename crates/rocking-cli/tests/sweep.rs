@@ -284,9 +284,11 @@ fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
     let csv = out.join("sweep.csv");
+    // The rows go to a staging folder until the sweep ends (or is interrupted).
+    let partial = out.join(format!(".rocking-partial-{}", child.id())).join("sweep.csv");
     let start = Instant::now();
     // Wait until some rows have reached the file (the writer is buffered).
-    while std::fs::read_to_string(&csv).map_or(0, |t| t.lines().count()) < 3 {
+    while std::fs::read_to_string(&partial).map_or(0, |t| t.lines().count()) < 3 {
         assert!(start.elapsed() < Duration::from_secs(60), "no rows after a minute");
         std::thread::sleep(Duration::from_millis(20));
     }
@@ -314,4 +316,5 @@ fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
         previous = f;
     }
     assert!(read(&csv).ends_with('\n'), "the last row is complete");
+    assert!(!partial.exists(), "the staging folder is left behind");
 }

@@ -5,6 +5,7 @@ mod util;
 
 mod check;
 mod errors;
+mod folder;
 mod fragility;
 mod guard;
 mod keys;

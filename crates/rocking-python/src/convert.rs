@@ -35,10 +35,29 @@ pub fn table_of(obj: &Bound<'_, PyAny>, prefix: &str) -> Result<Table, Unsupport
         key: prefix.to_string(),
         reason: format!("expected a dict, got {}", type_name(obj)),
     })?;
-    table_of_items(items, prefix)
+    table_of_items(items, prefix, 0)
 }
 
-fn table_of_items(items: Vec<(Bound<'_, PyAny>, Bound<'_, PyAny>)>, prefix: &str) -> Result<Table, Unsupported> {
+/// The deepest nesting of dicts and lists a scenario or sweep can hold is 4
+/// (`sweep` → axis → `{from, to, steps}`, `tower.points` → point → number);
+/// anything deeper is refused before the recursion could exhaust the stack: a
+/// list or dict that contains itself, or a structure nested thousands deep.
+const MAX_DEPTH: usize = 16;
+
+/// The key to name for a value nested too deep: the outermost two dotted
+/// components, without list indices (`tower.points`).
+fn outer_key(key: &str) -> String {
+    let plain = key.split('[').next().unwrap_or(key);
+    plain.split('.').take(2).collect::<Vec<_>>().join(".")
+}
+
+fn table_of_items(items: Vec<(Bound<'_, PyAny>, Bound<'_, PyAny>)>, prefix: &str, depth: usize) -> Result<Table, Unsupported> {
+    if depth > MAX_DEPTH {
+        return Err(Unsupported {
+            key: outer_key(prefix),
+            reason: format!("nested more than {MAX_DEPTH} levels deep (a dict or list that contains itself?)"),
+        });
+    }
     let mut table = Table::new();
     for (key, value) in items {
         let Ok(key) = key.cast::<PyString>().map(|s| s.to_string()) else {
@@ -48,7 +67,7 @@ fn table_of_items(items: Vec<(Bound<'_, PyAny>, Bound<'_, PyAny>)>, prefix: &str
             });
         };
         let dotted = if prefix.is_empty() { key.clone() } else { format!("{prefix}.{key}") };
-        if let Some(v) = value_of(&value, &dotted)? {
+        if let Some(v) = value_of(&value, &dotted, depth + 1)? {
             table.insert(key, v);
         }
     }
@@ -75,8 +94,14 @@ fn mapping_items<'py>(obj: &Bound<'py, PyAny>) -> Option<Vec<(Bound<'py, PyAny>,
 }
 
 /// The TOML value of a Python value; `Ok(None)` for `None` (an absent key).
-fn value_of(obj: &Bound<'_, PyAny>, key: &str) -> Result<Option<Value>, Unsupported> {
+fn value_of(obj: &Bound<'_, PyAny>, key: &str, depth: usize) -> Result<Option<Value>, Unsupported> {
     let unsupported = |reason: String| Unsupported { key: key.to_string(), reason };
+    if depth > MAX_DEPTH {
+        return Err(Unsupported {
+            key: outer_key(key),
+            reason: format!("nested more than {MAX_DEPTH} levels deep (a dict or list that contains itself?)"),
+        });
+    }
     if obj.is_none() {
         return Ok(None);
     }
@@ -104,7 +129,7 @@ fn value_of(obj: &Bound<'_, PyAny>, key: &str) -> Result<Option<Value>, Unsuppor
                 key: item_key.clone(),
                 reason: e.to_string(),
             })?;
-            match value_of(&item, &item_key)? {
+            match value_of(&item, &item_key, depth + 1)? {
                 Some(v) => items.push(v),
                 None => {
                     return Err(Unsupported {
@@ -117,7 +142,7 @@ fn value_of(obj: &Bound<'_, PyAny>, key: &str) -> Result<Option<Value>, Unsuppor
         return Ok(Some(Value::Array(items)));
     }
     if let Some(items) = mapping_items(obj) {
-        return table_of_items(items, key).map(|t| Some(Value::Table(t)));
+        return table_of_items(items, key, depth).map(|t| Some(Value::Table(t)));
     }
     // A path (pathlib.Path) is its string; a NumPy integer or float scalar its number.
     if obj.hasattr("__fspath__").unwrap_or(false) {

@@ -23,7 +23,7 @@ use std::time::Instant;
 pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
     let threads = thread_count(threads)?;
     let study = if let Ok(path) = study.extract::<PathBuf>() {
-        let text = std::fs::read_to_string(&path).map_err(|e| crate::scenario::os_error(&e, &path))?;
+        let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
         py.detach(|| Study::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
     } else {
         let table = table_of(study, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;

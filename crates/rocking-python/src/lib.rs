@@ -24,6 +24,9 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    let (history, events) = run::column_names();
+    m.add("HISTORY_COLUMNS", pyo3::types::PyTuple::new(m.py(), history)?)?;
+    m.add("EVENT_COLUMNS", pyo3::types::PyTuple::new(m.py(), events)?)?;
     m.add_class::<scenario::PyScenario>()?;
     m.add_function(wrap_pyfunction!(run::run_raw, m)?)?;
     m.add_function(wrap_pyfunction!(run::derived, m)?)?;

@@ -7,30 +7,69 @@ use crate::scenario::PyScenario;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
-use rocking::{History, Motion};
+use rocking::{Event, Flow, Halt, History, Observer, Step};
+use rocking_scenario::columns::{Layout, Read, Value, EVENTS, HISTORY, HISTORY_POINTS};
 use rocking_scenario::{summary_json, Outcome, RunOptions};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
-/// The float columns of `history.csv` before the extra points (rocking-cli's `output/history.rs`).
-const HISTORY_COLUMNS: [&str; 8] = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc"];
+/// How often a run looks for Ctrl-C (KeyboardInterrupt).
+const SIGNAL_CHECK: Duration = Duration::from_millis(100);
+
+/// Stops the run when Python has a pending signal (Ctrl-C), keeping its exception.
+struct Signals {
+    last_check: Instant,
+    raised: Option<PyErr>,
+}
+
+impl Signals {
+    fn check(&mut self) -> Flow {
+        if self.last_check.elapsed() < SIGNAL_CHECK {
+            return Flow::Continue(());
+        }
+        self.last_check = Instant::now();
+        match Python::attach(|py| py.check_signals()) {
+            Ok(()) => Flow::Continue(()),
+            Err(e) => {
+                self.raised = Some(e);
+                Flow::Break(Halt::Stop)
+            }
+        }
+    }
+}
+
+impl Observer for Signals {
+    fn on_step(&mut self, _: &Step<'_>) -> Flow {
+        self.check()
+    }
+    fn on_event(&mut self, _: &Event) -> Flow {
+        self.check()
+    }
+}
 
 /// Runs a scenario with the GIL released and returns `(summary, history, events)`:
 /// the `summary.json` object as a dict, the `history.csv` columns as NumPy
 /// arrays, the `events.csv` rows as dicts. The Python `rocking.run` wraps them.
+/// Ctrl-C stops the run and raises `KeyboardInterrupt`.
 #[pyfunction]
 pub fn run_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyResult<Bound<'py, PyTuple>> {
     let scenario = scenario.get();
-    let (outcome, wall) = py
-        .detach(|| {
-            let case = scenario.scenario().build()?;
-            let start = Instant::now();
-            let outcome = case.run(RunOptions::ALL)?;
-            Ok::<_, rocking_scenario::Error>((outcome, start.elapsed().as_secs_f64()))
-        })
-        .map_err(|e| scenario_error(&e))?;
+    let mut signals = Signals {
+        last_check: Instant::now(),
+        raised: None,
+    };
+    let result = py.detach(|| {
+        let case = scenario.scenario().build()?;
+        let start = Instant::now();
+        let outcome = case.run_observed(RunOptions::ALL, &mut signals)?;
+        Ok::<_, rocking_scenario::Error>((outcome, start.elapsed().as_secs_f64()))
+    });
+    let (outcome, wall) = match result {
+        Ok(done) => done,
+        Err(e) => return Err(signals.raised.take().unwrap_or_else(|| scenario_error(&e))),
+    };
     let summary = json_to_py(py, &summary_json(&outcome, wall))?;
     let history = match &outcome.history {
-        Some(h) => history_columns(py, h)?,
+        Some(h) => history_columns(py, h, &outcome.layout)?,
         None => PyDict::new(py),
     };
     let events = events_list(py, &outcome)?;
@@ -38,57 +77,72 @@ pub fn run_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyRes
 }
 
 /// The history as a dict of 1-D arrays named and ordered like the `history.csv`
-/// columns: float64 for the numbers, an object array of `str` for `regime`.
-fn history_columns<'py>(py: Python<'py>, history: &History) -> PyResult<Bound<'py, PyDict>> {
+/// columns (rocking_scenario::columns): float64 for the numbers, an object
+/// array of `str` for the names (`regime`).
+fn history_columns<'py>(py: Python<'py>, history: &History, layout: &Layout) -> PyResult<Bound<'py, PyDict>> {
     let samples = &history.samples;
     let columns = PyDict::new(py);
-    let float_column = |f: &dyn Fn(&rocking::Sample) -> f64| PyArray1::from_vec(py, samples.iter().map(f).collect());
-    let getters: [&dyn Fn(&rocking::Sample) -> f64; 8] = [
-        &|s| s.t,
-        &|s| s.ground_acc,
-        &|s| s.state.theta,
-        &|s| s.state.theta_dot,
-        &|s| s.state.slip,
-        &|s| s.state.slip_vel,
-        &|s| s.top_dx,
-        &|s| s.top_abs_acc,
-    ];
-    for (name, get) in HISTORY_COLUMNS.iter().zip(getters) {
-        columns.set_item(name, float_column(get))?;
+    for c in HISTORY.iter().filter(|c| (c.present)(layout)) {
+        match c.read {
+            Read::Number(f) => columns.set_item(c.name, PyArray1::from_vec(py, samples.iter().map(f).collect()))?,
+            Read::Text(f) => {
+                // One str object per distinct name, shared by the rows.
+                let mut interned: Vec<(&'static str, Py<PyAny>)> = Vec::new();
+                let mut objects: Vec<Py<PyAny>> = Vec::with_capacity(samples.len());
+                for s in samples {
+                    let name = f(s);
+                    let object = match interned.iter().find(|(n, _)| *n == name) {
+                        Some((_, o)) => o.clone_ref(py),
+                        None => {
+                            let o = PyString::intern(py, name).into_any().unbind();
+                            interned.push((name, o.clone_ref(py)));
+                            o
+                        }
+                    };
+                    objects.push(object);
+                }
+                columns.set_item(c.name, PyArray1::from_vec(py, objects))?;
+            }
+        }
     }
-    // One str object per regime, shared by every row.
-    let names = Motion::ALL.map(|m| PyString::intern(py, m.as_str()).into_any().unbind());
-    let regime: Vec<Py<PyAny>> = samples.iter().map(|s| names[s.motion.index()].clone_ref(py)).collect();
-    columns.set_item("regime", PyArray1::from_vec(py, regime))?;
-    let points = history.point_values.first().map_or(0, Vec::len);
-    for k in 0..points {
-        let column = |pick: fn(&(f64, f64)) -> f64| {
-            let values = history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, pick)).collect();
-            PyArray1::from_vec(py, values)
-        };
-        columns.set_item(format!("p{}_dx", k + 1), column(|v| v.0))?;
-        columns.set_item(format!("p{}_abs_acc", k + 1), column(|v| v.1))?;
+    for k in 0..layout.points {
+        for c in HISTORY_POINTS {
+            let values = history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, c.read)).collect();
+            columns.set_item(format!("p{}_{}", k + 1, c.suffix), PyArray1::from_vec(py, values))?;
+        }
     }
     Ok(columns)
 }
 
-/// The events as dicts with the `events.csv` columns (`theta`, `slip_vel`
-/// and `slip` after the event, `regime` the combined motion after it).
+/// The events as dicts with the `events.csv` columns (rocking_scenario::columns).
 fn events_list<'py>(py: Python<'py>, outcome: &Outcome) -> PyResult<Bound<'py, PyList>> {
     let list = PyList::empty(py);
+    let columns: Vec<_> = EVENTS.iter().filter(|c| (c.present)(&outcome.layout)).collect();
     for e in &outcome.events {
         let row = PyDict::new(py);
-        row.set_item("t", e.time)?;
-        row.set_item("kind", e.kind.as_str())?;
-        row.set_item("theta", e.after.theta)?;
-        row.set_item("theta_dot_before", e.before.theta_dot)?;
-        row.set_item("theta_dot_after", e.after.theta_dot)?;
-        row.set_item("slip_vel", e.after.slip_vel)?;
-        row.set_item("slip", e.after.slip)?;
-        row.set_item("regime", e.regime.motion().as_str())?;
+        for c in &columns {
+            match c.read.value(e) {
+                Value::Number(x) => row.set_item(c.name, x)?,
+                Value::Text(t) => row.set_item(c.name, t)?,
+            }
+        }
         list.append(row)?;
     }
     Ok(list)
+}
+
+/// The names of the history's columns before the extra points, and of the
+/// events' keys, for the Python module's `HISTORY_COLUMNS` and `EVENT_COLUMNS`.
+pub fn column_names() -> (Vec<&'static str>, Vec<&'static str>) {
+    let all = Layout::default();
+    (
+        HISTORY
+            .iter()
+            .filter(|c| (c.present)(&all) && matches!(c.read, Read::Number(_)))
+            .map(|c| c.name)
+            .collect(),
+        EVENTS.iter().map(|c| c.name).collect(),
+    )
 }
 
 /// The quantities derived from a scenario without running it (what `rocking

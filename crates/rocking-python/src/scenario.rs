@@ -3,7 +3,7 @@
 
 use crate::convert::{table_of, table_to_py};
 use crate::error::scenario_error;
-use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_scenario::{get_dotted, parse_toml, set_dotted, Scenario};
@@ -45,14 +45,6 @@ impl PyScenario {
     }
 }
 
-/// The exception of a file that cannot be read: `OSError(errno, strerror,
-/// filename)`, which Python turns into `FileNotFoundError` etc., as `open()` raises.
-pub fn os_error(e: &std::io::Error, path: &Path) -> PyErr {
-    let reason = e.to_string();
-    let reason = reason.split(" (os error").next().unwrap_or(&reason).to_string();
-    PyOSError::new_err((e.raw_os_error().unwrap_or(0), reason, path.display().to_string()))
-}
-
 #[pymethods]
 impl PyScenario {
     /// Reads and validates a scenario file (TOML). A relative record path in
@@ -63,7 +55,7 @@ impl PyScenario {
     /// the file cannot be read, as `open()` does.
     #[staticmethod]
     fn from_toml(path: PathBuf) -> PyResult<Self> {
-        let text = std::fs::read_to_string(&path).map_err(|e| os_error(&e, &path))?;
+        let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
         let table = parse_toml(&text, &path).map_err(|e| scenario_error(&e))?;
         let scenario = Scenario::from_table(table.clone(), &path).map_err(|e| scenario_error(&e))?;
         Ok(Self { table, origin: path, scenario })

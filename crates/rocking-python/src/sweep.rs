@@ -12,12 +12,16 @@ use numpy::PyArray1;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
+use rocking_scenario::columns::{Kind, SUMMARY};
 use rocking_scenario::{Cell, RunError, Sweep, ERROR_COLUMN};
 use std::ops::Range;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 use toml::Value;
+
+/// The most worker threads, as `rocking sweep --threads` takes.
+const MAX_THREADS: usize = 4096;
 
 /// How often the sweep looks for Ctrl-C (KeyboardInterrupt) while it runs.
 pub(crate) const SIGNAL_CHECK: Duration = Duration::from_millis(100);
@@ -86,7 +90,7 @@ pub fn sweep_file_len_raw(py: Python<'_>, path: PathBuf, text: Option<String>) -
 fn build_file(py: Python<'_>, path: &std::path::Path, text: Option<String>) -> PyResult<Sweep> {
     let text = match text {
         Some(text) => text,
-        None => std::fs::read_to_string(path).map_err(|e| crate::scenario::os_error(&e, path))?,
+        None => std::fs::read_to_string(path).map_err(|e| crate::error::io_error(&e, path))?,
     };
     py.detach(|| Sweep::from_toml_str(&text, path)).map_err(|e| scenario_error(&e))
 }
@@ -100,8 +104,9 @@ pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
     match threads {
         None => Ok(None),
         Some(n) => match usize::try_from(n) {
-            Ok(n) if n >= 1 => Ok(Some(n)),
-            _ => Err(PyValueError::new_err(format!("threads must be None or an integer >= 1, got {n}"))),
+            // The command's limit (`--threads` takes 1..=4096).
+            Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(Some(n)),
+            _ => Err(PyValueError::new_err(format!("threads: {n} is not in 1..={MAX_THREADS}"))),
         },
     }
 }
@@ -137,11 +142,15 @@ fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases:
     Ok(out)
 }
 
-/// The summary's text and boolean fields (interface.md, "Outputs of `run`";
-/// rocking-scenario's `summary_json`) and the error column: their type when
-/// every cell of the column is empty (every case failed).
-const TEXT_COLUMNS: [&str; 3] = ["name", "end_reason", ERROR_COLUMN];
-const BOOL_COLUMNS: [&str; 2] = ["overturned", "tower_uplift_detected"];
+/// Whether the column `name` holds text (the summary's names and the error
+/// message) or flags, from the summary's field list: its type when every cell
+/// of the column is empty (every case failed).
+fn field_kind(name: &str) -> Option<Kind> {
+    if name == ERROR_COLUMN {
+        return Some(Kind::Text);
+    }
+    SUMMARY.iter().find(|f| f.name == name).map(|f| f.kind)
+}
 
 /// A column as a NumPy array: numbers as float64 (`NaN` where the CSV field
 /// is empty), booleans as bool (`False` where empty: a failed case, see
@@ -150,8 +159,8 @@ const BOOL_COLUMNS: [&str; 2] = ["overturned", "tower_uplift_detected"];
 pub(crate) fn column<'py>(py: Python<'py>, name: &str, cells: Vec<Cell>) -> PyResult<Bound<'py, PyAny>> {
     let all = |f: fn(&Cell) -> bool| cells.iter().all(|c| c.is_empty() || f(c));
     let all_empty = cells.iter().all(Cell::is_empty);
-    let is_text = all(|c| matches!(c, Cell::Text(_))) && (!all_empty || TEXT_COLUMNS.contains(&name));
-    let is_bool = all(|c| matches!(c, Cell::Bool(_))) && (!all_empty || BOOL_COLUMNS.contains(&name));
+    let is_text = all(|c| matches!(c, Cell::Text(_))) && (!all_empty || field_kind(name) == Some(Kind::Text));
+    let is_bool = all(|c| matches!(c, Cell::Bool(_))) && (!all_empty || field_kind(name) == Some(Kind::Flag));
     if !is_text && !is_bool && all(|c| matches!(c, Cell::Float(_) | Cell::Int(_))) {
         let values = cells.iter().map(|c| c.as_f64().unwrap_or(f64::NAN)).collect();
         return Ok(PyArray1::<f64>::from_vec(py, values).into_any());

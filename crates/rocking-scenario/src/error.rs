@@ -116,6 +116,9 @@ pub enum ErrorKind {
         path: PathBuf,
         /// Why (the operating system's message).
         reason: String,
+        /// The operating system's error number, if there is one (`ENOENT`: the
+        /// Python package raises `FileNotFoundError`).
+        os_error: Option<i32>,
     },
     /// A ground-motion record is malformed.
     #[error("{}: {source}", .path.display())]

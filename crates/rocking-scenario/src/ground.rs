@@ -346,6 +346,7 @@ impl RecordSpec {
                 ErrorKind::Read {
                     path: self.file.clone(),
                     reason: io_reason(&e),
+                    os_error: e.raw_os_error(),
                 },
             )
         })?;

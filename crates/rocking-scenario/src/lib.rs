@@ -64,6 +64,7 @@
 //! ```
 
 mod building;
+pub mod columns;
 mod dotted;
 mod error;
 mod ground;

@@ -1,9 +1,10 @@
 //! Running a case: the summary, the derived quantities, and the history and
 //! events when asked for.
 
+use crate::columns::Layout;
 use crate::error::{Error, Fault};
 use crate::scenario::Case;
-use rocking::{simulate, Derived, Event, EventLog, History, Observer, Step, Summary};
+use rocking::{simulate, Derived, Event, EventLog, Flow, History, Observer, Step, Summary};
 
 /// What to record besides the summary.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -34,6 +35,8 @@ pub struct Outcome {
     pub history: Option<History>,
     /// Every event, if asked for (else empty).
     pub events: Vec<Event>,
+    /// Which optional columns and fields the outputs have.
+    pub layout: Layout,
 }
 
 /// The observer of a run: a history and an event log, each optional.
@@ -46,32 +49,48 @@ impl Observer for Recorder {
     fn wants_steps(&self) -> bool {
         self.history.is_some()
     }
-    fn on_step(&mut self, step: &Step<'_>) {
-        if let Some(h) = &mut self.history {
-            h.on_step(step);
+    fn on_step(&mut self, step: &Step<'_>) -> Flow {
+        match &mut self.history {
+            Some(h) => h.on_step(step),
+            None => Flow::Continue(()),
         }
     }
-    fn on_event(&mut self, event: &Event) {
-        if let Some(log) = &mut self.events {
-            log.on_event(event);
+    fn on_event(&mut self, event: &Event) -> Flow {
+        match &mut self.events {
+            Some(log) => log.on_event(event),
+            None => Flow::Continue(()),
         }
     }
 }
 
 impl Case {
+    /// Which optional columns and fields its outputs have.
+    pub fn layout(&self) -> Layout {
+        Layout { points: self.points.len() }
+    }
+
     /// Runs the case. A failure of the integration names the scenario file.
     pub fn run(&self, options: RunOptions) -> Result<Outcome, Error> {
+        self.run_observed(options, &mut ())
+    }
+
+    /// Runs the case, reporting its steps and events to `observer` as well
+    /// (a history streamed to a file, a check for Ctrl-C), which may stop or
+    /// fail the run ([`rocking::Error::Stopped`], [`rocking::Error::Observer`]).
+    pub fn run_observed(&self, options: RunOptions, observer: &mut impl Observer) -> Result<Outcome, Error> {
         let mut recorder = Recorder {
             history: options.history.then(|| History::new(self.output_dt, self.points.clone())),
             events: options.events.then(EventLog::default),
         };
-        let summary = simulate(&self.model, &self.ground, self.initial, &self.settings, &mut recorder).map_err(|e| Fault::from(e).in_file(&self.file))?;
+        let summary = simulate(&self.model, &self.ground, self.initial, &self.settings, &mut (&mut recorder, observer))
+            .map_err(|e| Fault::from(e).in_file(&self.file))?;
         Ok(Outcome {
             name: self.name.clone(),
             summary,
             derived: self.model.derived(),
             history: recorder.history,
             events: recorder.events.map(|log| log.events).unwrap_or_default(),
+            layout: self.layout(),
         })
     }
 }

@@ -2,9 +2,9 @@
 //! `run`"), `null` where a quantity does not exist (the tower's without a
 //! tower, the slip's without a building), plus a few additions.
 
+use crate::columns::{fields_of, SUMMARY};
 use crate::run::Outcome;
 use crate::sweep::{Cell, WALL_TIME_KEY};
-use rocking::{EndReason, Motion};
 use serde_json::{json, Map, Value};
 
 /// The summary of a run as a JSON object, `wall_time_s` the run's wall-clock time (s).
@@ -44,55 +44,12 @@ pub fn summary_json(outcome: &Outcome, wall_time_s: f64) -> Value {
     Value::Object(map)
 }
 
-/// Every field of the summary but the wall time, in the order of
-/// `summary.json`, nested ones with dotted names (`time_in_regime_s.rest`):
+/// Every field of the summary but the wall time ([`crate::columns::SUMMARY`]
+/// present in the outcome's layout), in the order of `summary.json`, nested ones with dotted names (`time_in_regime_s.rest`):
 /// the columns of `sweep.csv`, taken without building any JSON. An absent
 /// quantity (`null` in the JSON) is [`Cell::Empty`].
 pub fn summary_fields(outcome: &Outcome) -> Vec<(String, Cell)> {
-    let s = &outcome.summary;
-    let d = &outcome.derived;
-    let tower = d.alpha.is_some();
-    let building = d.slip_acceleration_g.is_some();
-    let float = |v: Option<f64>| v.filter(|v| v.is_finite()).map_or(Cell::Empty, Cell::Float);
-    let if_tower = |v: f64| float(tower.then_some(v));
-    let if_building = |v: f64| float(building.then_some(v));
-    let count = |n: u64| i64::try_from(n).map_or(Cell::Float(n as f64), Cell::Int);
-    let mut fields: Vec<(String, Cell)> = Vec::with_capacity(32);
-    let mut push = |key: &str, cell: Cell| fields.push((key.to_string(), cell));
-    push("name", Cell::Text(outcome.name.clone()));
-    push("alpha_rad", float(d.alpha));
-    push("R_m", float(d.radius));
-    push("p_rad_s", float(d.p));
-    push("restitution", float(d.restitution));
-    push("uplift_acceleration_g", float(d.uplift_acceleration_g));
-    push("slip_acceleration_g", float(d.slip_acceleration_g));
-    push("max_abs_theta_rad", if_tower(s.max_abs_theta()));
-    push("max_theta_over_alpha", float(d.alpha.map(|a| s.max_abs_theta() / a)));
-    push("max_abs_slip_m", if_building(s.max_abs_slip));
-    push("final_slip_m", if_building(s.final_slip));
-    push("impacts", if tower { count(s.impacts) } else { Cell::Empty });
-    push("overturned", Cell::Bool(s.overturned()));
-    push("overturn_time_s", float(s.overturn_time));
-    push("first_uplift_time_s", float(s.first_uplift_time));
-    push("first_slip_time_s", float(s.first_slip_time));
-    push("max_top_displacement_m", if_tower(s.max_top_displacement));
-    push("max_top_abs_acceleration_m_s2", if_tower(s.max_top_abs_acceleration));
-    push("max_pivot_friction_demand", if_tower(s.max_pivot_friction_demand));
-    push("tower_uplift_detected", Cell::Bool(s.tower_uplift_detected));
-    for m in Motion::ALL {
-        push(&format!("time_in_regime_s.{}", m.as_str()), float(Some(s.time_in(m))));
-    }
-    push("end_time_s", float(Some(s.end_time)));
-    let end_reason = match s.end_reason {
-        EndReason::EndOfDuration => "end_of_duration",
-        EndReason::Overturned => "overturned",
-    };
-    push("end_reason", Cell::Text(end_reason.to_string()));
-    push("min_theta_rad", if_tower(s.theta_range.0));
-    push("max_theta_rad", if_tower(s.theta_range.1));
-    push("events", count(s.events));
-    push("rhs_evaluations", count(s.evaluations));
-    fields
+    fields_of(SUMMARY, &outcome.layout, outcome)
 }
 
 /// The JSON value of a summary cell (`null` for an empty one).

@@ -39,6 +39,30 @@ pub enum Error {
         /// The last transition tried.
         last: &'static str,
     },
+    /// An observer stopped the run (an interruption such as Ctrl-C).
+    #[error("stopped at t = {time} s")]
+    Stopped {
+        /// Time (s) of the step or event that was refused.
+        time: f64,
+    },
+    /// An observer failed (its message, e.g. a file that could not be written).
+    #[error("{message}")]
+    Observer {
+        /// Time (s) of the step or event being observed.
+        time: f64,
+        /// The observer's one-line message.
+        message: String,
+    },
+}
+
+impl Error {
+    /// The error of a run that an observer ended at `time`.
+    pub(crate) fn halted(halt: crate::observer::Halt, time: f64) -> Self {
+        match halt {
+            crate::observer::Halt::Stop => Error::Stopped { time },
+            crate::observer::Halt::Fail(message) => Error::Observer { time, message },
+        }
+    }
 }
 
 /// Checks that `value` is finite and strictly positive.

@@ -1,11 +1,28 @@
 //! Observers: how a run reports its steps and events without knowing about
-//! files, plots or progress bars (argmin's `Observe` pattern).
+//! files, plots or progress bars (argmin's `Observe` pattern). Like argmin's
+//! observers, each call returns whether the run goes on: an observer stops a
+//! run (Ctrl-C) or fails it (a file that cannot be written) with
+//! `ControlFlow::Break`, and [`crate::simulate`] returns
+//! [`crate::Error::Stopped`] or [`crate::Error::Observer`].
 
 use crate::equations::Kernel;
 use crate::event::Event;
 use crate::ground::Piece;
 use crate::integrator::DenseOutput;
 use crate::regime::{Motion, Pivot, Regime, State, TowerRegime};
+use std::ops::ControlFlow;
+
+/// Why an observer ends a run.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Halt {
+    /// Stop here, as asked (an interruption): not a failure of the model.
+    Stop,
+    /// The observer failed (its one-line message, e.g. a write that failed).
+    Fail(String),
+}
+
+/// What an observer returns: go on, or end the run.
+pub type Flow = ControlFlow<Halt>;
 
 /// Receives the steps and events of a run. Every method has a no-op default.
 pub trait Observer {
@@ -15,9 +32,13 @@ pub trait Observer {
         false
     }
     /// One stretch `[t0, t1]` of smooth motion in one regime.
-    fn on_step(&mut self, _step: &Step<'_>) {}
+    fn on_step(&mut self, _step: &Step<'_>) -> Flow {
+        Flow::Continue(())
+    }
     /// A regime change.
-    fn on_event(&mut self, _event: &Event) {}
+    fn on_event(&mut self, _event: &Event) -> Flow {
+        Flow::Continue(())
+    }
 }
 
 /// The observer that observes nothing.
@@ -27,13 +48,13 @@ impl<A: Observer, B: Observer> Observer for (A, B) {
     fn wants_steps(&self) -> bool {
         self.0.wants_steps() || self.1.wants_steps()
     }
-    fn on_step(&mut self, step: &Step<'_>) {
-        self.0.on_step(step);
-        self.1.on_step(step);
+    fn on_step(&mut self, step: &Step<'_>) -> Flow {
+        self.0.on_step(step)?;
+        self.1.on_step(step)
     }
-    fn on_event(&mut self, event: &Event) {
-        self.0.on_event(event);
-        self.1.on_event(event);
+    fn on_event(&mut self, event: &Event) -> Flow {
+        self.0.on_event(event)?;
+        self.1.on_event(event)
     }
 }
 
@@ -41,11 +62,11 @@ impl<O: Observer + ?Sized> Observer for &mut O {
     fn wants_steps(&self) -> bool {
         (**self).wants_steps()
     }
-    fn on_step(&mut self, step: &Step<'_>) {
-        (**self).on_step(step);
+    fn on_step(&mut self, step: &Step<'_>) -> Flow {
+        (**self).on_step(step)
     }
-    fn on_event(&mut self, event: &Event) {
-        (**self).on_event(event);
+    fn on_event(&mut self, event: &Event) -> Flow {
+        (**self).on_event(event)
     }
 }
 

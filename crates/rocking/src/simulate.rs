@@ -41,6 +41,7 @@ use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
 use crate::response::{EndReason, Summary, Tracker};
 use std::f64::consts::FRAC_PI_2;
+use std::ops::ControlFlow;
 
 /// Angular velocity (rad/s) below which an impact ends the rocking: the
 /// cascade of ever smaller impacts is cut there, in finite time.
@@ -367,7 +368,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
         let t_stop = first.map_or(t1, |(tb, _)| tb);
-        self.emit_step(Interpolant::Constant(self.y), t_stop);
+        self.emit_step(Interpolant::Constant(self.y), t_stop)?;
         self.t = t_stop;
         self.restart = true;
         self.record_instant();
@@ -581,7 +582,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             Some(d) => Interpolant::Dense(d.widen()),
             None => Interpolant::Constant(y1),
         };
-        self.emit_step(interpolant, t_stop);
+        self.emit_step(interpolant, t_stop)?;
         if let (Some((tb, c)), Some(d)) = (first, dense) {
             self.t = tb;
             self.y = if tb >= t1 { y1 } else { wide(&d.state(tb)) };
@@ -608,7 +609,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Tells the observer about the stretch from the current time to `t1`, and
     /// accumulates the time spent in the regime.
-    fn emit_step(&mut self, interpolant: Interpolant, t1: f64) {
+    fn emit_step(&mut self, interpolant: Interpolant, t1: f64) -> Result<(), Error> {
         self.tracker.time(self.regime.motion(), t1 - self.t);
         if self.observer.wants_steps() {
             let step = Step {
@@ -619,8 +620,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 t1,
                 regime: self.regime,
             };
-            self.observer.on_step(&step);
+            if let ControlFlow::Break(halt) = self.observer.on_step(&step) {
+                return Err(Error::halted(halt, self.t));
+            }
         }
+        Ok(())
     }
 
     /// Feeds the tracker the response at the current instant.
@@ -708,7 +712,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 }
             }
         };
-        self.emit(kind, before);
+        self.emit(kind, before)?;
         Ok(())
     }
 
@@ -727,7 +731,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.regime.tower = TowerRegime::Rocking(pivot.flipped());
         let old = self.regime.building;
         self.regime.building = after.building;
-        self.emit(EventKind::Impact, before);
+        self.emit(EventKind::Impact, before)?;
         if after.building != old {
             let kind = match (old, after.building) {
                 (_, BuildingRegime::Stick) => EventKind::Stick,
@@ -738,7 +742,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 (BuildingRegime::Slip(_), BuildingRegime::Slip(_)) => EventKind::Reverse,
             };
             let at = self.y;
-            self.emit(kind, at);
+            self.emit(kind, at)?;
         }
         if self.y[1].abs() < REST_ANGULAR_VELOCITY {
             let before = self.y;
@@ -750,13 +754,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             };
             // If it would lift at once, `settle` switches to rocking: no rest in between.
             if acc_pivot.abs() <= self.kernel.uplift_threshold(self.kernel.g) {
-                self.emit(EventKind::Rest, before);
+                self.emit(EventKind::Rest, before)?;
             }
         }
         Ok(())
     }
 
-    fn emit(&mut self, kind: EventKind, before: [f64; 4]) {
+    fn emit(&mut self, kind: EventKind, before: [f64; 4]) -> Result<(), Error> {
         self.tracker.summary.events += 1;
         let event = Event {
             time: self.t,
@@ -765,8 +769,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             after: State::from_array(self.y),
             regime: self.regime,
         };
-        self.observer.on_event(&event);
+        if let ControlFlow::Break(halt) = self.observer.on_event(&event) {
+            return Err(Error::halted(halt, self.t));
+        }
         self.record_instant();
+        Ok(())
     }
 }
 

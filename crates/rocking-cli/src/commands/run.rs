@@ -3,8 +3,10 @@
 use crate::format::sig;
 use crate::output;
 use anyhow::Context;
-use rocking_scenario::{summary_json, Outcome, RunOptions};
+use rocking::{Flow, Halt, Observer, Sample, Sampler, Step};
+use rocking_scenario::{summary_json, ErrorKind, Outcome, RunOptions};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 /// Arguments of `rocking run`.
@@ -13,8 +15,9 @@ pub struct Args {
     /// The scenario file (TOML).
     pub scenario: PathBuf,
     /// Output folder, created if needed [default: out/<scenario file stem>].
-    /// The tool's own files there (summary.json, history.csv, events.csv) are
-    /// overwritten; an input file (the scenario, a record) never is.
+    /// The files of an earlier run of this tool there are overwritten (and
+    /// its figures removed) only once this run has succeeded; other files and
+    /// an input file (the scenario, a record) never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Also draw the figures theta.svg/.png (θ/α and the ground acceleration
@@ -29,32 +32,86 @@ pub fn default_out(scenario: &Path) -> PathBuf {
     Path::new("out").join(stem)
 }
 
-/// Runs the scenario and writes its files.
+/// Set by Ctrl-C: the run stops at its next step and writes nothing.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// The run was stopped by Ctrl-C; the output folder was left as it was.
+#[derive(Debug)]
+pub struct Interrupted;
+
+impl std::fmt::Display for Interrupted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "interrupted: nothing written")
+    }
+}
+
+impl std::error::Error for Interrupted {}
+
+/// Stops the run when Ctrl-C was pressed.
+struct CtrlC;
+
+impl Observer for CtrlC {
+    fn on_step(&mut self, _: &Step<'_>) -> Flow {
+        if INTERRUPTED.load(Ordering::Relaxed) {
+            Flow::Break(Halt::Stop)
+        } else {
+            Flow::Continue(())
+        }
+    }
+}
+
+/// Runs the scenario and writes its files: under a staging folder, moved into
+/// the output folder only when everything is written (output::Staging).
 pub fn execute(args: &Args) -> anyhow::Result<()> {
     let scenario = super::load_scenario(&args.scenario)?;
     let case = scenario.build()?;
     let dir = args.out.clone().unwrap_or_else(|| default_out(&args.scenario));
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
-    let mut files: Vec<PathBuf> = [output::SUMMARY, output::HISTORY, output::EVENTS].iter().map(|f| dir.join(f)).collect();
+    let mut names = vec![output::SUMMARY, output::HISTORY, output::EVENTS];
     if args.plot {
-        files.extend(crate::plot::RUN_FILES.iter().map(|f| dir.join(f)));
+        names.extend(crate::plot::RUN_FILES);
     }
+    let files: Vec<PathBuf> = names.iter().map(|f| dir.join(f)).collect();
     let mut inputs = vec![args.scenario.clone()];
     inputs.extend(case.inputs.iter().cloned());
     output::refuse_to_overwrite_inputs(&files, &inputs)?;
+    let staging = output::Staging::new(&dir, &inputs)?;
+    let _ = ctrlc::set_handler(|| INTERRUPTED.store(true, Ordering::SeqCst));
 
+    let mut history = output::HistoryWriter::create(&staging.path(output::HISTORY), &files[1], case.layout())?;
+    let mut sampler = Sampler::new(case.output_dt, case.points.clone(), |sample: &Sample, points: &[(f64, f64)]| {
+        history.row(sample, points)
+    });
+    // The figures need the samples in memory; without --plot nothing grows with the history.
+    let options = RunOptions {
+        history: args.plot,
+        events: true,
+    };
     let start = Instant::now();
-    let outcome = case.run(RunOptions::ALL)?;
+    let result = case.run_observed(options, &mut (&mut sampler, CtrlC));
     let wall = start.elapsed().as_secs_f64();
-    let summary = summary_json(&outcome, wall);
-    output::write_summary(&files[0], &summary)?;
-    if let Some(history) = &outcome.history {
-        output::write_history(&files[1], history, case.points.len())?;
-    }
-    output::write_events(&files[2], &outcome.events)?;
+    drop(sampler);
+    let outcome = match result {
+        Ok(outcome) => outcome,
+        Err(e) => {
+            return Err(match e.kind() {
+                ErrorKind::Simulation(rocking::Error::Stopped { .. }) => Interrupted.into(),
+                // The writer's own error, with the file it could not write.
+                ErrorKind::Simulation(rocking::Error::Observer { .. }) => history.finish().err().unwrap_or_else(|| e.into()),
+                _ => e.into(),
+            });
+        }
+    };
+    history.finish()?;
+    output::write_summary(&staging.path(output::SUMMARY), &files[0], &summary_json(&outcome, wall))?;
+    output::write_events(&staging.path(output::EVENTS), &files[2], &outcome.layout, &outcome.events)?;
+    let figures = if args.plot {
+        crate::plot::run_figures(staging.folder(), &outcome).context("drawing the figures")?
+    } else {
+        Vec::new()
+    };
+    staging.commit()?;
     super::print(&report(&outcome, wall, &dir))?;
     if args.plot {
-        let figures = crate::plot::run_figures(&dir, &outcome).context("drawing the figures")?;
         let names: Vec<String> = figures.iter().filter_map(|f| f.file_name()).map(|n| n.to_string_lossy().into_owned()).collect();
         super::print(&format!("drew {} in {}\n", names.join(", "), dir.display()))?;
     }

@@ -30,7 +30,8 @@ pub struct Args {
     /// The sweep file: a scenario plus a [sweep] table of dotted keys and their values.
     pub sweep: PathBuf,
     /// Output folder, created if needed [default: out/<sweep file stem>].
-    /// sweep.csv there is overwritten; an input file never is.
+    /// The files of an earlier run of this tool there are replaced (stale
+    /// figures removed) once the sweep ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Also draw max θ/α against the first swept key (and a heat map for two numeric keys).
@@ -84,20 +85,18 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // The sweep's errors already name the file, the key and the cause.
     let sweep = Sweep::from_toml_str(&text, &args.sweep)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.sweep));
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     let csv_path = dir.join(SWEEP_CSV);
     let shard_path = dir.join(SHARD_JSON);
     let mut inputs = vec![args.sweep.clone()];
     inputs.extend(sweep.inputs().iter().cloned());
     output::refuse_to_overwrite_inputs(&[csv_path.clone(), shard_path.clone()], &inputs)?;
     let cases = args.shard.map_or(0..sweep.len(), |s| s.cases(sweep.len()));
-    // A shard.json left by an earlier run describes the sweep.csv about to be replaced.
-    match std::fs::remove_file(&shard_path) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e).with_context(|| format!("cannot remove {}", shard_path.display())),
-        _ => {}
-    }
+    // Written under a staging folder and moved into place at the end (or on
+    // Ctrl-C, with the rows finished): never a mix with an earlier sweep (a
+    // shard.json left by an earlier run is removed with the other files).
+    let staging = output::Staging::new(&dir, &inputs)?;
 
-    let file = File::create(&csv_path).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let file = File::create(staging.path(SWEEP_CSV)).with_context(|| format!("cannot write {}", csv_path.display()))?;
     let mut csv = BufWriter::new(file);
     writeln!(csv, "{}", sweep.csv_header()).with_context(|| format!("cannot write {}", csv_path.display()))?;
 
@@ -105,14 +104,24 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // Without a handler (one already set), Ctrl-C simply ends the process.
     let _ = ctrlc::set_handler(|| {
         if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            eprintln!("interrupted twice: stopping now; the last row of sweep.csv may be incomplete");
+            eprintln!("interrupted twice: stopping now; sweep.csv not written");
             std::process::exit(130);
         }
     });
     let progress = progress_bar(cases.len());
     let start = Instant::now();
+    // The figures are drawn from the rows as they come, not from sweep.csv read back.
+    let header = sweep.header();
+    let mut table = if args.plot {
+        Some(crate::plot::SweepTable::for_rows(&header, &sweep.axis_keys()).context("drawing the figures")?)
+    } else {
+        None
+    };
     let result = sweep.run_range(cases.clone(), args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
         writeln!(csv, "{}", row.to_csv_line())?;
+        if let Some(table) = &mut table {
+            table.push(&row.cells);
+        }
         progress.inc(1);
         Ok::<(), std::io::Error>(())
     });
@@ -126,6 +135,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     flushed.with_context(|| format!("cannot write {}", csv_path.display()))?;
     let wall = start.elapsed().as_secs_f64();
     if done.cancelled {
+        staging.commit()?;
         return Err(Interrupted {
             written: done.written,
             total: cases.len(),
@@ -138,7 +148,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let part = match args.shard {
         Some(shard) => {
             let manifest = Manifest::new("sweep", SWEEP_CSV, shard, sweep.len(), text.as_bytes());
-            std::fs::write(&shard_path, manifest.to_json()).with_context(|| format!("cannot write {}", shard_path.display()))?;
+            std::fs::write(staging.path(SHARD_JSON), manifest.to_json()).with_context(|| format!("cannot write {}", shard_path.display()))?;
             written.push(SHARD_JSON);
             format!(" (shard {shard}: cases {}..{} of {})", cases.start, cases.end, sweep.len())
         }
@@ -166,10 +176,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         }
     }
     lines.push(format!("wrote {} in {}", written.join(", "), dir.display()));
-    super::print(&(lines.join("\n") + "\n"))?;
-    if args.plot {
-        crate::plot::sweep_figures(&dir, sweep.name(), &csv_path, &sweep.axis_keys()).context("drawing the figures")?;
+    if let Some(table) = table {
+        crate::plot::sweep_figures_of(staging.folder(), sweep.name(), &table.finish()).context("drawing the figures")?;
     }
+    staging.commit()?;
+    super::print(&(lines.join("\n") + "\n"))?;
     Ok(())
 }
 

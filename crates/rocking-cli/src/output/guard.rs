@@ -31,13 +31,20 @@ fn same_file(_: &Path, _: &Path) -> bool {
     false
 }
 
+/// Whether `path` is one of `inputs`.
+pub fn is_input(path: &Path, inputs: &[PathBuf]) -> bool {
+    let target = canonical(path);
+    inputs
+        .iter()
+        .any(|input| target.is_some() && target == canonical(input) || same_file(path, input))
+}
+
 /// Fails if any of `outputs` is one of `inputs`.
 pub fn refuse_to_overwrite_inputs(outputs: &[PathBuf], inputs: &[PathBuf]) -> anyhow::Result<()> {
     for output in outputs {
         let target = canonical(output);
         for input in inputs {
-            let is_input = target.is_some() && target == canonical(input) || same_file(output, input);
-            if is_input {
+            if target.is_some() && target == canonical(input) || same_file(output, input) {
                 bail!(
                     "refusing to write {}: it is the input file {} (choose another --out)",
                     output.display(),

@@ -1,46 +1,73 @@
-//! `history.csv`: `t,ground_acc,theta,theta_dot,slip,slip_vel,top_dx,top_abs_acc,regime`,
-//! then `pK_dx,pK_abs_acc` for each extra point K = 1, 2, … of `tower.points`.
+//! `history.csv`: the columns of [`rocking_scenario::columns::HISTORY`] present
+//! in the run's layout, then those of each extra point. Written row by row as
+//! the run goes ([`HistoryWriter`] is the sink of a [`rocking::Sampler`]), so
+//! memory does not grow with the history's length.
 
-use super::number;
+use super::write_value;
 use anyhow::Context;
-use rocking::History;
-use std::path::Path;
+use rocking::{Flow, Halt, Sample};
+use rocking_scenario::columns::{history_header, history_values, HistoryRow, Layout, HISTORY, HISTORY_POINTS};
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
 
-/// The columns before the extra points.
-pub const COLUMNS: [&str; 9] = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc", "regime"];
+/// Writes the rows of `history.csv` to a file as they come.
+pub struct HistoryWriter {
+    csv: csv::Writer<BufWriter<File>>,
+    layout: Layout,
+    buffer: ryu::Buffer,
+    /// The name given in messages (the final path, not the staging one).
+    shown: PathBuf,
+    /// The first write error, reported after the run stops.
+    error: Option<csv::Error>,
+}
 
-/// Writes the history (SI units: s, m/s², rad, rad/s, m, m/s).
-pub fn write_history(path: &Path, history: &History, points: usize) -> anyhow::Result<()> {
-    let context = || format!("cannot write {}", path.display());
-    let mut w = csv::Writer::from_path(path).with_context(context)?;
-    let mut header: Vec<String> = COLUMNS.iter().map(|c| c.to_string()).collect();
-    for k in 1..=points {
-        header.push(format!("p{k}_dx"));
-        header.push(format!("p{k}_abs_acc"));
+impl HistoryWriter {
+    /// Creates `path` and writes the header; `shown` names the file in errors.
+    pub fn create(path: &Path, shown: &Path, layout: Layout) -> anyhow::Result<Self> {
+        let context = || format!("cannot write {}", shown.display());
+        let file = File::create(path).with_context(context)?;
+        let mut csv = csv::Writer::from_writer(BufWriter::new(file));
+        csv.write_record(history_header(HISTORY, HISTORY_POINTS, &layout)).with_context(context)?;
+        Ok(Self {
+            csv,
+            layout,
+            buffer: ryu::Buffer::new(),
+            shown: shown.to_path_buf(),
+            error: None,
+        })
     }
-    w.write_record(&header).with_context(context)?;
-    let mut buffer = ryu::Buffer::new();
-    let empty: [&[u8]; 0] = [];
-    for (sample, extra) in history.samples.iter().zip(&history.point_values) {
-        let s = sample.state;
-        for x in [
-            sample.t,
-            sample.ground_acc,
-            s.theta,
-            s.theta_dot,
-            s.slip,
-            s.slip_vel,
-            sample.top_dx,
-            sample.top_abs_acc,
-        ] {
-            w.write_field(number(&mut buffer, x)).with_context(context)?;
+
+    /// Writes one row; a failed write ends the run.
+    pub fn row(&mut self, sample: &Sample, points: &[(f64, f64)]) -> Flow {
+        match self.write_row(sample, points) {
+            Ok(()) => Flow::Continue(()),
+            Err(e) => {
+                let message = format!("cannot write {}: {e}", self.shown.display());
+                self.error = Some(e);
+                Flow::Break(Halt::Fail(message))
+            }
         }
-        w.write_field(sample.motion.as_str()).with_context(context)?;
-        for &(dx, acc) in extra {
-            w.write_field(number(&mut buffer, dx)).with_context(context)?;
-            w.write_field(number(&mut buffer, acc)).with_context(context)?;
-        }
-        w.write_record(empty).with_context(context)?;
     }
-    w.flush().with_context(context)
+
+    fn write_row(&mut self, sample: &Sample, points: &[(f64, f64)]) -> Result<(), csv::Error> {
+        let mut result = Ok(());
+        let (csv, buffer) = (&mut self.csv, &mut self.buffer);
+        history_values(HISTORY, HISTORY_POINTS, &self.layout, HistoryRow { sample, points }, |v| {
+            if result.is_ok() {
+                result = write_value(csv, buffer, v);
+            }
+        });
+        result?;
+        csv.write_record(None::<&[u8]>)
+    }
+
+    /// Flushes the file; the first error of the run if there was one.
+    pub fn finish(mut self) -> anyhow::Result<()> {
+        let context = || format!("cannot write {}", self.shown.display());
+        if let Some(e) = self.error.take() {
+            return Err(e).with_context(context);
+        }
+        self.csv.flush().with_context(context)
+    }
 }

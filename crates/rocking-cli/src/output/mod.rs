@@ -3,14 +3,17 @@
 //! (shortest round-trip form), never rounded.
 
 mod events;
+mod folder;
 mod guard;
 mod history;
 
 pub use events::write_events;
+pub use folder::Staging;
 pub use guard::refuse_to_overwrite_inputs;
-pub use history::write_history;
+pub use history::HistoryWriter;
 
 use anyhow::Context;
+use rocking_scenario::columns::Value;
 use std::path::Path;
 
 /// The summary file.
@@ -20,14 +23,18 @@ pub const HISTORY: &str = "history.csv";
 /// The event file.
 pub const EVENTS: &str = "events.csv";
 
-/// Writes `summary.json`, pretty-printed.
-pub fn write_summary(path: &Path, summary: &serde_json::Value) -> anyhow::Result<()> {
+/// Writes `summary.json`, pretty-printed, to `path`; `shown` names the file in errors.
+pub fn write_summary(path: &Path, shown: &Path, summary: &serde_json::Value) -> anyhow::Result<()> {
     let mut text = serde_json::to_string_pretty(summary).context("formatting the summary")?;
     text.push('\n');
-    std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+    std::fs::write(path, text).with_context(|| format!("cannot write {}", shown.display()))
 }
 
-/// A number in its shortest form that reads back to the same `f64`.
-fn number(buffer: &mut ryu::Buffer, x: f64) -> &str {
-    buffer.format(x)
+/// Writes one CSV field: a number in its shortest form that reads back to
+/// the same `f64`, or a name.
+fn write_value<W: std::io::Write>(w: &mut csv::Writer<W>, buffer: &mut ryu::Buffer, value: Value) -> csv::Result<()> {
+    match value {
+        Value::Number(x) => w.write_field(buffer.format(x)),
+        Value::Text(t) => w.write_field(t),
+    }
 }

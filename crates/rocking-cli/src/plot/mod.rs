@@ -24,6 +24,7 @@ mod timeline;
 
 use rocking_scenario::{Measure, Outcome, Stripe};
 use std::path::{Path, PathBuf};
+pub use sweep_table::SweepTable;
 
 /// The files `run_figures` writes.
 pub const RUN_FILES: [&str; 4] = ["theta.svg", "theta.png", "slip.svg", "slip.png"];
@@ -54,11 +55,16 @@ pub fn run_figures(dir: &Path, outcome: &Outcome) -> anyhow::Result<Vec<PathBuf>
 /// Draws the figures of a sweep from its `sweep.csv` into `dir`: max θ/α
 /// against the first axis with one curve per value of the second, and for two
 /// numeric axes a heat map; `axis_keys` are the swept dotted keys in order.
+#[cfg(test)]
 pub fn sweep_figures(dir: &Path, title: &str, csv: &Path, axis_keys: &[String]) -> anyhow::Result<Vec<PathBuf>> {
-    let table = sweep_table::SweepTable::read(csv, axis_keys)?;
-    let curves = sweep_curves::CurvesFigure { title, table: &table };
+    sweep_figures_of(dir, title, &sweep_table::SweepTable::read(csv, axis_keys)?)
+}
+
+/// Draws the figures of a sweep from its rows in memory (see [`sweep_figures`]).
+pub fn sweep_figures_of(dir: &Path, title: &str, table: &SweepTable) -> anyhow::Result<Vec<PathBuf>> {
+    let curves = sweep_curves::CurvesFigure { title, table };
     let mut files = style::render(dir, "sweep_max_theta", sweep_curves::SIZE, &curves)?;
-    if let Some(map) = sweep_map::MapFigure::new(title, &table) {
+    if let Some(map) = sweep_map::MapFigure::new(title, table) {
         files.extend(style::render(dir, "sweep_map", sweep_map::SIZE, &map)?);
     }
     Ok(files)

@@ -1,9 +1,14 @@
-//! Reading a sweep's `sweep.csv` for its figures: the swept values of each
-//! case, its max θ/α, whether the tower overturned, and whether it failed
-//! (interface.md, "Sweep file": the swept keys first, then the scalar fields
-//! of summary.json, and an `error` column).
+//! A sweep's cases for its figures: the swept values of each case, its max
+//! θ/α, whether the tower overturned, and whether it failed. The command
+//! fills it from the rows in memory as they come ([`SweepTable::for_rows`]);
+//! the tests also read it from a `sweep.csv` (the swept keys first, then the
+//! scalar fields of summary.json, and an `error` column).
 
-use anyhow::{bail, Context};
+use anyhow::bail;
+#[cfg(test)]
+use anyhow::Context;
+use rocking_scenario::Cell;
+#[cfg(test)]
 use std::path::Path;
 
 /// The column of the plotted value.
@@ -35,19 +40,64 @@ pub struct SweepTable {
     pub cases: Vec<Case>,
 }
 
+/// A [`SweepTable`] being filled from the rows of a sweep in memory.
+#[derive(Debug)]
+pub struct RowTable {
+    table: SweepTable,
+    value: usize,
+    overturned: Option<usize>,
+    error: Option<usize>,
+}
+
+impl RowTable {
+    /// Adds a row (its cells in header order), read as [`SweepTable::read`]
+    /// reads the line `sweep.csv` holds for it.
+    pub fn push(&mut self, cells: &[Cell]) {
+        // The text of a field as written to sweep.csv, then read back by a CSV reader.
+        let text = |c: Option<usize>| -> String {
+            match c.and_then(|c| cells.get(c)) {
+                Some(Cell::Text(t)) => t.trim().to_string(),
+                Some(cell) => {
+                    let mut out = String::new();
+                    cell.write_csv(&mut out);
+                    out
+                }
+                None => String::new(),
+            }
+        };
+        let failed = !matches!(text(self.error).as_str(), "" | "null");
+        let overturned = matches!(text(self.overturned).to_ascii_lowercase().as_str(), "true" | "1");
+        self.table.cases.push(Case {
+            keys: (0..self.table.axes.len()).map(|k| text(Some(k))).collect(),
+            value: if failed { None } else { number(&text(Some(self.value))) },
+            overturned: overturned && !failed,
+            failed,
+        });
+    }
+
+    /// The table of the rows pushed.
+    pub fn finish(self) -> SweepTable {
+        self.table
+    }
+}
+
 /// A value of a swept key as a number, if it is one.
 pub fn number(text: &str) -> Option<f64> {
     text.trim().parse::<f64>().ok().filter(|x| x.is_finite())
 }
 
 impl SweepTable {
-    /// Reads `path`; `axes` are the swept keys (the first columns).
+    /// Reads `path`; `axes` are the swept keys (the first columns). The
+    /// command draws from the rows in memory ([`SweepTable::for_rows`]); the
+    /// tests read files to check it.
+    #[cfg(test)]
     pub fn read(path: &Path, axes: &[String]) -> anyhow::Result<Self> {
         let file = std::fs::File::open(path).with_context(|| format!("cannot read {}", path.display()))?;
         Self::from_reader(file, axes).with_context(|| format!("reading {}", path.display()))
     }
 
     /// Reads a `sweep.csv` from `reader`.
+    #[cfg(test)]
     pub fn from_reader(reader: impl std::io::Read, axes: &[String]) -> anyhow::Result<Self> {
         if axes.is_empty() {
             bail!("a sweep needs at least one swept key to plot against");
@@ -81,6 +131,28 @@ impl SweepTable {
             });
         }
         Ok(Self { axes: axes.to_vec(), cases })
+    }
+
+    /// An empty table for the rows of a sweep whose columns are `header` and
+    /// whose swept keys are `axes` (the first columns), filled by [`SweepTable::push`]
+    /// as the rows come: the figures need no reading back of `sweep.csv`.
+    pub fn for_rows(header: &[String], axes: &[String]) -> anyhow::Result<RowTable> {
+        if axes.is_empty() {
+            bail!("a sweep needs at least one swept key to plot against");
+        }
+        let column = |name: &str| header.iter().position(|h| h == name);
+        let Some(value) = column(VALUE) else {
+            bail!("no column {VALUE} in the header");
+        };
+        Ok(RowTable {
+            table: Self {
+                axes: axes.to_vec(),
+                cases: Vec::new(),
+            },
+            value,
+            overturned: column(OVERTURNED),
+            error: column(ERROR),
+        })
     }
 
     /// The distinct values of axis `k` among `cases`, in order of first appearance.
@@ -146,5 +218,40 @@ ground.frequency,ground.amplitude,building.mu_static,max_theta_over_alpha,overtu
         let e = SweepTable::from_reader("ground.frequency,overturned\n3,false\n".as_bytes(), &axes()[..1]).map(|_| ());
         assert!(format!("{e:?}").contains("no column max_theta_over_alpha"), "{e:?}");
         assert!(SweepTable::from_reader(CSV.as_bytes(), &[]).is_err());
+    }
+
+    #[test]
+    fn the_rows_in_memory_give_the_table_read_from_their_csv() -> anyhow::Result<()> {
+        // A second path to the same table: the cells, and the CSV written from them.
+        let header: Vec<String> = ["ground.frequency", "tower.section", "max_theta_over_alpha", "overturned", "error"]
+            .map(String::from)
+            .to_vec();
+        let rows = [
+            vec![Cell::Float(3.0), Cell::Text("solid".into()), Cell::Float(0.25), Cell::Bool(false), Cell::Empty],
+            vec![Cell::Int(4), Cell::Text("hollow".into()), Cell::Float(4.5), Cell::Bool(true), Cell::Empty],
+            vec![
+                Cell::Float(5.5),
+                Cell::Text("a, b".into()),
+                Cell::Empty,
+                Cell::Empty,
+                Cell::Text("x: \"bad\", really".into()),
+            ],
+        ];
+        let axes = header[..2].to_vec();
+        let mut table = SweepTable::for_rows(&header, &axes)?;
+        let mut csv = rocking_scenario::csv_line(header.iter().map(String::as_str)) + "\n";
+        for row in &rows {
+            table.push(row);
+            let mut fields = Vec::new();
+            for cell in row {
+                let mut field = String::new();
+                cell.write_csv(&mut field);
+                fields.push(field);
+            }
+            csv.push_str(&fields.join(","));
+            csv.push('\n');
+        }
+        assert_eq!(table.finish(), SweepTable::from_reader(csv.as_bytes(), &axes)?);
+        Ok(())
     }
 }

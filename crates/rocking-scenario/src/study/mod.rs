@@ -181,6 +181,7 @@ impl Study {
                         ErrorKind::Read {
                             path: file.clone(),
                             reason: crate::error::io_reason(&e),
+                            os_error: e.raw_os_error(),
                         },
                     )
                     .in_file(&self.origin)

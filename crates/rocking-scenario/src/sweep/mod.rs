@@ -19,9 +19,10 @@ pub use engine::{Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 pub use shard::Shard;
 
+use crate::columns::{Layout, SUMMARY};
 use crate::error::{Error, ErrorKind, Fault};
 use crate::ground::RecordCache;
-use crate::{set_dotted, summary_fields, Outcome, RunOptions, Scenario};
+use crate::{set_dotted, Outcome, RunOptions, Scenario};
 use axis::{alternative, axis_name};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -116,6 +117,7 @@ pub struct Sweep {
     axes: Vec<Axis>,
     len: usize,
     summary_keys: Vec<String>,
+    layout: Layout,
     inputs: Vec<PathBuf>,
     /// Records read by the cases so far, shared by the workers.
     records: RecordCache,
@@ -205,13 +207,17 @@ impl Sweep {
             Some(Value::String(s)) => s.clone(),
             _ => origin.file_stem().map_or_else(|| "sweep".to_string(), |s| s.to_string_lossy().into_owned()),
         };
+        // Known without a run: the optional fields follow the base scenario
+        // (extra points add history columns only, not summary fields).
+        let layout = Layout::default();
         let mut sweep = Self {
             origin: origin.to_path_buf(),
             name,
             base,
             axes: expanded,
             len,
-            summary_keys: summary_keys().map_err(fail)?,
+            summary_keys: SUMMARY.iter().filter(|f| (f.present)(&layout)).map(|f| f.name.to_string()).collect(),
+            layout,
             inputs: Vec::new(),
             records: RecordCache::default(),
         };
@@ -321,8 +327,8 @@ impl Sweep {
             Err(e) => return self.failed_row(index, &e.fault.to_string()),
         };
         let mut cells = self.axis_cells(index);
-        // The fields come in the order `summary_keys` was taken from.
-        cells.extend(summary_fields(&outcome).into_iter().map(|(_, cell)| cell));
+        // The fields come in the order of `summary_keys`.
+        cells.extend(SUMMARY.iter().filter(|f| (f.present)(&self.layout)).map(|f| (f.read)(&outcome)));
         debug_assert_eq!(cells.len(), self.axes.len() + self.summary_keys.len());
         cells.push(Cell::Empty);
         Row { index, cells }
@@ -371,30 +377,20 @@ pub(crate) fn one_line(text: &str) -> String {
     text.split(['\n', '\r']).map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 
-/// The scalar keys of `summary.json` in order, without `wall_time_s` (that is,
-/// those of [`summary_fields`]): the keys
-/// do not depend on the outcome (absent quantities are `null`), so those of a
-/// trivial run (a building at rest for a millisecond) are those of every case.
-pub(crate) fn summary_keys() -> Result<Vec<String>, Fault> {
-    Ok(summary_template()?.into_iter().map(|(k, _)| k).collect())
-}
-
-/// The summary fields of a trivial run (see [`summary_keys`]): their names,
-/// and cells that tell text and boolean fields from numeric ones.
+/// The summary fields of every case, named, with a cell of their kind (text,
+/// flag or number), from the descriptors: known without a run.
 pub(crate) fn summary_template() -> Result<Vec<(String, Cell)>, Fault> {
-    use rocking::{simulate, Building, GroundMotion, Initial, Model, NormalForce, Settings};
-    let model = Model::new(None, Some(Building::new(1.0, 0.5, 0.5, NormalForce::Constant)?), crate::DEFAULT_G)?;
-    let settings = Settings {
-        duration: 1e-3,
-        ..Settings::default()
-    };
-    let summary = simulate(&model, &GroundMotion::None, Initial::default(), &settings, &mut ())?;
-    let outcome = Outcome {
-        name: String::new(),
-        summary,
-        derived: model.derived(),
-        history: None,
-        events: Vec::new(),
-    };
-    Ok(summary_fields(&outcome))
+    let layout = crate::columns::Layout::default();
+    Ok(crate::columns::SUMMARY
+        .iter()
+        .filter(|f| (f.present)(&layout))
+        .map(|f| {
+            let cell = match f.kind {
+                crate::columns::Kind::Number => Cell::Float(0.0),
+                crate::columns::Kind::Flag => Cell::Bool(false),
+                crate::columns::Kind::Text => Cell::Text(String::new()),
+            };
+            (f.name.to_string(), cell)
+        })
+        .collect())
 }

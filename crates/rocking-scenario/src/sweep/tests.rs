@@ -5,6 +5,7 @@
 
 use super::axis::STRING_KEYS;
 use super::*;
+use crate::summary_fields;
 use crate::{summary_json, summary_scalars};
 use std::convert::Infallible;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -1,0 +1,148 @@
+//! An output folder owned by one run: the files are written under a hidden
+//! staging folder inside it and moved into place only when the run succeeds,
+//! so the folder never mixes two runs and a failed run leaves nothing.
+//!
+//! What a run owns: the files this tool writes ([`KNOWN`]). When a run
+//! succeeds, the known files of an earlier run that this one did not write
+//! (figures of an earlier `--plot`, a `summary.json` beside a new `sweep.csv`)
+//! are removed and the rest replaced; any other file in the folder (the
+//! user's own, the scenario itself) is left as it is. When a run fails or is
+//! cut short, the staging folder is removed and the folder keeps the earlier
+//! run's files untouched.
+
+use super::guard::is_input;
+use anyhow::Context;
+use std::path::{Path, PathBuf};
+
+/// Every file name this tool writes into an output folder.
+pub const KNOWN: [&str; 20] = [
+    "summary.json",
+    "history.csv",
+    "events.csv",
+    "theta.svg",
+    "theta.png",
+    "slip.svg",
+    "slip.png",
+    "sweep.csv",
+    "sweep_max_theta.svg",
+    "sweep_max_theta.png",
+    "sweep_map.svg",
+    "sweep_map.png",
+    "shard.json",
+    "stripes.csv",
+    "fragility.csv",
+    "fractions.csv",
+    "ida.svg",
+    "ida.png",
+    "fragility.svg",
+    "fragility.png",
+];
+
+/// A folder being written: files go to [`Staging::path`]; [`Staging::commit`]
+/// moves them into place; dropping it without a commit removes them.
+#[derive(Debug)]
+pub struct Staging {
+    dir: PathBuf,
+    staging: PathBuf,
+    inputs: Vec<PathBuf>,
+}
+
+impl Staging {
+    /// Creates `dir` if needed and an empty staging folder in it. `inputs`
+    /// (the scenario, a record) are never removed, even under a known name.
+    pub fn new(dir: &Path, inputs: &[PathBuf]) -> anyhow::Result<Self> {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+        let staging = dir.join(format!(".rocking-partial-{}", std::process::id()));
+        if staging.exists() {
+            std::fs::remove_dir_all(&staging).with_context(|| format!("cannot clear {}", staging.display()))?;
+        }
+        std::fs::create_dir(&staging).with_context(|| format!("cannot write into the output folder {}", dir.display()))?;
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            staging,
+            inputs: inputs.to_vec(),
+        })
+    }
+
+    /// The staging folder (figures are drawn there under their final names).
+    pub fn folder(&self) -> &Path {
+        &self.staging
+    }
+
+    /// Where to write the file `name` until the commit.
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.staging.join(name)
+    }
+
+    /// Removes the known files of an earlier run that this one did not write,
+    /// then moves this run's files into the folder (each rename is atomic).
+    pub fn commit(self) -> anyhow::Result<()> {
+        let written: Vec<_> = std::fs::read_dir(&self.staging)
+            .with_context(|| format!("cannot read {}", self.staging.display()))?
+            .filter_map(|e| e.ok().map(|e| e.file_name()))
+            .collect();
+        // A name that a rename cannot replace (a folder) fails before anything moves.
+        for name in &written {
+            let to = self.dir.join(name);
+            if to.is_dir() {
+                anyhow::bail!("cannot write {}: it is a folder", to.display());
+            }
+        }
+        for name in KNOWN {
+            let old = self.dir.join(name);
+            if !written.iter().any(|w| w == name) && old.is_file() && !is_input(&old, &self.inputs) {
+                std::fs::remove_file(&old).with_context(|| format!("cannot remove {} of an earlier run", old.display()))?;
+            }
+        }
+        for name in &written {
+            let to = self.dir.join(name);
+            std::fs::rename(self.staging.join(name), &to).with_context(|| format!("cannot write {}", to.display()))?;
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Staging {
+    fn drop(&mut self) {
+        // Committed: empty; failed: this run's partial files. Nothing else is there.
+        let _ = std::fs::remove_dir_all(&self.staging);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_commit_replaces_the_known_files_and_keeps_the_others() -> anyhow::Result<()> {
+        let dir = tempfile::tempdir()?;
+        for name in ["summary.json", "theta.svg", "notes.txt"] {
+            std::fs::write(dir.path().join(name), "old")?;
+        }
+        let staging = Staging::new(dir.path(), &[])?;
+        std::fs::write(staging.path("summary.json"), "new")?;
+        staging.commit()?;
+        let mut names: Vec<String> = std::fs::read_dir(dir.path())?
+            .map(|e| Ok(e?.file_name().to_string_lossy().into_owned()))
+            .collect::<std::io::Result<_>>()?;
+        names.sort();
+        // The stale figure is gone, the user's file stays, no staging folder is left.
+        assert_eq!(names, ["notes.txt", "summary.json"]);
+        assert_eq!(std::fs::read_to_string(dir.path().join("summary.json"))?, "new");
+        Ok(())
+    }
+
+    #[test]
+    fn a_dropped_staging_leaves_the_folder_as_it_was() -> anyhow::Result<()> {
+        let dir = tempfile::tempdir()?;
+        std::fs::write(dir.path().join("summary.json"), "old")?;
+        {
+            let staging = Staging::new(dir.path(), &[])?;
+            std::fs::write(staging.path("summary.json"), "half")?;
+        }
+        let names: Vec<_> = std::fs::read_dir(dir.path())?.collect::<std::io::Result<_>>()?;
+        assert_eq!(names.len(), 1);
+        assert_eq!(std::fs::read_to_string(dir.path().join("summary.json"))?, "old");
+        Ok(())
+    }
+}

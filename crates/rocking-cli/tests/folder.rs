@@ -1,0 +1,104 @@
+//! Regression (issue "Hardening", the output folder is never a mix): a run
+//! into a folder holding an earlier run's figures left them beside the new
+//! results; a run that failed while writing left its `summary.json`; a sweep
+//! into a run's folder left the run's files beside `sweep.csv`. A run now owns
+//! its folder: its files are staged and moved into place at the end, the
+//! known files of an earlier run it did not write are removed, and a failure
+//! leaves the folder as it was.
+
+use crate::util::{arg, read, rocking, tempdir, write, SCENARIO};
+use std::path::Path;
+
+/// The names in `dir`, sorted.
+fn names(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()).unwrap_or_else(|e| panic!("{e}")))
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn a_run_without_plot_removes_the_figures_of_an_earlier_run() {
+    let dir = tempdir();
+    let a = write(dir.path(), "a.toml", SCENARIO);
+    let b = write(dir.path(), "b.toml", &SCENARIO.replace("name = \"small\"", "name = \"other\""));
+    let out = dir.path().join("out");
+    let r = rocking(&["run", arg(&a), "--out", arg(&out), "--plot"]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    assert!(names(&out).contains(&"theta.svg".to_string()));
+    let r = rocking(&["run", arg(&b), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    assert_eq!(names(&out), ["events.csv", "history.csv", "summary.json"]);
+    assert!(read(&out.join("summary.json")).contains("\"other\""));
+}
+
+#[test]
+fn a_run_that_fails_while_writing_leaves_the_folder_as_it_was() {
+    let dir = tempdir();
+    let file = write(dir.path(), "s.toml", SCENARIO);
+    let out = dir.path().join("out");
+    // history.csv cannot be written: a folder holds its name.
+    std::fs::create_dir_all(out.join("history.csv")).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(out.join("notes.txt"), "mine").unwrap_or_else(|e| panic!("{e}"));
+    let r = rocking(&["run", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
+    assert!(r.stderr.contains("history.csv"), "{r:?}");
+    // Nothing of the failed run: no summary.json, no staging folder; the user's file kept.
+    assert_eq!(names(&out), ["history.csv", "notes.txt"]);
+}
+
+#[test]
+fn a_sweep_into_a_run_folder_removes_the_run_files_and_keeps_the_others() {
+    let dir = tempdir();
+    let file = write(dir.path(), "s.toml", SCENARIO);
+    let sweep = write(dir.path(), "sw.toml", &format!("{SCENARIO}\n[sweep]\n\"ground.frequency\" = [4.0, 5.0]\n"));
+    let out = dir.path().join("out");
+    let r = rocking(&["run", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    std::fs::write(out.join("notes.txt"), "mine").unwrap_or_else(|e| panic!("{e}"));
+    let r = rocking(&["sweep", arg(&sweep), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    assert_eq!(names(&out), ["notes.txt", "sweep.csv"]);
+    // Two cases: the header and two rows.
+    assert_eq!(read(&out.join("sweep.csv")).lines().count(), 3);
+}
+
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let dir = tempdir();
+    // 10^6 history rows over 1000 s: far longer than the test waits.
+    let text = SCENARIO
+        .replace("duration = 1.0", "duration = 1000.0")
+        .replace("output_dt = 0.003", "output_dt = 0.001");
+    let file = write(dir.path(), "long.toml", &text);
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(&out).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(out.join("summary.json"), "earlier").unwrap_or_else(|e| panic!("{e}"));
+    let child = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(["run", arg(&file), "--out", arg(&out)])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    // Wait until the history is being written in the staging folder.
+    let partial = out.join(format!(".rocking-partial-{}", child.id())).join("history.csv");
+    let start = Instant::now();
+    while std::fs::metadata(&partial).map_or(0, |m| m.len()) < 100_000 {
+        assert!(start.elapsed() < Duration::from_secs(60), "no history after a minute");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
+    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
+    let r = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let stderr = String::from_utf8_lossy(&r.stderr);
+    assert_eq!(r.status.code(), Some(130), "{stderr}");
+    assert_eq!(stderr.trim(), "interrupted: nothing written");
+    assert_eq!(names(&out), ["summary.json"]);
+    assert_eq!(read(&out.join("summary.json")), "earlier");
+}

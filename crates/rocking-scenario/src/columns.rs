@@ -1,0 +1,723 @@
+//! One descriptor per output column and summary field: its name, unit,
+//! meaning, when it is present and how it is read from a run. Every writer
+//! takes its columns from here (the command's `history.csv`, `events.csv`,
+//! `summary.json` and `sweep.csv`, the Python arrays and dicts, the figures),
+//! and so does the outputs reference ([`outputs_markdown`]); a column added to
+//! one of these lists appears in all of them.
+//!
+//! An optional column is one entry with a presence condition on the run's
+//! [`Layout`] (a vertical ground motion, when it comes, adds `ground_acc_v`).
+
+use crate::run::Outcome;
+use crate::sweep::Cell;
+use rocking::{EndReason, Event, Motion, Sample};
+
+/// What a run's outputs hold beyond the fixed columns: the presence
+/// conditions read it. Known before the run (from the scenario).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Layout {
+    /// Extra tower points (`tower.points`): `pK_dx`, `pK_abs_acc` for K = 1..=points.
+    pub points: usize,
+}
+
+/// How a column is read from a record of type `T`.
+#[derive(Clone, Copy)]
+pub enum Read<T> {
+    /// A number, written in its shortest round-trip form.
+    Number(fn(&T) -> f64),
+    /// A name (`rocking`, `impact`).
+    Text(fn(&T) -> &'static str),
+}
+
+/// A column of a CSV file (and of the matching Python arrays or dicts).
+#[derive(Clone, Copy)]
+pub struct Column<T> {
+    /// Header name.
+    pub name: &'static str,
+    /// SI unit, empty for a name or a pure number.
+    pub unit: &'static str,
+    /// What it is, for the reference.
+    pub meaning: &'static str,
+    /// Whether a run of this layout has the column.
+    pub present: fn(&Layout) -> bool,
+    /// How it is read.
+    pub read: Read<T>,
+}
+
+impl<T> std::fmt::Debug for Column<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Column").field("name", &self.name).finish_non_exhaustive()
+    }
+}
+
+/// Every run has the column.
+pub fn always(_: &Layout) -> bool {
+    true
+}
+
+/// One row of `history.csv`: a sample and the `(dx, abs_acc)` of each extra point.
+#[derive(Debug, Clone, Copy)]
+pub struct HistoryRow<'a> {
+    /// The response at the row's time.
+    pub sample: &'a Sample,
+    /// `(dx, abs_acc)` of each extra point, in the order of `tower.points`.
+    pub points: &'a [(f64, f64)],
+}
+
+/// The columns of `history.csv` before the extra points, in order.
+pub const HISTORY: &[Column<Sample>] = &[
+    Column {
+        name: "t",
+        unit: "s",
+        meaning: "time",
+        present: always,
+        read: Read::Number(|s| s.t),
+    },
+    Column {
+        name: "ground_acc",
+        unit: "m/s²",
+        meaning: "horizontal ground acceleration",
+        present: always,
+        read: Read::Number(|s| s.ground_acc),
+    },
+    Column {
+        name: "theta",
+        unit: "rad",
+        meaning: "rotation of the tower",
+        present: always,
+        read: Read::Number(|s| s.state.theta),
+    },
+    Column {
+        name: "theta_dot",
+        unit: "rad/s",
+        meaning: "angular velocity of the tower",
+        present: always,
+        read: Read::Number(|s| s.state.theta_dot),
+    },
+    Column {
+        name: "slip",
+        unit: "m",
+        meaning: "slip of the building on its foundation",
+        present: always,
+        read: Read::Number(|s| s.state.slip),
+    },
+    Column {
+        name: "slip_vel",
+        unit: "m/s",
+        meaning: "slip velocity of the building",
+        present: always,
+        read: Read::Number(|s| s.state.slip_vel),
+    },
+    Column {
+        name: "top_dx",
+        unit: "m",
+        meaning: "horizontal displacement of the top centre relative to the building",
+        present: always,
+        read: Read::Number(|s| s.top_dx),
+    },
+    Column {
+        name: "top_abs_acc",
+        unit: "m/s²",
+        meaning: "absolute horizontal acceleration of the top centre",
+        present: always,
+        read: Read::Number(|s| s.top_abs_acc),
+    },
+    Column {
+        name: "regime",
+        unit: "",
+        meaning: "combined motion: `rest`, `rocking`, `sliding` or `rocking_sliding`",
+        present: always,
+        read: Read::Text(|s| s.motion.as_str()),
+    },
+];
+
+/// A column repeated for each extra point K: named `p{K}_{suffix}`.
+#[derive(Debug, Clone, Copy)]
+pub struct PointColumn {
+    /// The part of the name after `pK_`.
+    pub suffix: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// What it is, for the reference.
+    pub meaning: &'static str,
+    /// How it is read from the point's `(dx, abs_acc)`.
+    pub read: fn(&(f64, f64)) -> f64,
+}
+
+/// The columns of each extra point, after the fixed ones.
+pub const HISTORY_POINTS: &[PointColumn] = &[
+    PointColumn {
+        suffix: "dx",
+        unit: "m",
+        meaning: "horizontal displacement of point K relative to the building",
+        read: |p| p.0,
+    },
+    PointColumn {
+        suffix: "abs_acc",
+        unit: "m/s²",
+        meaning: "absolute horizontal acceleration of point K",
+        read: |p| p.1,
+    },
+];
+
+/// The columns of `events.csv`, in order (`theta`, `slip_vel`, `slip` and `regime` after the event).
+pub const EVENTS: &[Column<Event>] = &[
+    Column {
+        name: "t",
+        unit: "s",
+        meaning: "time of the event",
+        present: always,
+        read: Read::Number(|e| e.time),
+    },
+    Column {
+        name: "kind",
+        unit: "",
+        meaning: "`uplift`, `impact`, `rest`, `slip`, `stick`, `reverse` or `overturn`",
+        present: always,
+        read: Read::Text(|e| e.kind.as_str()),
+    },
+    Column {
+        name: "theta",
+        unit: "rad",
+        meaning: "rotation after the event",
+        present: always,
+        read: Read::Number(|e| e.after.theta),
+    },
+    Column {
+        name: "theta_dot_before",
+        unit: "rad/s",
+        meaning: "angular velocity before the event",
+        present: always,
+        read: Read::Number(|e| e.before.theta_dot),
+    },
+    Column {
+        name: "theta_dot_after",
+        unit: "rad/s",
+        meaning: "angular velocity after the event",
+        present: always,
+        read: Read::Number(|e| e.after.theta_dot),
+    },
+    Column {
+        name: "slip_vel",
+        unit: "m/s",
+        meaning: "slip velocity after the event",
+        present: always,
+        read: Read::Number(|e| e.after.slip_vel),
+    },
+    Column {
+        name: "slip",
+        unit: "m",
+        meaning: "slip after the event",
+        present: always,
+        read: Read::Number(|e| e.after.slip),
+    },
+    Column {
+        name: "regime",
+        unit: "",
+        meaning: "combined motion after the event",
+        present: always,
+        read: Read::Text(|e| e.regime.motion().as_str()),
+    },
+];
+
+/// What a summary field holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A number (or `null`).
+    Number,
+    /// `true` or `false`.
+    Flag,
+    /// A name.
+    Text,
+}
+
+/// A field of `summary.json` (a dotted name is nested: `time_in_regime_s.rest`)
+/// and a column of `sweep.csv`.
+#[derive(Clone, Copy)]
+pub struct Field {
+    /// Key, dotted when nested.
+    pub name: &'static str,
+    /// What the values are (the type of a Python column when every case failed).
+    pub kind: Kind,
+    /// SI unit, empty for a count, a ratio, a flag or a name.
+    pub unit: &'static str,
+    /// What it is, for the reference.
+    pub meaning: &'static str,
+    /// Whether a run of this layout has the field.
+    pub present: fn(&Layout) -> bool,
+    /// How it is read; [`Cell::Empty`] (`null`) where the quantity does not exist.
+    pub read: fn(&Outcome) -> Cell,
+}
+
+impl std::fmt::Debug for Field {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Field").field("name", &self.name).finish_non_exhaustive()
+    }
+}
+
+fn float(v: Option<f64>) -> Cell {
+    v.filter(|v| v.is_finite()).map_or(Cell::Empty, Cell::Float)
+}
+fn tower(o: &Outcome, v: f64) -> Cell {
+    float(o.derived.alpha.is_some().then_some(v))
+}
+fn building(o: &Outcome, v: f64) -> Cell {
+    float(o.derived.slip_acceleration_g.is_some().then_some(v))
+}
+fn count(n: u64) -> Cell {
+    i64::try_from(n).map_or(Cell::Float(n as f64), Cell::Int)
+}
+fn time_in(o: &Outcome, m: Motion) -> Cell {
+    float(Some(o.summary.time_in(m)))
+}
+
+/// The fields of `summary.json` but `wall_time_s` (last, not a result of the
+/// model), in order: also the result columns of `sweep.csv`.
+pub const SUMMARY: &[Field] = &[
+    Field {
+        name: "name",
+        kind: Kind::Text,
+        unit: "",
+        meaning: "the scenario's name",
+        present: always,
+        read: |o| Cell::Text(o.name.clone()),
+    },
+    Field {
+        name: "alpha_rad",
+        kind: Kind::Number,
+        unit: "rad",
+        meaning: "slenderness angle α of the tower",
+        present: always,
+        read: |o| float(o.derived.alpha),
+    },
+    Field {
+        name: "R_m",
+        kind: Kind::Number,
+        unit: "m",
+        meaning: "distance R from a base corner to the centre of mass",
+        present: always,
+        read: |o| float(o.derived.radius),
+    },
+    Field {
+        name: "p_rad_s",
+        kind: Kind::Number,
+        unit: "rad/s",
+        meaning: "frequency parameter p of the tower",
+        present: always,
+        read: |o| float(o.derived.p),
+    },
+    Field {
+        name: "restitution",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "coefficient of restitution r of an impact",
+        present: always,
+        read: |o| float(o.derived.restitution),
+    },
+    Field {
+        name: "uplift_acceleration_g",
+        kind: Kind::Number,
+        unit: "g",
+        meaning: "ground acceleration that lifts the tower from rest",
+        present: always,
+        read: |o| float(o.derived.uplift_acceleration_g),
+    },
+    Field {
+        name: "slip_acceleration_g",
+        kind: Kind::Number,
+        unit: "g",
+        meaning: "ground acceleration that makes the building slip from rest",
+        present: always,
+        read: |o| float(o.derived.slip_acceleration_g),
+    },
+    Field {
+        name: "max_abs_theta_rad",
+        kind: Kind::Number,
+        unit: "rad",
+        meaning: "largest rotation in absolute value",
+        present: always,
+        read: |o| tower(o, o.summary.max_abs_theta()),
+    },
+    Field {
+        name: "max_theta_over_alpha",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "largest rotation over α",
+        present: always,
+        read: |o| float(o.derived.alpha.map(|a| o.summary.max_abs_theta() / a)),
+    },
+    Field {
+        name: "max_abs_slip_m",
+        kind: Kind::Number,
+        unit: "m",
+        meaning: "largest slip in absolute value",
+        present: always,
+        read: |o| building(o, o.summary.max_abs_slip),
+    },
+    Field {
+        name: "final_slip_m",
+        kind: Kind::Number,
+        unit: "m",
+        meaning: "slip at the end of the run",
+        present: always,
+        read: |o| building(o, o.summary.final_slip),
+    },
+    Field {
+        name: "impacts",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "number of impacts",
+        present: always,
+        read: |o| if o.derived.alpha.is_some() { count(o.summary.impacts) } else { Cell::Empty },
+    },
+    Field {
+        name: "overturned",
+        kind: Kind::Flag,
+        unit: "",
+        meaning: "whether the tower overturned",
+        present: always,
+        read: |o| Cell::Bool(o.summary.overturned()),
+    },
+    Field {
+        name: "overturn_time_s",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time of overturning",
+        present: always,
+        read: |o| float(o.summary.overturn_time),
+    },
+    Field {
+        name: "first_uplift_time_s",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time of the first uplift",
+        present: always,
+        read: |o| float(o.summary.first_uplift_time),
+    },
+    Field {
+        name: "first_slip_time_s",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time the building first slipped",
+        present: always,
+        read: |o| float(o.summary.first_slip_time),
+    },
+    Field {
+        name: "max_top_displacement_m",
+        kind: Kind::Number,
+        unit: "m",
+        meaning: "largest horizontal displacement of the top relative to the building",
+        present: always,
+        read: |o| tower(o, o.summary.max_top_displacement),
+    },
+    Field {
+        name: "max_top_abs_acceleration_m_s2",
+        kind: Kind::Number,
+        unit: "m/s²",
+        meaning: "largest absolute horizontal acceleration of the top",
+        present: always,
+        read: |o| tower(o, o.summary.max_top_abs_acceleration),
+    },
+    Field {
+        name: "max_pivot_friction_demand",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "largest ratio of friction force to normal force at the pivot",
+        present: always,
+        read: |o| tower(o, o.summary.max_pivot_friction_demand),
+    },
+    Field {
+        name: "tower_uplift_detected",
+        kind: Kind::Flag,
+        unit: "",
+        meaning: "whether the tower ever lifted",
+        present: always,
+        read: |o| Cell::Bool(o.summary.tower_uplift_detected),
+    },
+    Field {
+        name: "time_in_regime_s.rest",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time at rest",
+        present: always,
+        read: |o| time_in(o, Motion::Rest),
+    },
+    Field {
+        name: "time_in_regime_s.rocking",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time rocking on a fixed base",
+        present: always,
+        read: |o| time_in(o, Motion::Rocking),
+    },
+    Field {
+        name: "time_in_regime_s.sliding",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time sliding with the tower at rest",
+        present: always,
+        read: |o| time_in(o, Motion::Sliding),
+    },
+    Field {
+        name: "time_in_regime_s.rocking_sliding",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time rocking and sliding",
+        present: always,
+        read: |o| time_in(o, Motion::RockingSliding),
+    },
+    Field {
+        name: "end_time_s",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "time the run ended",
+        present: always,
+        read: |o| float(Some(o.summary.end_time)),
+    },
+    Field {
+        name: "end_reason",
+        kind: Kind::Text,
+        unit: "",
+        meaning: "`end_of_duration` or `overturned`",
+        present: always,
+        read: |o| {
+            Cell::Text(
+                match o.summary.end_reason {
+                    EndReason::EndOfDuration => "end_of_duration",
+                    EndReason::Overturned => "overturned",
+                }
+                .to_string(),
+            )
+        },
+    },
+    Field {
+        name: "min_theta_rad",
+        kind: Kind::Number,
+        unit: "rad",
+        meaning: "least rotation",
+        present: always,
+        read: |o| tower(o, o.summary.theta_range.0),
+    },
+    Field {
+        name: "max_theta_rad",
+        kind: Kind::Number,
+        unit: "rad",
+        meaning: "largest rotation",
+        present: always,
+        read: |o| tower(o, o.summary.theta_range.1),
+    },
+    Field {
+        name: "events",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "number of events (rows of events.csv)",
+        present: always,
+        read: |o| count(o.summary.events),
+    },
+    Field {
+        name: "rhs_evaluations",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "evaluations of the equations of motion",
+        present: always,
+        read: |o| count(o.summary.evaluations),
+    },
+];
+
+/// The last field of `summary.json` (and column of `sweep.csv` before `error`): the run's wall-clock time.
+pub const WALL_TIME: Field = Field {
+    name: "wall_time_s",
+    kind: Kind::Number,
+    unit: "s",
+    meaning: "wall-clock time of the run (the only field that differs between two runs of the same case)",
+    present: always,
+    read: |_| Cell::Empty,
+};
+
+/// The header of `history.csv` for `layout`, from `columns` and `points`.
+pub fn history_header(columns: &[Column<Sample>], points: &[PointColumn], layout: &Layout) -> Vec<String> {
+    let mut header: Vec<String> = columns.iter().filter(|c| (c.present)(layout)).map(|c| c.name.to_string()).collect();
+    for k in 1..=layout.points {
+        header.extend(points.iter().map(|p| format!("p{k}_{}", p.suffix)));
+    }
+    header
+}
+
+/// Hands `cell` every value of a history row, in header order.
+pub fn history_values<'a>(columns: &[Column<Sample>], points: &[PointColumn], layout: &Layout, row: HistoryRow<'a>, mut cell: impl FnMut(Value)) {
+    for c in columns.iter().filter(|c| (c.present)(layout)) {
+        cell(c.read.value(row.sample));
+    }
+    for p in row.points {
+        for c in points {
+            cell(Value::Number((c.read)(p)));
+        }
+    }
+}
+
+/// One value of a CSV row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Value {
+    /// A number.
+    Number(f64),
+    /// A name.
+    Text(&'static str),
+}
+
+impl<T> Read<T> {
+    /// The value of `record`.
+    pub fn value(&self, record: &T) -> Value {
+        match self {
+            Read::Number(f) => Value::Number(f(record)),
+            Read::Text(f) => Value::Text(f(record)),
+        }
+    }
+}
+
+/// The summary fields of `outcome` present in `layout`, in order, as `(name, cell)`.
+pub fn fields_of(fields: &[Field], layout: &Layout, outcome: &Outcome) -> Vec<(String, Cell)> {
+    fields
+        .iter()
+        .filter(|f| (f.present)(layout))
+        .map(|f| (f.name.to_string(), (f.read)(outcome)))
+        .collect()
+}
+
+/// The outputs reference (Markdown): every column and field with its unit and
+/// meaning, generated from the lists of this module.
+pub fn outputs_markdown() -> String {
+    outputs_markdown_of(HISTORY, HISTORY_POINTS, EVENTS, SUMMARY)
+}
+
+/// The reference of the given lists (see [`outputs_markdown`]).
+pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], events: &[Column<Event>], summary: &[Field]) -> String {
+    let mut out = String::from(
+        "<!-- generated -->\n<!-- from crates/rocking-scenario/src/columns.rs: do not edit; UPDATE_OUTPUTS_MD=1 cargo test -p rocking-scenario --test outputs_reference rewrites it -->\n\n# Outputs\n\n\
+         Every number is in SI units and written with every digit (the shortest form that reads back to the same value).\n\n",
+    );
+    let unit = |u: &str| if u.is_empty() { "–".to_string() } else { u.to_string() };
+    out.push_str("## `history.csv`\n\nOne row every `simulation.output_dt` seconds.\n\n| column | unit | meaning |\n|---|---|---|\n");
+    for c in history {
+        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), c.meaning));
+    }
+    for p in points {
+        out.push_str(&format!(
+            "| `pK_{}` | {} | {} (one pair per entry K = 1, 2, … of `tower.points`) |\n",
+            p.suffix,
+            unit(p.unit),
+            p.meaning
+        ));
+    }
+    out.push_str("\n## `events.csv`\n\nOne row per event (a change of regime), in time order.\n\n| column | unit | meaning |\n|---|---|---|\n");
+    for c in events {
+        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), c.meaning));
+    }
+    out.push_str(
+        "\n## `summary.json` and `sweep.csv`\n\n`summary.json` holds these fields in this order (a dotted name is a nested object); \
+         `null` where a quantity does not exist (the tower's without a tower, the slip's without a building). \
+         `sweep.csv` has one column per swept key, then these fields, then `error` (empty, or why the case failed).\n\n\
+         | field | unit | meaning |\n|---|---|---|\n",
+    );
+    for f in summary.iter().chain([&WALL_TIME]) {
+        out.push_str(&format!("| `{}` | {} | {} |\n", f.name, unit(f.unit), f.meaning));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{RunOptions, Scenario};
+    use std::path::Path;
+
+    /// A column added to the list, optional (present only with extra points,
+    /// standing in for a vertical motion's `ground_acc_v`): twice the ground
+    /// acceleration, so its value is checked against another column.
+    const EXTRA: Column<Sample> = Column {
+        name: "twice_ground_acc",
+        unit: "m/s²",
+        meaning: "a column added for the test",
+        present: |l| l.points > 0,
+        read: Read::Number(|s| 2.0 * s.ground_acc),
+    };
+
+    fn outcome(points: &str) -> Outcome {
+        let text = format!(
+            "[tower]\nwidth = 4\nheight = 12.0\nmass = 1.5e5\n{points}\n[ground]\ntype = \"sine-pulse\"\namplitude = 0.6\nfrequency = 1.0\n[simulation]\nduration = 0.5\noutput_dt = 0.05\n"
+        );
+        let case = Scenario::from_toml_str(&text, Path::new("t.toml"))
+            .and_then(|s| s.build())
+            .unwrap_or_else(|e| panic!("{e}"));
+        case.run(RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn a_column_added_to_the_list_appears_in_the_header_the_rows_and_the_reference() {
+        let mut columns = HISTORY.to_vec();
+        columns.insert(HISTORY.len(), EXTRA); // after `regime`, before the points
+        let with = outcome("points = [[0.0, 6.0]]");
+        let header = history_header(&columns, HISTORY_POINTS, &with.layout);
+        assert_eq!(header[HISTORY.len()], "twice_ground_acc");
+        assert_eq!(&header[HISTORY.len() + 1..], ["p1_dx", "p1_abs_acc"]);
+        let Some(history) = &with.history else { panic!("no history") };
+        for (sample, points) in history.samples.iter().zip(&history.point_values) {
+            let mut values = Vec::new();
+            history_values(&columns, HISTORY_POINTS, &with.layout, HistoryRow { sample, points }, |v| values.push(v));
+            assert_eq!(values.len(), header.len());
+            // Doubling is exact in binary floating point.
+            assert_eq!(values[HISTORY.len()], Value::Number(2.0 * sample.ground_acc));
+        }
+        // Absent where its condition does not hold: the header is today's.
+        let without = outcome("");
+        let names: Vec<&str> = HISTORY.iter().map(|c| c.name).collect();
+        assert_eq!(history_header(&columns, HISTORY_POINTS, &without.layout), names);
+        let reference = outputs_markdown_of(&columns, HISTORY_POINTS, EVENTS, SUMMARY);
+        assert!(reference.contains("| `twice_ground_acc` | m/s² | a column added for the test |"), "{reference}");
+    }
+
+    #[test]
+    fn a_field_added_to_the_list_appears_in_the_summary_and_the_reference() {
+        let mut fields = SUMMARY.to_vec();
+        fields.push(Field {
+            name: "impacts_plus_one",
+            kind: Kind::Number,
+            unit: "",
+            meaning: "a field added for the test",
+            present: always,
+            read: |o| Cell::Int(o.summary.impacts as i64 + 1),
+        });
+        let o = outcome("");
+        let cells = fields_of(&fields, &o.layout, &o);
+        assert_eq!(cells.len(), SUMMARY.len() + 1);
+        assert_eq!(cells.last().map(|(k, _)| k.as_str()), Some("impacts_plus_one"));
+        assert_eq!(cells.last().map(|(_, c)| c.clone()), Some(Cell::Int(o.summary.impacts as i64 + 1)));
+        assert!(outputs_markdown_of(HISTORY, HISTORY_POINTS, EVENTS, &fields).contains("`impacts_plus_one`"));
+    }
+
+    #[test]
+    fn each_field_kind_is_that_of_its_cells() {
+        // A run with a tower and one without a building (null slip quantities).
+        for o in [outcome(""), outcome("points = [[0.0, 6.0]]")] {
+            for f in SUMMARY {
+                let cell = (f.read)(&o);
+                let ok = match f.kind {
+                    Kind::Text => matches!(cell, Cell::Text(_)),
+                    Kind::Flag => matches!(cell, Cell::Bool(_)),
+                    Kind::Number => matches!(cell, Cell::Float(_) | Cell::Int(_) | Cell::Empty),
+                };
+                assert!(ok, "{}: {:?} is not a {:?}", f.name, cell, f.kind);
+            }
+        }
+    }
+
+    #[test]
+    fn the_summary_fields_are_those_of_summary_json_in_order() {
+        // summary.json flattened: an independent walk of the JSON object.
+        let o = outcome("");
+        let json = crate::summary_json(&o, 0.0);
+        let keys: Vec<String> = crate::summary_scalars(&json).into_iter().map(|(k, _)| k).collect();
+        let mut expected: Vec<String> = SUMMARY.iter().map(|f| f.name.to_string()).collect();
+        expected.push(WALL_TIME.name.to_string());
+        assert_eq!(keys, expected);
+    }
+}
