@@ -76,7 +76,7 @@ mod tower;
 mod tests;
 
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
-pub use error::{Error, ErrorKind, Fault};
+pub use error::{key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
