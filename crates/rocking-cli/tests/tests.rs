@@ -6,5 +6,6 @@ mod util;
 mod check;
 mod errors;
 mod guard;
+mod hardening;
 mod run;
 mod sweep;

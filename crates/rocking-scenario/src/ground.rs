@@ -404,7 +404,7 @@ impl RecordSpec {
     /// The motion and its description, once read: `record` scaled by `scale`.
     fn finish(&self, record: Record, format: RecordFormat, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
         let record = record.scaled(self.scale);
-        let peak_g = record.peak().1.abs() / g;
+        let peak_g = record.peak().0 / g;
         // Record values are finite (the reader checks), so the peak is a number.
         if peak_g > MAX_PEAK_G {
             // The scale is the one given (1 when absent): exact comparison is meant.
