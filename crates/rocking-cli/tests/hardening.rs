@@ -148,3 +148,32 @@ fn out_of_scale_dimensions_are_named_not_the_inertia() {
         refused(&scenario_with(from, to), &[key, "must be between"], &["inertia_pivot"]);
     }
 }
+
+/// A scenario `name` with a control character, `&` and `<` made theta.svg
+/// invalid XML (XML 1.0 allows no control character but tab and line ends,
+/// escaped or not). Every byte of every figure must now be allowed, and the
+/// markup characters must arrive escaped.
+#[test]
+fn names_are_escaped_in_every_figure() {
+    let text = scenario_with("name = \"small\"", "name = \"bell \\u0001 tower & <church>\"");
+    let dir = tempdir();
+    let file = write(dir.path(), "named.toml", &text);
+    let out = dir.path().join("out");
+    let r = crate::util::rocking_in(
+        dir.path(),
+        &["run", file.to_str().unwrap_or_default(), "--out", out.to_str().unwrap_or_default(), "--plot"],
+    );
+    assert_eq!(r.code, Some(0), "{r:?}");
+    let mut figures = 0;
+    for entry in std::fs::read_dir(&out).unwrap_or_else(|e| panic!("{e}")) {
+        let path = entry.unwrap_or_else(|e| panic!("{e}")).path();
+        if path.extension().is_some_and(|e| e == "svg") {
+            figures += 1;
+            let svg = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
+            let bad = svg.chars().find(|&c| c.is_control() && !matches!(c, '\t' | '\n' | '\r'));
+            assert_eq!(bad, None, "{} holds a control character", path.display());
+            assert!(svg.contains("tower &amp; &lt;church&gt;"), "{} lacks the escaped name", path.display());
+        }
+    }
+    assert!(figures >= 2, "theta.svg and slip.svg expected, found {figures} figures");
+}
