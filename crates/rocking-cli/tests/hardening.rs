@@ -177,3 +177,38 @@ fn names_are_escaped_in_every_figure() {
     }
     assert!(figures >= 2, "theta.svg and slip.svg expected, found {figures} figures");
 }
+
+/// A sweep of 1e9 cases started without a word (230 GB of CSV), and one whose
+/// every case was invalid tried its 1e9 cases one by one before failing. The
+/// total is now capped before any case is parsed, and the message says how
+/// to lift the cap knowingly.
+#[test]
+fn a_sweep_beyond_the_case_cap_is_refused_at_once() {
+    let text = scenario_with(
+        "[simulation]\n",
+        "[sweep]\n\"tower.width\" = { from = -2, to = -1, steps = 1000000 }\n\"ground.frequency\" = { from = 1, to = 10, steps = 1000 }\n\n[simulation]\n",
+    );
+    let dir = tempdir();
+    let file = write(dir.path(), "huge.toml", &text);
+    let (code, stderr) = run_limited(dir.path(), "sweep", &file);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("1000000 × 1000 values make 1000000000 cases, more than 1000000"), "{stderr}");
+    assert!(stderr.contains("max_cases = 1000000000"), "{stderr}");
+}
+
+/// `max_cases` lifts the cap: the same grid, small, under a cap of its size
+/// runs; one case fewer is refused.
+#[test]
+fn max_cases_lifts_the_cap_knowingly() {
+    for (cap, code) in [(6, 0), (5, 1)] {
+        let text = scenario_with(
+            "[simulation]\n",
+            &format!("[sweep]\nmax_cases = {cap}\n\"ground.frequency\" = [4.0, 5.0, 6.0]\n\"ground.amplitude\" = [0.5, 0.6]\n\n[simulation]\n"),
+        );
+        let dir = tempdir();
+        let file = write(dir.path(), "capped.toml", &text);
+        let (got, stderr) = run_limited(dir.path(), "sweep", &file);
+        assert_eq!(got, Some(code), "max_cases = {cap}: {stderr}");
+    }
+}

@@ -82,4 +82,7 @@ pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
 pub use summary::{summary_fields, summary_json, summary_scalars};
-pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};
+pub use sweep::{
+    csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN, MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS,
+    WALL_TIME_KEY, WINDOW,
+};
