@@ -8,6 +8,7 @@ mod errors;
 mod folder;
 mod fragility;
 mod guard;
+mod hardening;
 mod keys;
 mod run;
 mod shard;

@@ -137,11 +137,46 @@ fn did_you_mean(s: &Option<&'static str>) -> String {
     s.map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
 }
 
+/// The scenario key of each parameter of the library: the one table where the
+/// library's typed names meet the file's keys.
+pub fn key_of(parameter: rocking::Parameter) -> &'static str {
+    use rocking::Parameter as P;
+    match parameter {
+        P::TowerWidth => "tower.width",
+        P::TowerHeight => "tower.height",
+        P::TowerDepth => "tower.depth",
+        P::TowerWallThickness => "tower.wall_thickness",
+        P::TowerMass => "tower.mass",
+        P::TowerDensity => "tower.density",
+        P::TowerInertiaPivot => "tower.inertia_pivot",
+        P::TowerRadius => "tower.radius",
+        P::TowerAlpha => "tower.alpha",
+        P::TowerRestitution => "tower.restitution",
+        P::BuildingMass => "building.mass",
+        P::BuildingMuStatic => "building.mu_static",
+        P::BuildingMuKinetic => "building.mu_kinetic",
+        P::GroundAmplitude => "ground.amplitude",
+        P::GroundFrequency => "ground.frequency",
+        P::GroundDuration => "ground.duration",
+        P::GroundPhase => "ground.phase",
+        P::GroundRickerCentre => "ground.t0",
+        P::Gravity => "simulation.g",
+        P::Duration => "simulation.duration",
+        P::RelativeTolerance => "simulation.rtol",
+        P::AbsoluteTolerance => "simulation.atol",
+        P::InitialTheta => "initial.theta",
+        P::InitialThetaDot => "initial.theta_dot",
+        P::Bodies => "tower",
+        // A parameter added to the library without a key here: named in words.
+        _ => "(parameter)",
+    }
+}
+
 impl From<rocking::Error> for Fault {
-    /// A library error: its parameter name is already the dotted scenario key.
+    /// A library error: its parameter mapped to the scenario key by [`key_of`].
     fn from(e: rocking::Error) -> Self {
         match e {
-            rocking::Error::InvalidParameter { name, reason } => Fault::invalid(name, reason),
+            rocking::Error::InvalidParameter { parameter, reason } => Fault::invalid(key_of(parameter), reason),
             other => Fault {
                 key: None,
                 kind: ErrorKind::Simulation(other),
@@ -209,6 +244,14 @@ mod tests {
     fn closest_only_when_close() {
         assert_eq!(closest("hieght", &["width", "height"]), Some("height"));
         assert_eq!(closest("colour", &["width", "height"]), None);
+    }
+
+    /// Every parameter of the library has its own scenario key.
+    #[test]
+    fn every_parameter_has_a_distinct_key() {
+        let keys: std::collections::BTreeSet<&str> = rocking::Parameter::ALL.iter().map(|&p| key_of(p)).collect();
+        assert_eq!(keys.len(), rocking::Parameter::ALL.len());
+        assert!(!keys.contains("(parameter)"));
     }
 
     #[test]

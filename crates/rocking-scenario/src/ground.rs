@@ -203,8 +203,18 @@ pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fau
 /// A harmonic takes `>= 0` (its phase gives the sign); a pulse any sign.
 fn amplitude(s: &Section<'_>, cx: &Context<'_>, non_negative_only: bool) -> Result<f64, Fault> {
     let check = |key: &str, v: f64| if non_negative_only { non_negative(key, v) } else { finite(key, v) };
+    let bounded = |key: &str, a: f64| -> Result<f64, Fault> {
+        if a.abs() > MAX_PEAK_G {
+            return Err(Fault::invalid(
+                key,
+                format!("{a} g is above {MAX_PEAK_G} g (the strongest recorded motions stay below 5 g)"),
+            ));
+        }
+        Ok(a)
+    };
     if let Some(a) = s.number("amplitude")? {
-        return check(&s.key("amplitude"), a);
+        let key = s.key("amplitude");
+        return bounded(&key, check(&key, a)?);
     }
     let key = s.key("amplitude_ratio");
     let Some(ratio) = s.number("amplitude_ratio")? else {
@@ -220,7 +230,7 @@ fn amplitude(s: &Section<'_>, cx: &Context<'_>, non_negative_only: bool) -> Resu
             ErrorKind::NotApplicable("needs a [tower]: it is a multiple of the tower's uplift acceleration g tan α".into()),
         )
     })?;
-    Ok(ratio * tower.alpha().tan())
+    bounded(&key, ratio * tower.alpha().tan())
 }
 
 /// The frequency in Hz, from `frequency` or `frequency_ratio · p / 2π`.
@@ -328,25 +338,25 @@ impl RecordSpec {
             }
         };
         drop(entries);
-        Ok(self.finish(record, format))
+        self.finish(record, format, g)
     }
 
     /// Reads the record: the motion (m/s²) and what was read.
     pub(crate) fn load(&self, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
         let (record, format) = self.read(g)?;
-        Ok(self.finish(record, format))
+        self.finish(record, format, g)
     }
 
     /// Reads and parses the file, unscaled.
     fn read(&self, g: f64) -> Result<(Record, RecordFormat), Fault> {
         let key = "ground.file";
-        let text = std::fs::read_to_string(&self.file).map_err(|e| {
+        let text = read_text(&self.file).map_err(|(reason, os_error)| {
             Fault::new(
                 key,
                 ErrorKind::Read {
                     path: self.file.clone(),
-                    reason: io_reason(&e),
-                    os_error: e.raw_os_error(),
+                    reason,
+                    os_error,
                 },
             )
         })?;
@@ -378,8 +388,22 @@ impl RecordSpec {
     }
 
     /// The motion and its description, once read: `record` scaled by `scale`.
-    fn finish(&self, record: Record, format: RecordFormat) -> (GroundMotion, GroundInfo) {
+    fn finish(&self, record: Record, format: RecordFormat, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
         let record = record.scaled(self.scale);
+        let peak_g = record.peak().0 / g;
+        // Record values are finite (the reader checks), so the peak is a number.
+        if peak_g > MAX_PEAK_G {
+            // The scale is the one given (1 when absent): exact comparison is meant.
+            let (key, what) = if self.scale.to_bits() == 1.0f64.to_bits() {
+                ("ground.file", format!("{} peaks at", self.file.display()))
+            } else {
+                ("ground.scale", format!("{} scaled by {} peaks at", self.file.display(), self.scale))
+            };
+            return Err(Fault::invalid(
+                key,
+                format!("{what} {peak_g:.3e} g, above {MAX_PEAK_G} g (the strongest recorded motions stay below 5 g: check the units and the scale)"),
+            ));
+        }
         let info = GroundInfo {
             kind: GroundKind::Record,
             amplitude_g: None,
@@ -396,8 +420,43 @@ impl RecordSpec {
                 scale: self.scale,
             }),
         };
-        (GroundMotion::Record(record), info)
+        Ok((GroundMotion::Record(record), info))
     }
+}
+
+/// Largest peak ground acceleration accepted, in g (an amplitude or a
+/// record's peak after its scale): far above any earthquake, and far below
+/// where the arithmetic of a run loses its meaning.
+pub const MAX_PEAK_G: f64 = 100.0;
+
+/// Largest record file read (bytes): 64 bytes a sample leaves room for 1e7 samples.
+pub const MAX_RECORD_BYTES: u64 = 640 << 20;
+
+/// The text of a record file, refusing what is not a regular file (a device
+/// like `/dev/urandom` never ends) or is larger than [`MAX_RECORD_BYTES`].
+/// The reason is returned on its own, without the OS error number.
+/// The text of a record file, or why not and the OS error code if any.
+fn read_text(path: &Path) -> Result<String, (String, Option<i32>)> {
+    use std::io::Read;
+    let io = |e: std::io::Error| (io_reason(&e), e.raw_os_error());
+    let meta = std::fs::metadata(path).map_err(io)?;
+    if !meta.is_file() {
+        return Err(("not a regular file".into(), None));
+    }
+    if meta.len() > MAX_RECORD_BYTES {
+        return Err((
+            format!("{} bytes, more than the {} MiB a record may have", meta.len(), MAX_RECORD_BYTES >> 20),
+            None,
+        ));
+    }
+    let file = std::fs::File::open(path).map_err(io)?;
+    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    // `take` bounds the read even if the file grows while it is read.
+    file.take(MAX_RECORD_BYTES + 1).read_to_end(&mut bytes).map_err(io)?;
+    if bytes.len() as u64 > MAX_RECORD_BYTES {
+        return Err((format!("more than the {} MiB a record may have", MAX_RECORD_BYTES >> 20), None));
+    }
+    String::from_utf8(bytes).map_err(|_| ("stream did not contain valid UTF-8".into(), None))
 }
 
 /// Records already read, so that the cases of a sweep read a record file once

@@ -32,6 +32,25 @@
 //! `[ground]` is required, and so is a `[tower]` or a `[building]` (or both).
 //! A key of another ground type, an unknown key or an unknown section is an error.
 //!
+//! ## Ranges beyond "a finite number > 0"
+//!
+//! Where the arithmetic or the integrator stops meaning anything, a value is
+//! refused by its own key (the constants are in the library):
+//!
+//! - `simulation.rtol` in [2.2e-14, 1e-6] (100 machine epsilons, SciPy's
+//!   floor for DOP853; above 1e-6 the impacts of `examples/tower-on-church.toml`
+//!   move enough to change max θ/α by 50% at 3e-6 and 100% at 1e-4);
+//!   `simulation.atol` in [1e-30, 1e-6] (rad, rad/s, m, m/s).
+//! - `simulation.g` at most 1e3 m/s².
+//! - lengths of `[tower]` in [1e-4, 1e5] m, masses of `[tower]` and
+//!   `[building]` in [1e-6, 1e15] kg, `tower.density` in [1e-3, 1e5] kg/m³,
+//!   `tower.inertia_pivot` in [1e-15, 1e26] kg·m².
+//! - a harmonic of at most 1e6 cycles (`frequency` × `duration`); a peak
+//!   ground acceleration (`amplitude`, or a record's peak times `scale`) of at
+//!   most 100 g.
+//! - a record file: a regular file (not a device or a pipe) of at most 640 MiB.
+//! - a sweep: at most 1e6 cases unless `[sweep]` sets `max_cases`.
+//!
 //! Every error is one line naming the file, the dotted key and what is wrong:
 //!
 //! ```
@@ -83,7 +102,7 @@ mod tower;
 mod tests;
 
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
-pub use error::{Error, ErrorKind, Fault};
+pub use error::{key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
 pub use keys::{keys_markdown, KeyDoc, KeyKind, SCENARIO_KEYS};
 pub use run::{Outcome, RunOptions};
@@ -94,4 +113,7 @@ pub use study::{
     Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER, FRACTIONS_HEADER, FRAGILITY_HEADER, METHOD as FIT_METHOD, STUDY_KEYS,
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
-pub use sweep::{csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Shard, Sweep, ERROR_COLUMN, MAX_AXIS_VALUES, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW};
+pub use sweep::{
+    csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN, MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS,
+    WALL_TIME_KEY, WINDOW,
+};

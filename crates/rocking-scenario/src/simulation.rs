@@ -37,9 +37,17 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
         });
     };
     s.only(&crate::keys::section_keys("simulation"))?;
-    let get = |key: &str, default: f64| -> Result<f64, Fault> { positive(&s.key(key), s.number(key)?.unwrap_or(default)) };
-    let duration = get("duration", DEFAULT_DURATION)?;
-    let output_dt = get("output_dt", DEFAULT_OUTPUT_DT)?;
+    let value = |key: &str, default: f64| -> Result<f64, Fault> { Ok(s.number(key)?.unwrap_or(default)) };
+    // Duration and tolerances are checked by the library (one set of rules and
+    // messages); gravity by `Model::new`. Only the history spacing is this crate's.
+    let settings = Settings {
+        duration: value("duration", DEFAULT_DURATION)?,
+        rtol: value("rtol", defaults.rtol)?,
+        atol: value("atol", defaults.atol)?,
+    };
+    settings.validate()?;
+    let duration = settings.duration;
+    let output_dt = positive(&s.key("output_dt"), value("output_dt", DEFAULT_OUTPUT_DT)?)?;
     let rows = duration / output_dt;
     if rows > MAX_HISTORY_ROWS {
         return Err(Fault::invalid(
@@ -48,12 +56,8 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
         ));
     }
     Ok(SimulationSpec {
-        settings: Settings {
-            duration,
-            rtol: get("rtol", defaults.rtol)?,
-            atol: get("atol", defaults.atol)?,
-        },
-        g: get("g", DEFAULT_G)?,
+        settings,
+        g: value("g", DEFAULT_G)?,
         output_dt,
     })
 }

@@ -49,7 +49,7 @@ mod simulate;
 mod trig;
 
 pub use body::{Building, MassInput, NormalForce, Section, Tower, TowerGeometry};
-pub use error::Error;
+pub use error::{Error, Parameter};
 pub use event::{Event, EventKind};
 pub use ground::{AccelerationUnit, CsvOptions, GroundMotion, Harmonic, Pulse, PulseShape, Record, RecordError, RecordFormat, Ricker};
 pub use history::{EventLog, History, Sampler};
@@ -57,4 +57,4 @@ pub use model::{Derived, Model};
 pub use observer::{Flow, Halt, Observer, Sample, Step};
 pub use regime::{BuildingRegime, Motion, Pivot, Regime, SlipDirection, State, TowerRegime};
 pub use response::{EndReason, Summary};
-pub use simulate::{simulate, Initial, Settings, REST_ANGULAR_VELOCITY};
+pub use simulate::{simulate, Initial, Settings, MAX_ATOL, MAX_RTOL, MIN_ATOL, MIN_RTOL, REST_ANGULAR_VELOCITY};

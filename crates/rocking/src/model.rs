@@ -2,7 +2,7 @@
 //! equations of motion are in `equations.rs`.
 
 use crate::body::{Building, Tower};
-use crate::error::{positive, Error};
+use crate::error::{positive, Error, Parameter};
 
 /// A tower, a building, or both, under gravity `g`. Valid by construction.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,14 +35,23 @@ pub struct Derived {
     pub sliding_mass: Option<f64>,
 }
 
+/// Largest gravity accepted (m/s²).
+pub const MAX_GRAVITY: f64 = 1e3;
+
 impl Model {
     /// A model of a tower on a fixed base, a building alone, or a tower on a
     /// building, with gravity `g` (m/s², > 0).
     pub fn new(tower: Option<Tower>, building: Option<Building>, gravity: f64) -> Result<Self, Error> {
-        let gravity = positive("simulation.g", gravity)?;
+        let gravity = positive(Parameter::Gravity, gravity)?;
+        if gravity > MAX_GRAVITY {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::Gravity,
+                reason: format!("must be at most {MAX_GRAVITY:.0e} m/s² (a hundred times the Earth's; beyond it the time scale √(R/g) of any tower shrinks below what a run can step through), got {gravity:e}"),
+            });
+        }
         if tower.is_none() && building.is_none() {
             return Err(Error::InvalidParameter {
-                name: "tower",
+                parameter: Parameter::Bodies,
                 reason: "a scenario needs a [tower], a [building], or both".into(),
             });
         }

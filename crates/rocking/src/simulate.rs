@@ -29,7 +29,7 @@
 
 use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDITIONS};
 use crate::equations::{Accelerations, Kernel};
-use crate::error::{positive, Error};
+use crate::error::{positive, Error, Parameter};
 use crate::event::{Event, EventKind};
 use crate::extrema::{hermite_range, interior_extrema, may_have_extremum};
 use crate::ground::{GroundMotion, Piece, Segment};
@@ -71,11 +71,45 @@ impl Default for Settings {
     }
 }
 
+/// Tightest relative tolerance: 100 machine epsilons (SciPy's floor for its
+/// DOP853); below it the error estimate is rounding noise.
+pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+/// Loosest relative tolerance. Measured on `examples/tower-on-church.toml`
+/// (210 impacts): rtol 1e-6 gives the max θ/α of 1e-8 to 6 digits, 3e-6 is
+/// already 46% off and 1e-4 twice as large; a looser run is not an answer.
+pub const MAX_RTOL: f64 = 1e-6;
+/// Tightest absolute tolerance (rad, rad/s, m, m/s): far below any motion of
+/// a body of metres, and above the range where the error scale of a state at
+/// rest (`atol` alone) underflows the error estimate.
+pub const MIN_ATOL: f64 = 1e-30;
+/// Loosest absolute tolerance: a micro-radian (or micrometre) of error per
+/// step is already the size of the rotations an impact cascade leaves.
+pub const MAX_ATOL: f64 = 1e-6;
+
 impl Settings {
-    fn validate(&self) -> Result<(), Error> {
-        positive("simulation.duration", self.duration)?;
-        positive("simulation.rtol", self.rtol)?;
-        positive("simulation.atol", self.atol)?;
+    /// Checks the settings: `duration > 0`, `rtol` in [[`MIN_RTOL`], [`MAX_RTOL`]],
+    /// `atol` in [[`MIN_ATOL`], [`MAX_ATOL`]] (where DOP853's error control means
+    /// something). [`simulate`] calls it; a front end may call it earlier.
+    pub fn validate(&self) -> Result<(), Error> {
+        positive(Parameter::Duration, self.duration)?;
+        let rtol = positive(Parameter::RelativeTolerance, self.rtol)?;
+        let atol = positive(Parameter::AbsoluteTolerance, self.atol)?;
+        if !(MIN_RTOL..=MAX_RTOL).contains(&rtol) {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::RelativeTolerance,
+                reason: format!(
+                    "must be between {MIN_RTOL:.1e} (100 machine epsilons, below which the error estimate is rounding noise) and {MAX_RTOL:.0e} (beyond which impacts and slips are misplaced), got {rtol:e}"
+                ),
+            });
+        }
+        if !(MIN_ATOL..=MAX_ATOL).contains(&atol) {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::AbsoluteTolerance,
+                reason: format!(
+                    "must be between {MIN_ATOL:.0e} and {MAX_ATOL:.0e} (rad, rad/s, m, m/s; outside it the error control either cannot be met or no longer controls anything), got {atol:e}"
+                ),
+            });
+        }
         Ok(())
     }
 }
@@ -92,18 +126,18 @@ pub struct Initial {
 /// Runs `model` under `ground` from `initial` and reports to `observer`.
 pub fn simulate(model: &Model, ground: &GroundMotion, initial: Initial, settings: &Settings, observer: &mut impl Observer) -> Result<Summary, Error> {
     settings.validate()?;
-    crate::error::finite("initial.theta", initial.theta)?;
-    crate::error::finite("initial.theta_dot", initial.theta_dot)?;
+    crate::error::finite(Parameter::InitialTheta, initial.theta)?;
+    crate::error::finite(Parameter::InitialThetaDot, initial.theta_dot)?;
     if initial.theta.abs() >= FRAC_PI_2 {
         return Err(Error::InvalidParameter {
-            name: "initial.theta",
+            parameter: Parameter::InitialTheta,
             reason: format!("|θ| must be below π/2 (overturned), got {}", initial.theta),
         });
     }
     let kernel = Kernel::new(model);
     if !kernel.has_tower && (initial.theta != 0.0 || initial.theta_dot != 0.0) {
         return Err(Error::InvalidParameter {
-            name: "initial.theta",
+            parameter: Parameter::InitialTheta,
             reason: "an initial rotation needs a [tower]".into(),
         });
     }
@@ -299,14 +333,21 @@ fn narrow<const N: usize>(y: [f64; 4]) -> [f64; N] {
     std::array::from_fn(|i| y[i])
 }
 
-fn step_error(e: StepFailure) -> Error {
+/// The error of a failed step; `dynamic`: the building has the dynamic normal force.
+fn step_error(e: StepFailure, dynamic: bool) -> Error {
     match e {
         StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
-        StepFailure::NonFinite { time } => Error::Singular {
+        // Only the dynamic normal force can make the coupled system singular;
+        // otherwise a non-finite value is an overflow.
+        StepFailure::NonFinite { time } if dynamic => Error::Singular {
             time,
             reason:
                 "the equations of motion have no solution (with the dynamic normal force, a building this light cannot carry this friction: Painlevé's paradox)"
                     .into(),
+        },
+        StepFailure::NonFinite { time } => Error::Singular {
+            time,
+            reason: "the motion became non-finite (an overflow: the inputs' scales are out of proportion)".into(),
         },
     }
 }
@@ -409,7 +450,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         }
         // Steps land on kinks and jumps of the input.
         let bound = self.segment.kink.min(self.end);
-        self.stepper.step(&mut rhs, bound).map_err(step_error)?;
+        self.stepper.step(&mut rhs, bound).map_err(|e| step_error(e, kernel.dynamic))?;
         let (t0, t1) = (self.stepper.t_old, self.stepper.t);
         let (y0, y1) = (wide(&self.stepper.y_old), wide(&self.stepper.y));
         let h = t1 - t0;

@@ -97,7 +97,7 @@ where
         for &(x, k) in row {
             let entry = &entries[k];
             swatch(area, (x, y), entry.swatch)?;
-            area.draw(&Text::new(entry.label.clone(), (x + SWATCH + GAP, y), style.clone()))?;
+            area.draw(&Text::new(super::style::printable(&entry.label), (x + SWATCH + GAP, y), style.clone()))?;
         }
     }
     Ok(())

@@ -164,11 +164,19 @@ where
     let (w, _) = top.dim_in_pixel();
     let centre = i32::try_from(w / 2).unwrap_or(0);
     let centred = |size, color| text(size, color).pos(Pos::new(HPos::Center, VPos::Top));
-    top.draw(&Text::new(title.to_string(), (centre, 10), centred(size::TITLE, BLACK)))?;
+    top.draw(&Text::new(printable(title), (centre, 10), centred(size::TITLE, BLACK)))?;
     if !subtitle.is_empty() {
-        top.draw(&Text::new(subtitle.to_string(), (centre, 44), centred(size::SUBTITLE, INK)))?;
+        top.draw(&Text::new(printable(subtitle), (centre, 44), centred(size::SUBTITLE, INK)))?;
     }
     Ok(rest)
+}
+
+/// `text` as a figure may show it: control characters (which XML 1.0 does
+/// not allow, even escaped, so one in a scenario's `name` made theta.svg
+/// invalid) replaced by U+FFFD. `&`, `<` and `>` are escaped by the SVG
+/// backend itself.
+pub fn printable(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { '\u{fffd}' } else { c }).collect()
 }
 
 /// Writes `note` centred across `area`, a third of the way down (above a zero line in the middle).
@@ -179,7 +187,7 @@ where
     let (w, h) = area.dim_in_pixel();
     let centre = (i32::try_from(w / 2).unwrap_or(0), i32::try_from(h / 3).unwrap_or(0));
     area.draw(&Text::new(
-        note.to_string(),
+        printable(note),
         centre,
         text(size::NOTE, GREY).pos(Pos::new(HPos::Center, VPos::Center)),
     ))?;

@@ -153,9 +153,21 @@ impl Sweep {
                 .in_file(origin))
             }
         };
+        let mut sweep = sweep;
+        let max_cases = match sweep.remove(MAX_CASES_KEY) {
+            None => DEFAULT_MAX_CASES,
+            Some(Value::Integer(n)) if n > 0 => usize::try_from(n).unwrap_or(usize::MAX),
+            Some(other) => {
+                return Err(Fault::invalid(
+                    format!("sweep.{MAX_CASES_KEY}"),
+                    format!("must be a whole number > 0, got {}", crate::read::with_article(&other)),
+                )
+                .in_file(origin))
+            }
+        };
         let mut axes = Vec::new();
         flatten_axes(&sweep, "", &mut axes).map_err(|f| f.in_file(origin))?;
-        Self::from_parts(table, axes, origin)
+        Self::from_parts_capped(table, axes, origin, max_cases)
     }
 
     /// A sweep from a JSON object with the structure of the TOML file (a
@@ -168,7 +180,12 @@ impl Sweep {
     /// A sweep from a base scenario (without `[sweep]`) and its axes in order
     /// (the first varies slowest). Checks every axis, then parses the cases in
     /// order until one can be built: if none can, the first case's error.
-    pub fn from_parts(mut base: Table, axes: Vec<(String, AxisSpec)>, origin: &Path) -> Result<Self, Error> {
+    pub fn from_parts(base: Table, axes: Vec<(String, AxisSpec)>, origin: &Path) -> Result<Self, Error> {
+        Self::from_parts_capped(base, axes, origin, DEFAULT_MAX_CASES)
+    }
+
+    /// As [`Sweep::from_parts`], refusing more than `max_cases` cases in all.
+    pub fn from_parts_capped(mut base: Table, axes: Vec<(String, AxisSpec)>, origin: &Path, max_cases: usize) -> Result<Self, Error> {
         let fail = |f: Fault| f.in_file(origin);
         if axes.is_empty() {
             return Err(fail(Fault::new(
@@ -203,6 +220,15 @@ impl Sweep {
                 ),
             ))
         })?;
+        if len > max_cases {
+            return Err(fail(Fault::invalid(
+                "sweep",
+                format!(
+                    "{} values make {len} cases, more than {max_cases}; to run them knowingly, raise the limit with `{MAX_CASES_KEY} = {len}` in [sweep]",
+                    expanded.iter().map(|a| a.len().to_string()).collect::<Vec<_>>().join(" × ")
+                ),
+            )));
+        }
         let name = match base.get("name") {
             Some(Value::String(s)) => s.clone(),
             _ => origin.file_stem().map_or_else(|| "sweep".to_string(), |s| s.to_string_lossy().into_owned()),
@@ -394,3 +420,11 @@ pub(crate) fn summary_template() -> Result<Vec<(String, Cell)>, Fault> {
         })
         .collect())
 }
+
+/// The key of `[sweep]` that raises the cap on the number of cases (not an axis: it has no dot).
+pub const MAX_CASES_KEY: &str = "max_cases";
+/// Most cases a sweep may have unless its `[sweep]` table raises the cap with
+/// `max_cases`: a million rows are about 0.3 GB of `sweep.csv`; 1e9 (which
+/// started without a word) would be 230 GB. It also bounds the search for a
+/// first valid case when every case is invalid (about 7 µs a case: seconds).
+pub const DEFAULT_MAX_CASES: usize = 1_000_000;

@@ -1,7 +1,7 @@
 //! The sliding base (the church without the tower): a rigid body translating on
 //! its foundation with Coulomb friction (model.md, equation (B)).
 
-use crate::error::{non_negative, positive, Error};
+use crate::error::{in_range, non_negative, Error, Parameter, MASS_RANGE};
 
 /// The normal force of the foundation on the building used in the friction law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -26,12 +26,12 @@ impl Building {
     /// A building of mass `m1` (kg, > 0, without the tower), static and kinetic
     /// friction coefficients (`0 <= μk <= μs`) and the normal-force law.
     pub fn new(mass: f64, mu_static: f64, mu_kinetic: f64, normal_force: NormalForce) -> Result<Self, Error> {
-        let mass = positive("building.mass", mass)?;
-        let mu_static = non_negative("building.mu_static", mu_static)?;
-        let mu_kinetic = non_negative("building.mu_kinetic", mu_kinetic)?;
+        let mass = in_range(Parameter::BuildingMass, mass, MASS_RANGE.0, MASS_RANGE.1, "kg")?;
+        let mu_static = non_negative(Parameter::BuildingMuStatic, mu_static)?;
+        let mu_kinetic = non_negative(Parameter::BuildingMuKinetic, mu_kinetic)?;
         if mu_kinetic > mu_static {
             return Err(Error::InvalidParameter {
-                name: "building.mu_kinetic",
+                parameter: Parameter::BuildingMuKinetic,
                 reason: format!("{mu_kinetic} exceeds mu_static = {mu_static}; kinetic friction cannot exceed static friction"),
             });
         }
@@ -67,7 +67,16 @@ mod tests {
     #[test]
     fn kinetic_above_static_is_rejected() {
         let e = Building::new(1.0, 0.5, 0.6, NormalForce::Constant).unwrap_err();
-        assert!(e.to_string().contains("building.mu_kinetic"), "{e}");
+        assert!(
+            matches!(
+                e,
+                Error::InvalidParameter {
+                    parameter: Parameter::BuildingMuKinetic,
+                    ..
+                }
+            ),
+            "{e}"
+        );
         assert!(Building::new(1.0, -0.1, 0.0, NormalForce::Constant).is_err());
         assert!(Building::new(0.0, 0.5, 0.4, NormalForce::Constant).is_err());
         assert!(Building::new(1.0, 0.0, 0.0, NormalForce::Dynamic).is_ok());

@@ -1,7 +1,7 @@
 //! The rocking block (the tower above the springing level): mass, inertia about
 //! a base corner, `R`, `α` and restitution (model.md, "Bodies and symbols").
 
-use crate::error::{non_negative, positive, Error};
+use crate::error::{in_range, non_negative, positive, Error, Parameter, DENSITY_RANGE, INERTIA_RANGE, LENGTH_RANGE, MASS_RANGE};
 
 /// Cross-section of a tower given by its outer dimensions.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -54,22 +54,27 @@ pub struct Tower {
     restitution: f64,
 }
 
+/// A length of the tower (m), within [`LENGTH_RANGE`].
+fn length(parameter: Parameter, value: f64) -> Result<f64, Error> {
+    in_range(parameter, value, LENGTH_RANGE.0, LENGTH_RANGE.1, "m")
+}
+
 impl Tower {
     /// A tower from its outer dimensions, section and mass or density
     /// (model.md: solid `I_O = m (B² + H²) / 3`; hollow: outer prism minus inner
     /// prism about the centroid, then `I_O = I_c + m R²`).
     pub fn from_geometry(geometry: &TowerGeometry) -> Result<Self, Error> {
-        let width = positive("tower.width", geometry.width)?;
-        let height = positive("tower.height", geometry.height)?;
-        let depth = positive("tower.depth", geometry.depth.unwrap_or(width))?;
+        let width = length(Parameter::TowerWidth, geometry.width)?;
+        let height = length(Parameter::TowerHeight, geometry.height)?;
+        let depth = length(Parameter::TowerDepth, geometry.depth.unwrap_or(width))?;
         // Areas and centroidal "width² + H²" sums of the outer and (for a tube) inner prisms.
         let (area, inertia_per_density) = match geometry.section {
             Section::Solid => (width * depth, width * depth * height * (width * width + height * height) / 12.0),
             Section::Hollow { wall_thickness } => {
-                let t = positive("tower.wall_thickness", wall_thickness)?;
+                let t = length(Parameter::TowerWallThickness, wall_thickness)?;
                 if 2.0 * t >= width.min(depth) {
                     return Err(Error::InvalidParameter {
-                        name: "tower.wall_thickness",
+                        parameter: Parameter::TowerWallThickness,
                         reason: format!("{t} m leaves no hollow: twice the wall must be less than the width and the depth"),
                     });
                 }
@@ -82,18 +87,28 @@ impl Tower {
         let volume = area * height;
         let (mass, density) = match geometry.mass {
             MassInput::Mass(m) => {
-                let m = positive("tower.mass", m)?;
+                let m = in_range(Parameter::TowerMass, m, MASS_RANGE.0, MASS_RANGE.1, "kg")?;
                 (m, m / volume)
             }
             MassInput::Density(rho) => {
-                let rho = positive("tower.density", rho)?;
+                let rho = in_range(Parameter::TowerDensity, rho, DENSITY_RANGE.0, DENSITY_RANGE.1, "kg/m³")?;
                 (rho * volume, rho)
             }
         };
+        if !(MASS_RANGE.0..=MASS_RANGE.1).contains(&mass) {
+            // Only a density can get here: the mass it gives is out of scale.
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::TowerDensity,
+                reason: format!(
+                    "{density:e} kg/m³ over {volume:e} m³ gives a mass of {mass:e} kg, outside {:e} to {:e} kg",
+                    MASS_RANGE.0, MASS_RANGE.1
+                ),
+            });
+        }
         let (b, h) = (width / 2.0, height / 2.0);
         let radius = b.hypot(h);
         let inertia_pivot = match geometry.inertia_pivot {
-            Some(i) => positive("tower.inertia_pivot", i)?,
+            Some(i) => in_range(Parameter::TowerInertiaPivot, i, INERTIA_RANGE.0, INERTIA_RANGE.1, "kg·m²")?,
             None => density * inertia_per_density + mass * radius * radius,
         };
         Self::from_properties(mass, inertia_pivot, radius, b.atan2(h), geometry.restitution)
@@ -104,30 +119,30 @@ impl Tower {
     /// and optionally the restitution `r` (default: Housner's
     /// `1 − 2 m2 R² sin²α / I_O`).
     pub fn from_properties(mass: f64, inertia_pivot: f64, radius: f64, alpha: f64, restitution: Option<f64>) -> Result<Self, Error> {
-        let mass = positive("tower.mass", mass)?;
-        let inertia_pivot = positive("tower.inertia_pivot", inertia_pivot)?;
-        let radius = positive("tower.radius", radius)?;
-        let alpha = positive("tower.alpha", alpha)?;
+        let mass = in_range(Parameter::TowerMass, mass, MASS_RANGE.0, MASS_RANGE.1, "kg")?;
+        let inertia_pivot = positive(Parameter::TowerInertiaPivot, inertia_pivot)?;
+        let radius = length(Parameter::TowerRadius, radius)?;
+        let alpha = positive(Parameter::TowerAlpha, alpha)?;
         if alpha >= std::f64::consts::FRAC_PI_2 {
             return Err(Error::InvalidParameter {
-                name: "tower.alpha",
+                parameter: Parameter::TowerAlpha,
                 reason: format!("must be below π/2, got {alpha}"),
             });
         }
         let point_inertia = mass * radius * radius;
         if inertia_pivot <= point_inertia {
             return Err(Error::InvalidParameter {
-                name: "tower.inertia_pivot",
+                parameter: Parameter::TowerInertiaPivot,
                 reason: format!("{inertia_pivot} kg·m² is not above m R² = {point_inertia} kg·m² (parallel-axis theorem)"),
             });
         }
         let housner = 1.0 - 2.0 * point_inertia * alpha.sin().powi(2) / inertia_pivot;
         let restitution = match restitution {
             Some(r) => {
-                let r = non_negative("tower.restitution", r)?;
+                let r = non_negative(Parameter::TowerRestitution, r)?;
                 if r > 1.0 {
                     return Err(Error::InvalidParameter {
-                        name: "tower.restitution",
+                        parameter: Parameter::TowerRestitution,
                         reason: format!("must be at most 1, got {r}"),
                     });
                 }
@@ -135,7 +150,7 @@ impl Tower {
             }
             None if housner < 0.0 => {
                 return Err(Error::InvalidParameter {
-                    name: "tower.restitution",
+                    parameter: Parameter::TowerRestitution,
                     reason: format!("Housner's value {housner:.4} is negative for this squat block: give one in [0, 1]"),
                 })
             }

@@ -2,7 +2,7 @@
 //! for `0 <= t < duration`, then zero.
 
 use super::{next_periodic, Piece, Segment};
-use crate::error::{finite, positive, Error};
+use crate::error::{finite, positive, Error, Parameter};
 use std::f64::consts::PI;
 
 /// `a_g = A sin(2π f t + φ)` during `duration`, zero afterwards.
@@ -14,15 +14,30 @@ pub struct Harmonic {
     phase: f64,
 }
 
+/// Most cycles of shaking a harmonic may last: a million cycles already take
+/// tens of millions of right-hand-side evaluations.
+pub const MAX_CYCLES: f64 = 1e6;
+
 impl Harmonic {
     /// Amplitude `A` (m/s², any sign: a negative one mirrors the motion),
     /// frequency `f` (Hz, > 0), duration (s, > 0), phase `φ` (rad).
     pub fn new(amplitude: f64, frequency: f64, duration: f64, phase: f64) -> Result<Self, Error> {
+        let frequency = positive(Parameter::GroundFrequency, frequency)?;
+        let duration = positive(Parameter::GroundDuration, duration)?;
+        let cycles = frequency * duration;
+        if cycles > MAX_CYCLES {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::GroundFrequency,
+                reason: format!(
+                    "{frequency:e} Hz over {duration} s of shaking is {cycles:.1e} cycles, more than {MAX_CYCLES:.0e} (each takes several integration steps)"
+                ),
+            });
+        }
         Ok(Self {
-            amplitude: finite("ground.amplitude", amplitude)?,
-            frequency: positive("ground.frequency", frequency)?,
-            duration: positive("ground.duration", duration)?,
-            phase: finite("ground.phase", phase)?,
+            amplitude: finite(Parameter::GroundAmplitude, amplitude)?,
+            frequency,
+            duration,
+            phase: finite(Parameter::GroundPhase, phase)?,
         })
     }
     /// Amplitude (m/s²).

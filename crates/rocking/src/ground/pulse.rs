@@ -2,7 +2,7 @@
 //! and the rectangular pulse `a_g = A` for `0 <= t < duration`, then zero.
 
 use super::{Piece, Segment};
-use crate::error::{finite, positive, Error};
+use crate::error::{finite, positive, Error, Parameter};
 use std::f64::consts::PI;
 
 /// The shape of a [`Pulse`].
@@ -28,10 +28,10 @@ impl Pulse {
     /// A sine or cosine pulse of amplitude `A` (m/s², any sign) and frequency `f` (Hz, > 0):
     /// it lasts `1/f`.
     pub fn cycle(shape: PulseShape, amplitude: f64, frequency: f64) -> Result<Self, Error> {
-        let frequency = positive("ground.frequency", frequency)?;
+        let frequency = positive(Parameter::GroundFrequency, frequency)?;
         Ok(Self {
             shape,
-            amplitude: finite("ground.amplitude", amplitude)?,
+            amplitude: finite(Parameter::GroundAmplitude, amplitude)?,
             duration: 1.0 / frequency,
         })
     }
@@ -39,8 +39,8 @@ impl Pulse {
     pub fn rectangular(amplitude: f64, duration: f64) -> Result<Self, Error> {
         Ok(Self {
             shape: PulseShape::Rectangular,
-            amplitude: finite("ground.amplitude", amplitude)?,
-            duration: positive("ground.duration", duration)?,
+            amplitude: finite(Parameter::GroundAmplitude, amplitude)?,
+            duration: positive(Parameter::GroundDuration, duration)?,
         })
     }
     /// Duration of the pulse (s).

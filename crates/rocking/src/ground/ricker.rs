@@ -2,7 +2,7 @@
 //! for `0 <= t <= 2 t0`, then zero (`t0 = 1.5/f` by default).
 
 use super::{Piece, Segment};
-use crate::error::{finite, positive, Error};
+use crate::error::{finite, positive, Error, Parameter};
 use std::f64::consts::PI;
 
 /// A Ricker wavelet of peak `A` at `t0`.
@@ -17,10 +17,10 @@ impl Ricker {
     /// Peak `A` (m/s², any sign), central frequency `f` (Hz, > 0), centre `t0` (s, > 0;
     /// default `1.5/f`).
     pub fn new(amplitude: f64, frequency: f64, t0: Option<f64>) -> Result<Self, Error> {
-        let frequency = positive("ground.frequency", frequency)?;
-        let t0 = positive("ground.t0", t0.unwrap_or(1.5 / frequency))?;
+        let frequency = positive(Parameter::GroundFrequency, frequency)?;
+        let t0 = positive(Parameter::GroundRickerCentre, t0.unwrap_or(1.5 / frequency))?;
         Ok(Self {
-            amplitude: finite("ground.amplitude", amplitude)?,
+            amplitude: finite(Parameter::GroundAmplitude, amplitude)?,
             frequency,
             t0,
         })

@@ -103,6 +103,12 @@ pub(crate) struct Dop853<const N: usize> {
     atol: f64,
     /// Step size to try next (s).
     h: f64,
+    /// Smallest step (s) allowed anywhere in the run: ten units in the last
+    /// place of the end time (set by `restart`). Below it the steps could not
+    /// be told apart where the run ends, and near `t = 0`, where the spacing
+    /// of floats is far finer, a tolerance out of reach would otherwise creep
+    /// forward by steps of 1e-30 s for ever instead of failing.
+    min_step_floor: f64,
     /// Start of the last accepted step.
     pub(crate) t_old: f64,
     pub(crate) y_old: [f64; N],
@@ -125,6 +131,7 @@ impl<const N: usize> Dop853<N> {
             rtol,
             atol,
             h: 0.0,
+            min_step_floor: 0.0,
             t_old: 0.0,
             y_old: [0.0; N],
             t: 0.0,
@@ -146,6 +153,7 @@ impl<const N: usize> Dop853<N> {
         self.f = rhs(t, &y);
         self.evaluations += 1;
         self.dense = None;
+        self.min_step_floor = 10.0 * ulp(t_bound.abs());
         if self.h <= 0.0 || !self.h.is_finite() {
             self.h = self.initial_step(rhs, t_bound);
         }
@@ -177,10 +185,17 @@ impl<const N: usize> Dop853<N> {
     /// within reach. Rejected attempts are retried with a smaller step.
     pub(crate) fn step(&mut self, rhs: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], t_bound: f64) -> Result<(), StepFailure> {
         let t = self.t;
-        // Ten units in the last place of t: below that, t + h cannot be told from t.
-        let min_step = 10.0 * (t.next_up() - t);
+        // Ten units in the last place of t: below that, t + h cannot be told
+        // from t; and never below the floor set by the end of the run.
+        let min_step = (10.0 * ulp(t.abs())).max(self.min_step_floor);
         let mut rejected = false;
         loop {
+            // Only a first attempt is lifted to the minimum: a rejected step
+            // that shrank below it is a failure (lifting it back made every
+            // rejection retry the same step for ever).
+            if rejected && self.h < min_step {
+                return Err(StepFailure::StepSizeTooSmall { time: t });
+            }
             let h_try = self.h.max(min_step);
             let mut h = h_try;
             let mut t_new = t + h;
@@ -211,7 +226,9 @@ impl<const N: usize> Dop853<N> {
                 if h <= min_step * 2.0 {
                     return Err(StepFailure::NonFinite { time: t });
                 }
-                self.h = h * MIN_FACTOR;
+                // Down to the minimum at most: the last try there tells a
+                // right-hand side that is non-finite at once from a step too long.
+                self.h = (h * MIN_FACTOR).max(min_step);
                 rejected = true;
                 continue;
             }
@@ -345,6 +362,11 @@ fn error_factor(err: f64) -> f64 {
     1.0 / err.sqrt().sqrt().sqrt()
 }
 
+/// The spacing of floats at `x >= 0` (one unit in the last place).
+fn ulp(x: f64) -> f64 {
+    x.next_up() - x
+}
+
 /// Root mean square of a small array.
 fn rms<const N: usize>(v: &[f64; N]) -> f64 {
     (v.iter().map(|x| x * x).sum::<f64>() / N as f64).sqrt()
@@ -403,6 +425,32 @@ mod tests {
             let fd = (d.state(t + e)[0] - d.state(t - e)[0]) / (2.0 * e);
             assert_relative_eq!(dy[0], fd, epsilon = 2e-10);
         }
+    }
+
+    /// A tolerance no step can meet (the error of y' = y² near its blow-up
+    /// exceeds any step's budget) ends in `StepSizeTooSmall`, within a
+    /// bounded number of attempts, instead of retrying the minimum step.
+    #[test]
+    fn unreachable_tolerance_fails_instead_of_looping() {
+        // y = 1 / (1 - t): infinite at t = 1, the end of the interval.
+        let mut calls = 0u64;
+        let mut rhs = |_t: f64, y: &[f64; 1]| {
+            calls += 1;
+            [y[0] * y[0]]
+        };
+        let mut s = Dop853::<1>::new(1e-300, 1e-300);
+        s.restart(&mut rhs, 0.0, [1.0], 2.0);
+        let mut result = Ok(());
+        for _ in 0..100_000 {
+            result = s.step(&mut rhs, 2.0);
+            if result.is_err() {
+                break;
+            }
+        }
+        assert!(matches!(result, Err(StepFailure::StepSizeTooSmall { .. })), "{result:?}");
+        // Each rejection divides the step by at least 5, so from 1 s down to
+        // 10 ulp(2) = 4.4e-15 s takes about 21 attempts of 12 evaluations.
+        assert!(calls < 1_000, "{calls} evaluations before failing");
     }
 
     /// The dense output reproduces both ends of the step exactly (up to rounding).

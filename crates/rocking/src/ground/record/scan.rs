@@ -55,10 +55,15 @@ pub(super) fn not_a_number(line: usize, text: &str) -> RecordError {
     }
 }
 
+/// Values reserved up front from a header's count; beyond, the vector grows as values come.
+const PREALLOCATED_VALUES: usize = 1 << 16;
+
 /// Reads the data block of a file: every number on the given lines, exactly
 /// `expected` of them as the header's `key` says.
 pub(super) fn values<'a>(lines: impl Iterator<Item = (usize, &'a str)>, expected: usize, key: &str) -> Result<Vec<f64>, RecordError> {
-    let mut values = Vec::with_capacity(expected);
+    // The header's count sizes the vector only up to a bound: a header
+    // claiming 8,888,888,200 samples asked for 71 GB before a value was read.
+    let mut values = Vec::with_capacity(expected.min(PREALLOCATED_VALUES));
     let mut first_extra_line = None;
     let mut found = 0usize;
     for (line, text) in lines {
