@@ -37,6 +37,7 @@ pub const SWEEPABLE_KEYS: &[&str] = &[
     "ground.phase",
     "ground.t0",
     "ground.file",
+    "ground.text",
     "ground.format",
     "ground.scale",
     "ground.units",
