@@ -434,7 +434,7 @@ async function main() {
     buildForm();
     computeNow();
   } else {
-    const first = examples.find((e) => e.path.endsWith("tower-on-church.toml")) || examples[0];
+    const first = examples.find((e) => e.path === "examples/tower-on-church.toml") || examples[0];
     if (first) loadToml(first.toml, first.path);
   }
 }

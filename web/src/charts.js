@@ -39,7 +39,7 @@ function markers(state) {
         (u) => {
           const { ctx, bbox } = u;
           ctx.save();
-          ctx.strokeStyle = "rgba(200, 30, 30, 0.5)";
+          ctx.strokeStyle = "rgba(200, 30, 30, 0.3)";
           ctx.lineWidth = 1;
           ctx.beginPath();
           for (const t of state.impacts) {
@@ -64,15 +64,15 @@ export class Charts {
 
   create(width) {
     const plugin = [markers(this.state)];
-    const common = { width, height: 170, plugins: plugin, legend: { live: false }, cursor: { sync: { key: "t" } } };
+    const common = { width, height: 240, plugins: plugin, legend: { live: false }, cursor: { sync: { key: "t" } } };
     const axisX = { label: "t (s)" };
     this.plots = [
       new uPlot(
         {
           ...common,
           title: "θ/α and ground acceleration (red lines: impacts; shaded: sliding)",
-          scales: { x: { time: false }, g: {} },
-          series: [{}, { label: "θ/α", stroke: "#1f4e99", width: 1.5 }, { label: "a_g (g)", stroke: "#999", width: 1, scale: "g" }],
+          scales: { x: { time: false }, g: { auto: true } },
+          series: [{}, { label: "θ/α", stroke: "#1f4e99", width: 1.5 }, { label: "a_g (g)", stroke: "rgba(60, 160, 60, 0.7)", width: 1, scale: "g" }],
           axes: [axisX, { label: "θ/α" }, { scale: "g", side: 1, label: "a_g (g)", grid: { show: false } }],
         },
         [[], [], []],
