@@ -89,6 +89,41 @@ pub fn run(scenario: &str) -> Result<String, JsError> {
     run_json(scenario).map_err(|e| JsError::new(&e))
 }
 
+/// A run for the page: the JSON text of `{ summary, events, columns, regime }`
+/// and the history's float columns as `Float64Array`s.
+#[wasm_bindgen]
+pub struct RunOutput {
+    meta: String,
+    columns: Vec<Vec<f64>>,
+}
+
+#[wasm_bindgen]
+impl RunOutput {
+    /// The JSON text of `{ summary, events, columns, regime }` (`columns`: the names of the float columns).
+    pub fn meta(&self) -> String {
+        self.meta.clone()
+    }
+    /// Float column `index` of the history (in the order of `columns`); empty past the end.
+    pub fn column(&self, index: usize) -> Vec<f64> {
+        self.columns.get(index).cloned().unwrap_or_default()
+    }
+}
+
+/// Runs `scenario` (JSON text): the page's fast path (the history as typed arrays).
+#[wasm_bindgen(js_name = runColumns)]
+pub fn run_columns(scenario: &str) -> Result<RunOutput, JsError> {
+    let run = || -> Result<RunOutput, String> {
+        let case = self::scenario(scenario)?.build().map_err(|e| e.to_string())?;
+        let outcome = case.run(rocking_scenario::RunOptions::ALL).map_err(|e| e.to_string())?;
+        let (meta, columns) = output::outcome_parts(&outcome);
+        Ok(RunOutput {
+            meta: meta.to_string(),
+            columns,
+        })
+    };
+    run().map_err(|e| JsError::new(&e))
+}
+
 /// The derived quantities of `scenario` (JSON text), as JSON text.
 #[wasm_bindgen]
 pub fn check(scenario: &str) -> Result<String, JsError> {

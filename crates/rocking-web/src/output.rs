@@ -5,7 +5,7 @@
 //! `events.csv` (rocking-cli's `output/history.rs` and `output/events.rs`)
 //! and `summary.json` ([`rocking_scenario::summary_json`], used as is).
 
-use rocking::{History, Motion, NormalForce};
+use rocking::{History, NormalForce};
 use rocking_scenario::{record_format_name, summary_json, Case, Cell, Outcome};
 use serde_json::{json, Map, Value};
 
@@ -14,40 +14,81 @@ pub const HISTORY_COLUMNS: [&str; 8] = ["t", "ground_acc", "theta", "theta_dot",
 
 /// `{ summary, history, events }` of a run (`wall_time_s` 0: the page times the call).
 pub fn outcome_json(outcome: &Outcome) -> Value {
-    json!({
-        "summary": summary_json(outcome, 0.0),
-        "history": outcome.history.as_ref().map_or_else(|| Value::Object(Map::new()), history),
-        "events": events(outcome),
-    })
+    let mut history = Map::new();
+    if let Some(h) = &outcome.history {
+        let columns = Columns::of(h);
+        for (name, values) in columns.names.iter().zip(&columns.values) {
+            history.insert(name.clone(), values.iter().map(|x| json!(x)).collect());
+        }
+        history.insert("regime".into(), json!(columns.regime));
+        // `regime` comes after the 8 float columns of history.csv, before the points.
+        let mut ordered = Map::new();
+        for name in HISTORY_COLUMNS
+            .iter()
+            .copied()
+            .chain(["regime"])
+            .map(String::from)
+            .chain(columns.names.iter().skip(8).cloned())
+        {
+            if let Some(v) = history.remove(&name) {
+                ordered.insert(name, v);
+            }
+        }
+        history = ordered;
+    }
+    json!({ "summary": summary_json(outcome, 0.0), "history": history, "events": events(outcome) })
 }
 
-/// The history as columns: one array per column of `history.csv`, in its
-/// order (`regime` as strings, then `pK_dx`, `pK_abs_acc` per extra point).
-fn history(history: &History) -> Value {
-    let samples = &history.samples;
-    let getters: [fn(&rocking::Sample) -> f64; 8] = [
-        |s| s.t,
-        |s| s.ground_acc,
-        |s| s.state.theta,
-        |s| s.state.theta_dot,
-        |s| s.state.slip,
-        |s| s.state.slip_vel,
-        |s| s.top_dx,
-        |s| s.top_abs_acc,
-    ];
-    let mut columns = Map::new();
-    for (name, get) in HISTORY_COLUMNS.iter().zip(getters) {
-        columns.insert((*name).into(), samples.iter().map(|s| json!(get(s))).collect());
+/// The summary, the events and the names of the history's columns as JSON
+/// (`columns`: the float columns in `history.csv` order, `regime` apart), and
+/// the float columns themselves, handed to JavaScript as `Float64Array`s
+/// (copying 10^5 numbers is far faster than printing and parsing them).
+pub fn outcome_parts(outcome: &Outcome) -> (Value, Vec<Vec<f64>>) {
+    let columns = outcome.history.as_ref().map(Columns::of).unwrap_or_default();
+    let meta = json!({
+        "summary": summary_json(outcome, 0.0),
+        "events": events(outcome),
+        "columns": columns.names,
+        "regime": columns.regime,
+    });
+    (meta, columns.values)
+}
+
+/// The history as columns: the float columns of `history.csv` in its order
+/// (the 8 before `regime`, then `pK_dx`, `pK_abs_acc` per extra point), and `regime`.
+#[derive(Debug, Default)]
+struct Columns {
+    names: Vec<String>,
+    values: Vec<Vec<f64>>,
+    regime: Vec<&'static str>,
+}
+
+impl Columns {
+    fn of(history: &History) -> Self {
+        let samples = &history.samples;
+        let getters: [fn(&rocking::Sample) -> f64; 8] = [
+            |s| s.t,
+            |s| s.ground_acc,
+            |s| s.state.theta,
+            |s| s.state.theta_dot,
+            |s| s.state.slip,
+            |s| s.state.slip_vel,
+            |s| s.top_dx,
+            |s| s.top_abs_acc,
+        ];
+        let mut names: Vec<String> = HISTORY_COLUMNS.iter().map(|c| c.to_string()).collect();
+        let mut values: Vec<Vec<f64>> = getters.iter().map(|get| samples.iter().map(get).collect()).collect();
+        let points = history.point_values.first().map_or(0, Vec::len);
+        for k in 0..points {
+            let column = |pick: fn(&(f64, f64)) -> f64| -> Vec<f64> { history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, pick)).collect() };
+            names.push(format!("p{}_dx", k + 1));
+            values.push(column(|v| v.0));
+            names.push(format!("p{}_abs_acc", k + 1));
+            values.push(column(|v| v.1));
+        }
+        let regime = samples.iter().map(|s| s.motion.as_str()).collect();
+        Self { names, values, regime }
     }
-    let names = Motion::ALL.map(Motion::as_str);
-    columns.insert("regime".into(), samples.iter().map(|s| json!(names[s.motion.index()])).collect());
-    let points = history.point_values.first().map_or(0, Vec::len);
-    for k in 0..points {
-        let column = |pick: fn(&(f64, f64)) -> f64| -> Value { history.point_values.iter().map(|row| json!(row.get(k).map(pick))).collect() };
-        columns.insert(format!("p{}_dx", k + 1), column(|v| v.0));
-        columns.insert(format!("p{}_abs_acc", k + 1), column(|v| v.1));
-    }
-    Value::Object(columns)
 }
 
 /// The events as rows with the `events.csv` columns (`theta`, `slip_vel`,

@@ -73,3 +73,29 @@ fn a_sweep_block_by_block_gives_one_row_per_case() {
     let csv = format!("{}{}", blocks[0]["csv"].as_str().unwrap_or(""), blocks[1]["csv"].as_str().unwrap_or(""));
     assert_eq!(csv.lines().count(), 6);
 }
+
+#[test]
+fn the_typed_columns_hold_the_json_history() {
+    let json = toml_to_json(TOWER).unwrap_or_else(|e| panic!("{e}"));
+    let full = parsed(&run_json(&json).unwrap_or_else(|e| panic!("{e}")));
+    let case = scenario(&json)
+        .and_then(|s| s.build().map_err(|e| e.to_string()))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let outcome = case.run(rocking_scenario::RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"));
+    let (meta, columns) = output::outcome_parts(&outcome);
+    assert_eq!(meta["summary"], full["summary"]);
+    assert_eq!(meta["events"], full["events"]);
+    assert_eq!(meta["regime"], full["history"]["regime"]);
+    let names: Vec<&str> = meta["columns"]
+        .as_array()
+        .map(|a| a.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
+    // The JSON history's keys are these names with `regime` after the 8 of history.csv.
+    let mut expected: Vec<&str> = names.clone();
+    expected.insert(8, "regime");
+    let keys: Vec<&str> = full["history"].as_object().map(|m| m.keys().map(String::as_str).collect()).unwrap_or_default();
+    assert_eq!(keys, expected);
+    for (name, column) in names.iter().zip(&columns) {
+        assert_eq!(&json!(column), &full["history"][*name], "{name}");
+    }
+}
