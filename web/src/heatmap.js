@@ -32,7 +32,9 @@ export function drawHeatmap(canvas, columns, keys) {
     const y = canvas.height - bottom - (j + 1) * h;
     if (value[r] === null) continue;
     ctx.fillStyle = colour(over[r] ? 1 : value[r]);
-    ctx.fillRect(x, y, Math.ceil(w), Math.ceil(h));
+    // Whole pixels, each cell up to the next one's edge: no seams between cells.
+    const [x0, y0] = [Math.floor(x), Math.floor(y)];
+    ctx.fillRect(x0, y0, Math.floor(x + w) - x0, Math.floor(y + h) - y0);
     if (over[r]) {
       ctx.strokeStyle = "#c00";
       ctx.beginPath();
