@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The page's tests in a real browser (README, "The page in the browser"):
-# builds the page (scripts/web.sh) and the `rocking` command, installs
+# builds the page (scripts/web.sh) and the `rocking` command, runs the
+# binding crate's unit tests (cargo test -p rocking-web), installs
 # Debian's Chromium if missing (apt-get) and Playwright for Python into a fresh
 # virtual environment (no browser download: Playwright drives the system's
 # Chromium), serves web/dist/ on localhost and runs web/tests/ with pytest.
@@ -27,6 +28,8 @@ echo "== building the page"
 bash scripts/web.sh
 echo "== building the rocking command (release)"
 cargo build --release --locked -p rocking-cli --bin rocking
+echo "== the binding crate's own tests, on the host (it is outside the default members)"
+cargo test --release --locked -p rocking-web
 
 venv="$(mktemp -d "${TMPDIR:-/tmp}/rocking-web-venv.XXXXXX")"
 trap 'rm -rf "$venv"' EXIT
