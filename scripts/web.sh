@@ -16,8 +16,11 @@ rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup targe
 version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
 if [[ "$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $version" ]]; then
     echo "installing wasm-bindgen-cli $version (the version of the wasm-bindgen crate in Cargo.lock)"
-    # --locked first; if the registry lacks a version its lock file names, let cargo resolve.
-    cargo install wasm-bindgen-cli --version "$version" --locked || cargo install wasm-bindgen-cli --version "$version"
+    # --no-default-features: no TLS stack (rustls, ring), which only the test
+    # runner's webdriver download uses. --locked first; if the registry lacks a
+    # version its lock file names, let cargo resolve.
+    cargo install wasm-bindgen-cli --version "$version" --no-default-features --locked ||
+        cargo install wasm-bindgen-cli --version "$version" --no-default-features
 fi
 
 cargo build --release --locked --target wasm32-unknown-unknown -p rocking-web
