@@ -3,7 +3,8 @@
 //! Amplitudes are given in g (converted with `simulation.g`) or as
 //! `amplitude_ratio = a_p / (g tan α)`; frequencies in Hz or as
 //! `frequency_ratio = ω / p`. A record is read from `file`, resolved against the
-//! scenario file's folder, when the scenario is built.
+//! scenario file's folder, when the scenario is built, or taken from `text`
+//! (the file's content, where there is no file system: the web page).
 
 use crate::error::{io_reason, ErrorKind, Fault};
 use crate::read::{finite, non_negative, positive, Section};
@@ -55,7 +56,7 @@ impl GroundKind {
             GroundKind::SinePulse | GroundKind::CosinePulse => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio"],
             GroundKind::RectangularPulse => &["type", "amplitude", "amplitude_ratio", "duration"],
             GroundKind::Ricker => &["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "t0"],
-            GroundKind::Record => &["type", "file", "format", "scale", "units", "dt"],
+            GroundKind::Record => &["type", "file", "text", "format", "scale", "units", "dt"],
         }
     }
 }
@@ -99,7 +100,10 @@ pub struct RecordInfo {
 /// A record still to be read (when the scenario is built).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct RecordSpec {
+    /// The file, or [`TEXT_NAME`] for a record given as `text`.
     file: PathBuf,
+    /// The content given as `text` (then nothing is read from disk).
+    text: Option<std::sync::Arc<str>>,
     format: Option<RecordFormat>,
     scale: f64,
     csv: CsvOptions,
@@ -255,13 +259,23 @@ fn frequency(s: &Section<'_>, cx: &Context<'_>) -> Result<f64, Fault> {
     Ok(ratio * tower.frequency_parameter(cx.g) / (2.0 * PI))
 }
 
+/// How a record given as `text` is named in messages and reports.
+const TEXT_NAME: &str = "<text>";
+
 fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
-    let file = s
-        .string("file")?
-        .ok_or_else(|| Fault::new(s.key("file"), ErrorKind::Missing("required for type = \"record\": the record's path".into())))?;
-    if file.is_empty() {
-        return Err(Fault::invalid(s.key("file"), "must not be empty"));
-    }
+    s.exclusive("file", "text")?;
+    let text = s.string("text")?.map(std::sync::Arc::<str>::from);
+    let file = match (s.string("file")?, &text) {
+        (Some(""), _) => return Err(Fault::invalid(s.key("file"), "must not be empty")),
+        (Some(file), _) => folder.join(file),
+        (None, Some(_)) => PathBuf::from(TEXT_NAME),
+        (None, None) => {
+            return Err(Fault::new(
+                s.key("file"),
+                ErrorKind::Missing("required for type = \"record\": the record's path (or its content as text)".into()),
+            ))
+        }
+    };
     let format = s.choice("format", &[("at2", RecordFormat::At2), ("esm", RecordFormat::Esm), ("csv", RecordFormat::Csv)])?;
     let units = s.choice(
         "units",
@@ -283,7 +297,8 @@ fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
         }
     }
     Ok(RecordSpec {
-        file: folder.join(file),
+        file,
+        text,
         format,
         scale: finite(&s.key("scale"), s.number("scale")?.unwrap_or(1.0))?,
         csv: CsvOptions {
@@ -314,9 +329,9 @@ fn csv_only(s: &Section<'_>, key: &str, format: RecordFormat) -> Fault {
 }
 
 impl RecordSpec {
-    /// The record file (resolved).
-    pub(crate) fn file(&self) -> &Path {
-        &self.file
+    /// The record file (resolved); `None` for a record given as `text`.
+    pub(crate) fn file(&self) -> Option<&Path> {
+        self.text.is_none().then_some(self.file.as_path())
     }
 
     /// Reads the record (or takes it from `cache`, where a record read
@@ -349,17 +364,22 @@ impl RecordSpec {
 
     /// Reads and parses the file, unscaled.
     fn read(&self, g: f64) -> Result<(Record, RecordFormat), Fault> {
-        let key = "ground.file";
-        let text = read_text(&self.file).map_err(|(reason, os_error)| {
-            Fault::new(
-                key,
-                ErrorKind::Read {
-                    path: self.file.clone(),
-                    reason,
-                    os_error,
-                },
-            )
-        })?;
+        let (key, text) = match &self.text {
+            Some(text) => ("ground.text", std::borrow::Cow::Borrowed(&**text)),
+            None => {
+                let text = read_text(&self.file).map_err(|(reason, os_error)| {
+                    Fault::new(
+                        "ground.file",
+                        ErrorKind::Read {
+                            path: self.file.clone(),
+                            reason,
+                            os_error,
+                        },
+                    )
+                })?;
+                ("ground.file", std::borrow::Cow::Owned(text))
+            }
+        };
         let malformed = |source| {
             Fault::new(
                 key,

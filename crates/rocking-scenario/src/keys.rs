@@ -303,10 +303,19 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "ground.file",
         Text,
         "",
-        "required for a record",
+        "required for a record (or `text`)",
         "a non-empty path, relative to the scenario file's folder",
         "The accelerogram to read.",
         "\"../../data/records/elcentro_1940_ns.AT2\"",
+    ),
+    key(
+        "ground.text",
+        Text,
+        "",
+        "instead of `file`",
+        "the content of a record file (AT2, ESM or CSV)",
+        "The accelerogram itself, for callers without files (the page in the browser); errors name it `<text>`.",
+        "\"time,acceleration\\n0,0\\n0.01,0.1\\n\"",
     ),
     key(
         "ground.format",
@@ -636,7 +645,7 @@ mod tests {
                     geometry.to_string(),
                     "[ground]\ntype = \"record\"\nfile = \"x.csv\"\nformat = \"csv\"\n".to_string(),
                 ),
-                "ground.file" => (geometry.to_string(), "[ground]\ntype = \"record\"\n".to_string()),
+                "ground.file" | "ground.text" => (geometry.to_string(), "[ground]\ntype = \"record\"\n".to_string()),
                 _ => (geometry.to_string(), harmonic.to_string()),
             };
             let text = format!("{tower}{building}{ground}");

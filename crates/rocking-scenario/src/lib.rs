@@ -24,7 +24,7 @@
 //! | "sine-pulse", "cosine-pulse" | amplitude, frequency (or their ratios) | |
 //! | "ricker" | amplitude, frequency (or their ratios) | `t0` (1.5 / frequency) |
 //! | "rectangular-pulse" | amplitude (or ratio), `duration` | |
-//! | "record" | `file` | `format` (guessed), `scale` (1), `units` ("g", CSV only), `dt` (CSV only) |
+//! | "record" | `file` (or `text`: the file's content) | `format` (guessed), `scale` (1), `units` ("g", CSV only), `dt` (CSV only) |
 //! | "none" | | |
 //! | `[initial]` | | `theta` or `theta_over_alpha` (0), `theta_dot` (0) |
 //! | `[simulation]` | | `duration` (20 s), `g` (9.81), `output_dt` (0.005 s), `rtol` (1e-8), `atol` (1e-10) |

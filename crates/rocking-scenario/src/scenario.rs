@@ -189,7 +189,7 @@ impl Scenario {
     /// The record file the scenario reads, if any (resolved against its folder).
     pub fn record_file(&self) -> Option<&Path> {
         match &self.ground {
-            GroundSpec::Record(r) => Some(r.file()),
+            GroundSpec::Record(r) => r.file(),
             GroundSpec::Ready(..) => None,
         }
     }

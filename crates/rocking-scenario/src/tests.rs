@@ -368,7 +368,7 @@ fn keys_of_another_ground_type_do_not_apply() {
         "ground.frequency",
     );
     assert!(
-        msg.starts_with("does not apply to type = \"record\" (its keys: type, file, format, scale, units, dt)"),
+        msg.starts_with("does not apply to type = \"record\" (its keys: type, file, text, format, scale, units, dt)"),
         "{msg}"
     );
     fails(&[("ground.t0", Some("1.0"))], "ground.t0");
@@ -621,4 +621,44 @@ fn recording_the_history_does_not_change_the_summary() {
     let without = case.run(RunOptions::SUMMARY).unwrap_or_else(|e| panic!("{e}"));
     assert!(with.summary.first_slip_time.is_some(), "1.5 g: both bodies move");
     assert_eq!(summary_json(&with, 0.0), summary_json(&without, 0.0));
+}
+
+/// A record given as `text` (the web page, which has no files): the same
+/// motion as the same content read from a file, so the same run.
+#[test]
+fn a_record_given_as_text_runs_as_the_same_file() {
+    let content = "time,acceleration\n0.0,0.0\n0.1,0.5\n0.2,-0.6\n0.3,0.0\n";
+    let dir = record_dir(&[("a.csv", content)]);
+    let from_file = record_scenario(dir.path(), "{ type = \"record\", file = \"a.csv\", scale = 2.0 }");
+    let quoted = toml::Value::String(content.into()).to_string();
+    let from_text = record_scenario(dir.path(), &format!("{{ type = \"record\", text = {quoted}, scale = 2.0 }}"));
+    let run = |s: Result<Scenario, crate::Error>| {
+        let case = s.and_then(|s| s.build()).unwrap_or_else(|e| panic!("{e}"));
+        let outcome = case.run(RunOptions::SUMMARY).unwrap_or_else(|e| panic!("{e}"));
+        (
+            case.ground_info.record.map(|r| (r.samples, r.format, r.duration_s)),
+            summary_json(&outcome, 0.0),
+        )
+    };
+    let (file_info, file_summary) = run(from_file);
+    let (text_info, text_summary) = run(from_text);
+    // Four samples, 0.3 s, guessed as CSV: what the content says, both ways.
+    assert_eq!(file_info, Some((4, rocking::RecordFormat::Csv, 0.3)));
+    // The same bytes through the same parser and the same run: equal to the last bit.
+    assert_eq!(text_info, file_info);
+    assert_eq!(text_summary, file_summary);
+    // No file to guard against overwriting.
+    let s = record_scenario(dir.path(), "{ type = \"record\", text = \"0.0\\n0.1\\n\", dt = 0.01 }").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.record_file(), None);
+    // Both, or a malformed text: one line naming ground.text.
+    let e = record_scenario(dir.path(), "{ type = \"record\", file = \"a.csv\", text = \"0.0\" }").err();
+    assert_eq!(e.as_ref().and_then(|e| e.key()), Some("ground.text"), "{e:?}");
+    let e = record_scenario(
+        dir.path(),
+        "{ type = \"record\", text = \"time,acceleration\\n0.0,0.0\\n0.1,0.1x\\n\", format = \"csv\" }",
+    )
+    .and_then(|s| s.build())
+    .err();
+    let line = e.map(|e| e.to_string()).unwrap_or_default();
+    assert!(line.contains("ground.text: ") && line.contains("line 3") && !line.contains('\n'), "{line}");
 }

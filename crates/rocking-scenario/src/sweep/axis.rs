@@ -37,6 +37,7 @@ pub const SWEEPABLE_KEYS: &[&str] = &[
     "ground.phase",
     "ground.t0",
     "ground.file",
+    "ground.text",
     "ground.format",
     "ground.scale",
     "ground.units",
@@ -54,6 +55,7 @@ pub const SWEEPABLE_KEYS: &[&str] = &[
 /// The sweepable keys whose values are strings; every other one takes a number.
 pub(crate) const STRING_KEYS: &[&str] = &[
     "name",
+    "ground.text",
     "tower.section",
     "building.normal_force",
     "ground.type",

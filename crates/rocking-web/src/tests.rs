@@ -1,0 +1,101 @@
+//! The page's functions against a second path to the same answer: the TOML
+//! file parsed by the scenario crate directly (as `rocking run` does).
+
+use super::*;
+use rocking_scenario::{summary_json, RunOptions};
+
+const TOWER: &str = include_str!("../../../examples/tower-on-church.toml");
+
+fn parsed(text: &str) -> Value {
+    serde_json::from_str(text).unwrap_or_else(|e| panic!("{e}: {text}"))
+}
+
+#[test]
+fn a_toml_file_through_json_runs_as_the_file_itself() {
+    let json = toml_to_json(TOWER).unwrap_or_else(|e| panic!("{e}"));
+    let out = parsed(&run_json(&json).unwrap_or_else(|e| panic!("{e}")));
+    let direct = Scenario::from_toml_str(TOWER, origin())
+        .and_then(|s| s.build())
+        .and_then(|c| c.run(RunOptions::ALL));
+    let direct = direct.unwrap_or_else(|e| panic!("{e}"));
+    // The same table reaches the same code: every field equal to the last bit.
+    assert_eq!(out["summary"], summary_json(&direct, 0.0));
+    let rows = direct.history.as_ref().map_or(0, |h| h.samples.len());
+    let history = out["history"].as_object().cloned().unwrap_or_default();
+    // history.csv's 9 columns plus 2 per extra point (the example has 2 points).
+    assert_eq!(history.len(), 9 + 2 * 2);
+    for (name, column) in &history {
+        assert_eq!(column.as_array().map(Vec::len), Some(rows), "{name}");
+    }
+    assert_eq!(out["events"].as_array().map(Vec::len), Some(direct.events.len()));
+    // The round trip to TOML gives the same table back (the page's download).
+    let toml = json_to_toml(&json).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(toml_to_json(&toml), Ok(json));
+}
+
+#[test]
+fn errors_are_the_commands_one_line() {
+    let bad = toml_to_json(&TOWER.replace("width = 4.0 ", "width = -4.0 ")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        run_json(&bad),
+        Err("scenario.toml: tower.width: must be a finite number > 0, got -4".to_string())
+    );
+    let e = toml_to_json("[tower\nwidth = 1").err().unwrap_or_default();
+    assert!(e.starts_with("scenario.toml: line 1") && !e.contains('\n'), "{e}");
+    assert!(run_json("[1, 2]").is_err_and(|e| e.starts_with("scenario.toml: ") && !e.contains('\n')));
+}
+
+#[test]
+fn a_sweep_block_by_block_gives_one_row_per_case() {
+    let scenario = toml_to_json(TOWER).unwrap_or_else(|e| panic!("{e}"));
+    let sweep = WebSweep::create(&scenario, r#"{"ground.frequency": [4.0, 5.0, 6.0], "ground.amplitude": [0.5, 1.5]}"#).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(sweep.length(), 6);
+    let header = parsed(&sweep.header());
+    let width = header.as_array().map_or(0, Vec::len);
+    // Blocks of 4 then the rest (past the end is clamped): 6 rows in case order.
+    let blocks = [parsed(&sweep.run_cases(0, 4)), parsed(&sweep.run_cases(4, 100))];
+    let rows: Vec<Value> = blocks.iter().flat_map(|b| b["rows"].as_array().cloned().unwrap_or_default()).collect();
+    assert_eq!(rows.len(), 6);
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(row.as_array().map(Vec::len), Some(width));
+        // The first axis varies slowest.
+        assert_eq!(row[0], json!([4.0, 5.0, 6.0][i / 2]));
+        assert_eq!(row[1], json!([0.5, 1.5][i % 2]));
+        assert_eq!(row[width - 1], Value::Null, "case {i} failed");
+    }
+    // The fifth case (6 Hz, 0.5 g) as a scenario of its own: the same max θ/α.
+    let one = scenario
+        .replace("\"frequency\":5.0", "\"frequency\":6.0")
+        .replace("\"amplitude\":1.5", "\"amplitude\":0.5");
+    let single = parsed(&run_json(&one).unwrap_or_else(|e| panic!("{e}")));
+    let column = header.as_array().and_then(|h| h.iter().position(|c| c == "max_theta_over_alpha")).unwrap_or(0);
+    assert_eq!(rows[4][column], single["summary"]["max_theta_over_alpha"]);
+    let csv = format!("{}{}", blocks[0]["csv"].as_str().unwrap_or(""), blocks[1]["csv"].as_str().unwrap_or(""));
+    assert_eq!(csv.lines().count(), 6);
+}
+
+#[test]
+fn the_typed_columns_hold_the_json_history() {
+    let json = toml_to_json(TOWER).unwrap_or_else(|e| panic!("{e}"));
+    let full = parsed(&run_json(&json).unwrap_or_else(|e| panic!("{e}")));
+    let case = scenario(&json)
+        .and_then(|s| s.build().map_err(|e| e.to_string()))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let outcome = case.run(rocking_scenario::RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"));
+    let (meta, columns) = output::outcome_parts(&outcome);
+    assert_eq!(meta["summary"], full["summary"]);
+    assert_eq!(meta["events"], full["events"]);
+    assert_eq!(meta["regime"], full["history"]["regime"]);
+    let names: Vec<&str> = meta["columns"]
+        .as_array()
+        .map(|a| a.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
+    // The JSON history's keys are these names with `regime` after the 8 of history.csv.
+    let mut expected: Vec<&str> = names.clone();
+    expected.insert(8, "regime");
+    let keys: Vec<&str> = full["history"].as_object().map(|m| m.keys().map(String::as_str).collect()).unwrap_or_default();
+    assert_eq!(keys, expected);
+    for (name, column) in names.iter().zip(&columns) {
+        assert_eq!(&json!(column), &full["history"][*name], "{name}");
+    }
+}
