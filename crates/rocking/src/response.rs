@@ -33,7 +33,8 @@ pub struct Summary {
     pub max_top_displacement: f64,
     /// Peak absolute horizontal acceleration of the top centre (m/s²).
     pub max_top_abs_acceleration: f64,
-    /// Peak `|f_x| / f_y` at the pivot (Shenton's demand on the tower's own friction).
+    /// Peak `|f_x| / f_y` at the pivot (Shenton's demand on the tower's own
+    /// friction); infinite once `f_y` reached zero ([`Summary::tower_uplift_detected`]).
     pub max_pivot_friction_demand: f64,
     /// Whether the vertical pivot reaction `f_y` became negative (the tower would fly).
     pub tower_uplift_detected: bool,
@@ -122,8 +123,17 @@ impl Tracker {
         if fy > 0.0 {
             s.max_pivot_friction_demand = s.max_pivot_friction_demand.max(fx.abs() / fy);
         } else {
-            s.tower_uplift_detected = true;
+            self.reaction_lost();
         }
+    }
+
+    /// The vertical pivot reaction reached zero: the tower would fly, and the
+    /// demand `|f_x| / f_y` grew without bound on the way (`f_x` does not
+    /// vanish with `f_y`), so it has no finite maximum.
+    #[inline]
+    pub(crate) fn reaction_lost(&mut self) {
+        self.summary.tower_uplift_detected = true;
+        self.summary.max_pivot_friction_demand = f64::INFINITY;
     }
 
     /// The response at an instant (an event or the start): displacements, top

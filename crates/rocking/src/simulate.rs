@@ -483,7 +483,17 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let near = |q0: Jet, q1: Jet, peak: f64| hermite_range(q0, q1, h).is_some_and(|(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
         let ratio = |w: &Watched| w.fx / w.fy;
         let top_inside = rocking && near(w0.top, w1.top, summary.max_top_abs_acceleration);
-        let ratio_inside = rocking && w0.fy.v > 0.0 && w1.fy.v > 0.0 && near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand);
+        // The demand |f_x| / f_y grows without bound as f_y falls towards zero (a
+        // tower about to fly or overturn): no pruning where f_y is below g_e / 2.
+        let low_fy = w0.fy.v.min(w1.fy.v) < 0.5 * g_e;
+        let ratio_inside = rocking
+            && w0.fy.v > 0.0
+            && w1.fy.v > 0.0
+            && (if low_fy {
+                may_have_extremum(ratio(&w0), ratio(&w1), h)
+            } else {
+                near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand)
+            });
         let fy_inside = rocking && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g_e);
         let stick_inside = stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h));
         let watched_inside = top_inside || ratio_inside || fy_inside || stick_inside;
@@ -605,7 +615,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             if fy_inside {
                 interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, &mut |t, v| {
                     if t <= t_stop && v <= 0.0 {
-                        tracker.summary.tower_uplift_detected = true;
+                        tracker.reaction_lost();
                     }
                 });
             }
