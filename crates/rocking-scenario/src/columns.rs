@@ -218,6 +218,13 @@ pub const EVENTS: &[Column<Event>] = &[
         present: always,
         read: Read::Text(|e| e.regime.motion().as_str()),
     },
+    Column {
+        name: "slip_vel_before",
+        unit: "m/s",
+        meaning: "slip velocity before the event (an impact on a building that can slide changes it)",
+        present: always,
+        read: Read::Number(|e| e.before.slip_vel),
+    },
 ];
 
 /// What a summary field holds.
