@@ -31,14 +31,14 @@ mass = 1.0e5
 
 [building]
 mass = 1.0e3
-mu_static = 2.0
-mu_kinetic = 2.0
+mu_static = 4.0
+mu_kinetic = 4.0
 normal_force = "dynamic"
 
 [ground]
-type = "sine-pulse"
-amplitude = 3.0
-frequency = 2.0
+type = "harmonic"
+amplitude = 1.0
+frequency = 1.0
 
 [simulation]
 duration = 3.0

@@ -26,7 +26,11 @@ fn first_impact(mu_s: f64, normal: NormalForce) -> Vec<(EventKind, rocking::Even
     };
     let (_, log) = run_logged(&model, &GroundMotion::None, initial, &tight(1.5));
     let impact = log.events.iter().find(|e| e.kind == EventKind::Impact).unwrap();
-    log.events.iter().filter(|e| e.time == impact.time).map(|e| (e.kind, *e)).collect()
+    log.events
+        .iter()
+        .filter(|e| e.time.to_bits() == impact.time.to_bits())
+        .map(|e| (e.kind, *e))
+        .collect()
 }
 
 /// A building at rest stays stuck through the impact if and only if
