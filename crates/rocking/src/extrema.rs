@@ -16,15 +16,38 @@
 
 use crate::jet::Jet;
 
+/// The cubic Hermite interpolant of `q0`, `q1` with slopes `h d0`, `h d1` on
+/// `x ∈ [0, 1]`: `p(x) = v0 + s0 x + c2 x² + c3 x³`.
+struct Cubic {
+    v0: f64,
+    s0: f64,
+    c2: f64,
+    c3: f64,
+}
+
+impl Cubic {
+    fn hermite(q0: Jet, q1: Jet, h: f64) -> Self {
+        let delta = q1.v - q0.v;
+        let (s0, s1) = (h * q0.d, h * q1.d);
+        Self {
+            v0: q0.v,
+            s0,
+            c2: 3.0 * delta - 2.0 * s0 - s1,
+            c3: -2.0 * delta + s0 + s1,
+        }
+    }
+
+    fn at(&self, x: f64) -> f64 {
+        self.v0 + x * (self.s0 + x * (self.c2 + x * self.c3))
+    }
+}
+
 /// Critical points in `(0, 1)` of the cubic Hermite interpolant of `q0`,
 /// `q1` with slopes `h d0`, `h d1` (at most two, in increasing order).
 fn hermite_critical_points(q0: Jet, q1: Jet, h: f64) -> ([f64; 2], usize) {
-    let delta = q1.v - q0.v;
-    let (s0, s1) = (h * q0.d, h * q1.d);
-    // p(x) = q0 + s0 x + c2 x² + c3 x³; p'(x) = s0 + 2 c2 x + 3 c3 x².
-    let c2 = 3.0 * delta - 2.0 * s0 - s1;
-    let c3 = -2.0 * delta + s0 + s1;
-    let (a, b, c) = (3.0 * c3, 2.0 * c2, s0);
+    let p = Cubic::hermite(q0, q1, h);
+    // p'(x) = s0 + 2 c2 x + 3 c3 x².
+    let (a, b, c) = (3.0 * p.c3, 2.0 * p.c2, p.s0);
     let mut out = [0.0; 2];
     let mut n = 0;
     let mut push = |x: f64| {
@@ -68,13 +91,10 @@ pub(crate) fn hermite_range(q0: Jet, q1: Jet, h: f64) -> Option<(f64, f64)> {
     if n == 0 && q0.d * q1.d >= 0.0 {
         return None;
     }
-    let delta = q1.v - q0.v;
-    let (s0, s1) = (h * q0.d, h * q1.d);
-    let c2 = 3.0 * delta - 2.0 * s0 - s1;
-    let c3 = -2.0 * delta + s0 + s1;
+    let p = Cubic::hermite(q0, q1, h);
     let (mut lo, mut hi) = (q0.v.min(q1.v), q0.v.max(q1.v));
     for &x in &critical[..n] {
-        let v = q0.v + x * (s0 + x * (c2 + x * c3));
+        let v = p.at(x);
         lo = lo.min(v);
         hi = hi.max(v);
     }

@@ -477,7 +477,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 (_, BuildingRegime::Stick) => false,
             };
         let stick_examined = rocking && regime.building == BuildingRegime::Stick && kernel.has_building;
-        let crossing_at_end = list.iter().enumerate().any(|(i, _)| w1.conditions[i].v >= 0.0);
+        let crossing_at_end = w1.conditions[..n].iter().any(|c| c.v >= 0.0);
         // Summary peaks that the step may raise (see PEAK_MARGIN).
         let summary = &self.tracker.summary;
         let near = |q0: Jet, q1: Jet, peak: f64| hermite_range(q0, q1, h).is_some_and(|(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
