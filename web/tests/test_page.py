@@ -110,7 +110,10 @@ def without_wall_time(summary: dict) -> dict:
 
 
 def scenario_files():
-    return sorted(p for p in (ROOT / "examples").rglob("*.toml") if "sweep" not in tomllib.loads(p.read_text()))
+    # Scenarios only: not sweeps, not fragility studies (the command's alone).
+    return sorted(
+        p for p in (ROOT / "examples").rglob("*.toml") if not {"sweep", "study"} & tomllib.loads(p.read_text()).keys()
+    )
 
 
 def test_every_example_gives_the_commands_summary(page, tmp_path):

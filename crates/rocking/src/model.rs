@@ -79,7 +79,7 @@ impl Model {
             restitution: t.map(Tower::restitution),
             inertia_pivot: t.map(Tower::inertia_pivot),
             tower_mass: t.map(Tower::mass),
-            uplift_acceleration_g: t.map(|t| t.alpha().tan()),
+            uplift_acceleration_g: t.map(|t| libm::tan(t.alpha())),
             slip_acceleration_g: self.building.as_ref().map(Building::mu_static),
             sliding_mass: self.building.as_ref().map(|b| b.mass() + t.map_or(0.0, Tower::mass)),
         }

@@ -106,12 +106,12 @@ impl Tower {
             });
         }
         let (b, h) = (width / 2.0, height / 2.0);
-        let radius = b.hypot(h);
+        let radius = libm::hypot(b, h);
         let inertia_pivot = match geometry.inertia_pivot {
             Some(i) => in_range(Parameter::TowerInertiaPivot, i, INERTIA_RANGE.0, INERTIA_RANGE.1, "kg·m²")?,
             None => density * inertia_per_density + mass * radius * radius,
         };
-        Self::from_properties(mass, inertia_pivot, radius, b.atan2(h), geometry.restitution)
+        Self::from_properties(mass, inertia_pivot, radius, libm::atan2(b, h), geometry.restitution)
     }
 
     /// A tower from its mechanical properties: mass `m2` (kg), inertia about a
@@ -136,7 +136,7 @@ impl Tower {
                 reason: format!("{inertia_pivot} kg·m² is not above m R² = {point_inertia} kg·m² (parallel-axis theorem)"),
             });
         }
-        let housner = 1.0 - 2.0 * point_inertia * alpha.sin().powi(2) / inertia_pivot;
+        let housner = 1.0 - 2.0 * point_inertia * libm::sin(alpha).powi(2) / inertia_pivot;
         let restitution = match restitution {
             Some(r) => {
                 let r = non_negative(Parameter::TowerRestitution, r)?;
@@ -183,11 +183,11 @@ impl Tower {
     }
     /// Half width `b = R sin α` (m).
     pub fn half_width(&self) -> f64 {
-        self.radius * self.alpha.sin()
+        self.radius * libm::sin(self.alpha)
     }
     /// Height `H = 2 R cos α` (m).
     pub fn height(&self) -> f64 {
-        2.0 * self.radius * self.alpha.cos()
+        2.0 * self.radius * libm::cos(self.alpha)
     }
     /// Ratio of angular velocities after and before an impact, `θ̇⁺ = r θ̇⁻`.
     /// (The ratio of kinetic energies is its square.)

@@ -58,7 +58,7 @@ impl Piece {
             Piece::Linear { t0, a0, slope } => a0 + slope * (t - t0),
             Piece::Ricker { amplitude, pi_f, t0 } => {
                 let x = (pi_f * (t - t0)).powi(2);
-                amplitude * (1.0 - 2.0 * x) * (-x).exp()
+                amplitude * (1.0 - 2.0 * x) * libm::exp(-x)
             }
         }
     }
@@ -78,7 +78,7 @@ impl Piece {
             Piece::Ricker { amplitude, pi_f, t0 } => {
                 let tau = t - t0;
                 let x = (pi_f * tau).powi(2);
-                let e = (-x).exp();
+                let e = libm::exp(-x);
                 // d/dx [(1 − 2x) e^−x] = (2x − 3) e^−x, dx/dt = 2 (π f)² τ.
                 Jet::new(amplitude * (1.0 - 2.0 * x) * e, amplitude * (2.0 * x - 3.0) * e * 2.0 * pi_f * pi_f * tau)
             }

@@ -176,7 +176,7 @@ impl<const N: usize> Dop853<N> {
         let h1 = if d1 <= 1e-15 && d2 <= 1e-15 {
             (h0 * 1e-3).max(1e-6)
         } else {
-            (0.01 / d1.max(d2)).powf(1.0 / 8.0)
+            libm::pow(0.01 / d1.max(d2), 1.0 / 8.0)
         };
         (100.0 * h0).min(h1).min(interval)
     }
