@@ -39,6 +39,13 @@ pub enum Error {
         /// The last transition tried.
         last: &'static str,
     },
+    /// The effective gravity `g + a_v` reached zero: the ground falls faster
+    /// than gravity and the bodies lose contact.
+    #[error("the ground falls faster than gravity at t = {time} s (g + a_v <= 0): the bodies lose contact, which the model does not describe")]
+    FreeFall {
+        /// The first instant where `g + a_v <= 0` (s).
+        time: f64,
+    },
     /// An observer stopped the run (an interruption such as Ctrl-C).
     #[error("stopped at t = {time} s")]
     Stopped {

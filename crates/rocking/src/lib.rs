@@ -57,4 +57,4 @@ pub use model::{Derived, Model};
 pub use observer::{Flow, Halt, Observer, Sample, Step};
 pub use regime::{BuildingRegime, Motion, Pivot, Regime, SlipDirection, State, TowerRegime};
 pub use response::{EndReason, Summary};
-pub use simulate::{simulate, Initial, Settings, MAX_ATOL, MAX_RTOL, MIN_ATOL, MIN_RTOL, REST_ANGULAR_VELOCITY};
+pub use simulate::{simulate, simulate_with_vertical, Initial, Settings, MAX_ATOL, MAX_RTOL, MIN_ATOL, MIN_RTOL, REST_ANGULAR_VELOCITY};

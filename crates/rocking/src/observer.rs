@@ -84,6 +84,8 @@ pub(crate) enum Interpolant {
 pub struct Step<'a> {
     pub(crate) kernel: &'a Kernel,
     pub(crate) piece: Piece,
+    /// The vertical input's piece (`Constant(0.0)` without one).
+    pub(crate) vpiece: Piece,
     pub(crate) interpolant: Interpolant,
     /// Start (s).
     pub t0: f64,
@@ -100,6 +102,8 @@ pub struct Sample {
     pub t: f64,
     /// Ground acceleration (m/s²).
     pub ground_acc: f64,
+    /// Vertical ground acceleration (m/s², positive upwards; 0 without one).
+    pub ground_acc_v: f64,
     /// Rotation, angular velocity, slip and slip velocity.
     pub state: State,
     /// `θ̈` (rad/s²).
@@ -123,7 +127,8 @@ impl Step<'_> {
             Interpolant::Dense(d) => d.state(t),
         };
         let a_g = self.piece.eval(t);
-        let acc = self.kernel.accelerations(self.regime, a_g, self.kernel.g, y[0], y[1]);
+        let a_v = self.vpiece.eval(t);
+        let acc = self.kernel.accelerations(self.regime, a_g, self.kernel.g + a_v, y[0], y[1]);
         let pivot = match self.regime.tower {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
@@ -139,6 +144,7 @@ impl Step<'_> {
         Sample {
             t,
             ground_acc: a_g,
+            ground_acc_v: a_v,
             state: State::from_array(y),
             theta_ddot: acc.theta,
             slip_acc: acc.slip,

@@ -48,6 +48,8 @@ pub struct Summary {
     pub events: u64,
     /// Right-hand side evaluations.
     pub evaluations: u64,
+    /// The least effective gravity `g + a_v` over the run (m/s²), with a vertical input.
+    pub min_effective_gravity: Option<f64>,
 }
 
 impl Summary {
@@ -91,6 +93,7 @@ impl Tracker {
                 end_reason: EndReason::EndOfDuration,
                 events: 0,
                 evaluations: 0,
+                min_effective_gravity: None,
             },
         }
     }
