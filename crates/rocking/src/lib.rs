@@ -30,6 +30,7 @@
 //! ```
 
 mod body;
+mod cascade;
 mod condition;
 mod equations;
 mod error;

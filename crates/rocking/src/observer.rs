@@ -5,6 +5,7 @@
 //! `ControlFlow::Break`, and [`crate::simulate`] returns
 //! [`crate::Error::Stopped`] or [`crate::Error::Observer`].
 
+use crate::cascade::Flight;
 use crate::equations::Kernel;
 use crate::event::Event;
 use crate::ground::Piece;
@@ -77,6 +78,8 @@ impl<O: Observer + ?Sized> Observer for &mut O {
 pub(crate) enum Interpolant {
     Constant([f64; 4]),
     Dense(DenseOutput<4>),
+    /// A free flight of the impact cascade in closed form (`cascade.rs`).
+    Flight(Flight),
 }
 
 /// A stretch of smooth motion: evaluate the response anywhere in `[t0, t1]`.
@@ -125,6 +128,7 @@ impl Step<'_> {
         let y = match self.interpolant {
             Interpolant::Constant(y) => y,
             Interpolant::Dense(d) => d.state(t),
+            Interpolant::Flight(f) => f.state(t),
         };
         let a_g = self.piece.eval(t);
         let a_v = self.vpiece.eval(t);

@@ -27,6 +27,7 @@
 //! of `θ̇`, the top acceleration and the pivot reactions at the roots of their
 //! exact derivatives.
 
+use crate::cascade::Flight;
 use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDITIONS};
 use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error, Parameter};
@@ -200,6 +201,7 @@ fn run<O: Observer, const N: usize>(
         vsegment: NO_MOTION.segment(0.0),
         free_fall: f64::INFINITY,
         stepper: Dop853::new(settings.rtol, settings.atol),
+        rtol: settings.rtol,
         restart: true,
         watch: Watched::default(),
         tracker: Tracker::new(),
@@ -351,6 +353,8 @@ struct Run<'a, O: Observer, const N: usize> {
     /// `g + a_v <= 0` (`+∞` if none).
     free_fall: f64,
     stepper: Dop853<N>,
+    /// The relative tolerance (it bounds the flights taken in closed form).
+    rtol: f64,
     /// Whether the stepper must restart at `(t, y)` (after an event or a kink).
     restart: bool,
     /// The watched quantities at `(t, y)`.
@@ -402,6 +406,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         while !self.finished && self.t < self.end {
             if self.is_static() {
                 self.advance_static()?;
+            } else if let Some(flight) = self.free_flight() {
+                self.advance_free_flight(flight)?;
             } else {
                 self.advance_dynamic()?;
             }
@@ -813,6 +819,62 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             self.next_instant()?;
         }
         Ok(())
+    }
+
+    /// The free flight that starts now, if the cascade's closed form applies
+    /// (`cascade.rs`, "When it does not apply"): the tower has just left
+    /// `θ = 0`, no ground motion is left to come, the building is absent or
+    /// stuck with a margin at both ends of the flight, the flight is small
+    /// (`ψm <= 0.1 √rtol`) and ends within the run.
+    fn free_flight(&self) -> Option<Flight> {
+        let TowerRegime::Rocking(pivot) = self.regime.tower else { return None };
+        let s = pivot.sign();
+        let omega = s * self.y[1];
+        let input_over = |segment: &Segment| segment.kink == f64::INFINITY && matches!(segment.piece, Piece::Constant(a) if a == 0.0);
+        if self.y[0] != 0.0 || omega <= 0.0 || !input_over(&self.segment) || (self.has_vertical && !input_over(&self.vsegment)) {
+            return None;
+        }
+        let flight = self.kernel.free_flight(s, self.t, omega, self.y[2])?;
+        if flight.apex > 0.1 * self.rtol.sqrt() || self.t + flight.duration >= self.end {
+            return None;
+        }
+        if self.kernel.has_building {
+            if self.regime.building != BuildingRegime::Stick {
+                return None;
+            }
+            // The stick demand at the impact (the same on arrival, `θ̇²` being
+            // equal) and at the apex, with a margin of 1e-6 μs M g: the
+            // demand inside departs from these by a relative `ψm² / 8`.
+            let margin = 1e-6 * self.kernel.mu_s * self.kernel.total * self.kernel.g;
+            let (list, n) = conditions(&self.kernel, self.regime);
+            let ends = [self.y, [s * flight.apex, 0.0, self.y[2], 0.0]];
+            let holds = ends.iter().all(|y| {
+                list[..n]
+                    .iter()
+                    .filter(|c| !c.of_theta())
+                    .all(|c| c.value(&self.kernel, self.regime, 0.0, self.kernel.g, y) < -margin)
+            });
+            if !holds {
+                return None;
+            }
+        }
+        Some(flight)
+    }
+
+    /// A free flight jumped in closed form: the apex recorded, the observer
+    /// given the flight, and the impact at its end applied as any impact.
+    fn advance_free_flight(&mut self, flight: Flight) -> Result<(), Error> {
+        let t1 = flight.t0 + flight.duration;
+        self.emit_step(Interpolant::Flight(flight), t1)?;
+        let apex = [flight.s * flight.apex, 0.0, flight.slip, 0.0];
+        let acc = self.kernel.accelerations(self.regime, 0.0, self.kernel.g, apex[0], 0.0);
+        self.tracker.instant(&self.kernel, self.regime, 0.0, self.kernel.g, &apex, acc);
+        self.t = t1;
+        self.y = [0.0, -flight.s * flight.omega, flight.slip, 0.0];
+        self.restart = true;
+        self.record_instant();
+        self.switch(Condition::Impact)?;
+        self.next_instant()
     }
 
     /// Tells the observer about the stretch from the current time to `t1`, and
