@@ -55,6 +55,7 @@
 #![allow(clippy::excessive_precision)]
 
 use crate::equations::Kernel;
+use crate::trig::sin;
 
 /// Gauss–Legendre nodes and weights on `[0, 1]`, six points (the classical
 /// values on `[−1, 1]` mapped by `x ↦ (x + 1) / 2`). Written out because six
@@ -105,15 +106,15 @@ impl Kernel {
     pub(crate) fn free_rocking_apex(&self, omega: f64) -> Option<f64> {
         let p2 = self.k * self.g;
         let c = omega * omega / (2.0 * p2);
-        if c >= 1.0 - libm::cos(self.alpha) {
+        if c >= 1.0 - self.cos_alpha {
             return None;
         }
         // The small-ψm value, then Newton: the left side is concave in ψm, so
         // the iterates approach from below without overshooting past α.
-        let mut psi = c / libm::sin(self.alpha);
+        let mut psi = c / self.sin_alpha;
         for _ in 0..50 {
-            let f = 2.0 * libm::sin(self.alpha - 0.5 * psi) * libm::sin(0.5 * psi) - c;
-            let step = f / libm::sin(self.alpha - psi);
+            let f = 2.0 * sin(self.alpha - 0.5 * psi) * sin(0.5 * psi) - c;
+            let step = f / sin(self.alpha - psi);
             psi -= step;
             if step.abs() <= 4.0 * f64::EPSILON * psi {
                 break;
@@ -138,17 +139,17 @@ impl Kernel {
             .zip(GAUSS_WEIGHTS)
             .map(|(&v, w)| {
                 let x = 0.5 * apex * v * v;
-                let sinc = if x == 0.0 { 1.0 } else { libm::sin(x) / x };
-                w / (2.0 * p2 * libm::sin(self.alpha - apex + x) * sinc).sqrt()
+                let sinc = if x == 0.0 { 1.0 } else { sin(x) / x };
+                w / (2.0 * p2 * sin(self.alpha - apex + x) * sinc).sqrt()
             })
             .sum();
         4.0 * apex.sqrt() * integral
     }
 
     /// The free flight that starts at `t0` on the pivot `s` with `θ̇ = s ω`,
-    /// the building (if any) stuck at `slip`.
-    pub(crate) fn free_flight(&self, s: f64, t0: f64, omega: f64, slip: f64) -> Option<Flight> {
-        let apex = self.free_rocking_apex(omega)?;
+    /// the building (if any) stuck at `slip`, if its apex is at most `max_apex`.
+    pub(crate) fn free_flight(&self, s: f64, t0: f64, omega: f64, slip: f64, max_apex: f64) -> Option<Flight> {
+        let apex = self.free_rocking_apex(omega).filter(|&apex| apex <= max_apex)?;
         Some(Flight {
             s,
             t0,
@@ -156,7 +157,7 @@ impl Kernel {
             apex,
             slip,
             duration: self.free_rocking_flight_time(apex),
-            lambda: (self.k * self.g * libm::cos(self.alpha)).sqrt(),
+            lambda: (self.k * self.g * self.cos_alpha).sqrt(),
             tan_alpha: self.tan_alpha,
         })
     }
@@ -257,7 +258,7 @@ mod tests {
     fn interpolant_closes_the_flight() {
         let k = kernel(0.5, 2.0);
         let omega = 1e-3;
-        let f = k.free_flight(-1.0, 2.0, omega, 0.0).unwrap_or_else(|| panic!("{omega}"));
+        let f = k.free_flight(-1.0, 2.0, omega, 0.0, 1.0).unwrap_or_else(|| panic!("{omega}"));
         let start = f.state(f.t0);
         assert_eq!((start[0], start[1]), (0.0, -omega));
         let end = f.state(f.t0 + f.duration);

@@ -30,8 +30,8 @@ pub(crate) struct Kernel {
     pub(crate) g: f64,
     pub(crate) alpha: f64,
     pub(crate) tan_alpha: f64,
-    sin_alpha: f64,
-    cos_alpha: f64,
+    pub(crate) sin_alpha: f64,
+    pub(crate) cos_alpha: f64,
     /// `m2 R / I_O` (1/m), so that `p² = k g`.
     pub(crate) k: f64,
     /// `R` (m).

@@ -834,8 +834,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if self.y[0] != 0.0 || omega <= 0.0 || !input_over(&self.segment) || (self.has_vertical && !input_over(&self.vsegment)) {
             return None;
         }
-        let flight = self.kernel.free_flight(s, self.t, omega, self.y[2])?;
-        if flight.apex > 0.1 * self.rtol.sqrt() || self.t + flight.duration >= self.end {
+        let flight = self.kernel.free_flight(s, self.t, omega, self.y[2], 0.1 * self.rtol.sqrt())?;
+        if self.t + flight.duration >= self.end {
             return None;
         }
         if self.kernel.has_building {
