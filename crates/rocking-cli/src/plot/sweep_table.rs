@@ -57,11 +57,7 @@ impl RowTable {
         let text = |c: Option<usize>| -> String {
             match c.and_then(|c| cells.get(c)) {
                 Some(Cell::Text(t)) => t.trim().to_string(),
-                Some(cell) => {
-                    let mut out = String::new();
-                    cell.write_csv(&mut out);
-                    out
-                }
+                Some(cell) => cell.text().into_owned(),
                 None => String::new(),
             }
         };
@@ -242,13 +238,7 @@ ground.frequency,ground.amplitude,building.mu_static,max_theta_over_alpha,overtu
         let mut csv = rocking_scenario::csv_line(header.iter().map(String::as_str)) + "\n";
         for row in &rows {
             table.push(row);
-            let mut fields = Vec::new();
-            for cell in row {
-                let mut field = String::new();
-                cell.write_csv(&mut field);
-                fields.push(field);
-            }
-            csv.push_str(&fields.join(","));
+            csv.push_str(&rocking_scenario::csv_line(row.iter().map(|cell| cell.text().into_owned())));
             csv.push('\n');
         }
         assert_eq!(table.finish(), SweepTable::from_reader(csv.as_bytes(), &axes)?);

@@ -3,10 +3,11 @@
 //!
 //! Numbers are written in their shortest form that reads back to the same
 //! `f64` (as `summary.json` writes them), so a row holds exactly the numbers
-//! of `rocking run` on the same case. Text is quoted as RFC 4180 says (an
-//! error message may hold commas).
+//! of `rocking run` on the same case. Lines are written by the `csv` crate,
+//! the writer of every CSV file of the project: text is quoted as RFC 4180
+//! says (an error message may hold commas).
 
-use std::fmt::Write as _;
+use std::borrow::Cow;
 
 /// One value of a row.
 #[derive(Debug, Clone, PartialEq)]
@@ -72,45 +73,34 @@ impl Cell {
         }
     }
 
-    /// Appends the CSV field of this cell to `out`.
-    pub fn write_csv(&self, out: &mut String) {
+    /// The text of this cell's CSV field, before quoting.
+    pub fn text(&self) -> Cow<'_, str> {
         match self {
-            Cell::Empty => {}
-            Cell::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
-            // Writing to a String cannot fail.
-            Cell::Int(i) => {
-                let _ = write!(out, "{i}");
-            }
-            Cell::Float(x) if x.is_finite() => out.push_str(ryu::Buffer::new().format_finite(*x)),
-            Cell::Float(x) => {
-                let _ = write!(out, "{x}");
-            }
-            Cell::Text(s) => push_text(out, s),
+            Cell::Empty => Cow::Borrowed(""),
+            Cell::Bool(b) => Cow::Borrowed(if *b { "true" } else { "false" }),
+            Cell::Int(i) => Cow::Owned(i.to_string()),
+            Cell::Float(x) if x.is_finite() => Cow::Owned(ryu::Buffer::new().format_finite(*x).to_owned()),
+            Cell::Float(x) => Cow::Owned(x.to_string()),
+            Cell::Text(s) => Cow::Borrowed(s),
         }
     }
 }
 
-/// Appends `text` as one CSV field, quoted when it holds a comma, a quote or a line break.
-fn push_text(out: &mut String, text: &str) {
-    if text.contains([',', '"', '\n', '\r']) {
-        out.push('"');
-        out.push_str(&text.replace('"', "\"\""));
-        out.push('"');
-    } else {
-        out.push_str(text);
-    }
-}
-
-/// One line of CSV (without its line break) of `fields`.
-pub fn csv_line<'a>(fields: impl IntoIterator<Item = &'a str>) -> String {
-    let mut out = String::new();
-    for (i, field) in fields.into_iter().enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        push_text(&mut out, field);
-    }
-    out
+/// One line of CSV (without its line break) of `fields`, quoted where needed.
+pub fn csv_line<I>(fields: I) -> String
+where
+    I: IntoIterator,
+    I::Item: AsRef<[u8]>,
+{
+    let mut writer = csv::WriterBuilder::new()
+        .terminator(csv::Terminator::Any(b'\n'))
+        .from_writer(Vec::with_capacity(256));
+    // Writing to memory cannot fail.
+    let _ = writer.write_record(fields);
+    let mut bytes = writer.into_inner().unwrap_or_default();
+    bytes.pop();
+    // The fields were text, and quoting adds only ASCII.
+    String::from_utf8(bytes).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }
 
 /// The result of one case: its cells in the order of [`crate::Sweep::header`]
@@ -131,13 +121,6 @@ impl Row {
 
     /// The row as one line of CSV, without its line break.
     pub fn to_csv_line(&self) -> String {
-        let mut out = String::with_capacity(16 * self.cells.len());
-        for (i, cell) in self.cells.iter().enumerate() {
-            if i > 0 {
-                out.push(',');
-            }
-            cell.write_csv(&mut out);
-        }
-        out
+        csv_line(self.cells.iter().map(|cell| cell.text().into_owned()))
     }
 }
