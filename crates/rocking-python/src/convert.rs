@@ -1,12 +1,13 @@
 //! Values between Python and the scenario's TOML table: a dict in (the same
-//! nesting as the TOML file), a dict out (`Scenario.to_dict`), and the JSON
-//! summary out.
+//! nesting as the TOML file), a dict out (`Scenario.to_dict`), and the
+//! summary out (from its field descriptors).
 //!
 //! `None` stands for an absent key, as JSON's `null` does in
 //! [`rocking_scenario::Scenario::from_json`]; a `None` inside a list is an error.
 
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use rocking_scenario::{summary_fields, Cell, Outcome, WALL_TIME_KEY};
 use toml::{Table, Value};
 
 /// A value that has no TOML counterpart, at a dotted key.
@@ -197,29 +198,40 @@ fn toml_to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>
     })
 }
 
-/// A JSON value (the summary) as Python objects: `null` → `None`, objects → dicts.
-pub fn json_to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
-    use serde_json::Value as J;
-    Ok(match value {
-        J::Null => py.None().into_bound(py),
-        J::Bool(b) => PyBool::new(py, *b).to_owned().into_any(),
-        J::Number(n) => {
-            if let Some(u) = n.as_u64() {
-                u.into_pyobject(py)?.into_any()
-            } else if let Some(i) = n.as_i64() {
-                i.into_pyobject(py)?.into_any()
-            } else {
-                PyFloat::new(py, n.as_f64().unwrap_or(f64::NAN)).into_any()
+/// The summary as the dict of `summary.json`, read from the summary's field
+/// descriptors (`rocking_scenario::columns::SUMMARY`) with no JSON in
+/// between: a dotted name (`time_in_regime_s.rest`) becomes a nested dict, an
+/// absent quantity `None`; `wall_time_s` last.
+pub fn summary_dict<'py>(py: Python<'py>, outcome: &Outcome, wall_time_s: f64) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    for (key, cell) in summary_fields(outcome) {
+        let value = cell_to_py(py, cell)?;
+        match key.split_once('.') {
+            Some((outer, inner)) => {
+                let nested = match dict.get_item(outer)? {
+                    Some(existing) => existing.cast_into::<PyDict>()?,
+                    None => {
+                        let nested = PyDict::new(py);
+                        dict.set_item(outer, &nested)?;
+                        nested
+                    }
+                };
+                nested.set_item(inner, value)?;
             }
+            None => dict.set_item(key, value)?,
         }
-        J::String(s) => PyString::new(py, s).into_any(),
-        J::Array(items) => PyList::new(py, items.iter().map(|v| json_to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?.into_any(),
-        J::Object(map) => {
-            let dict = PyDict::new(py);
-            for (k, v) in map {
-                dict.set_item(k, json_to_py(py, v)?)?;
-            }
-            dict.into_any()
-        }
+    }
+    dict.set_item(WALL_TIME_KEY, wall_time_s)?;
+    Ok(dict)
+}
+
+/// One summary value in Python: `None`, `bool`, `int`, `float` or `str`.
+fn cell_to_py(py: Python<'_>, cell: Cell) -> PyResult<Bound<'_, PyAny>> {
+    Ok(match cell {
+        Cell::Empty => py.None().into_bound(py),
+        Cell::Bool(b) => PyBool::new(py, b).to_owned().into_any(),
+        Cell::Int(i) => i.into_pyobject(py)?.into_any(),
+        Cell::Float(x) => PyFloat::new(py, x).into_any(),
+        Cell::Text(t) => PyString::new(py, &t).into_any(),
     })
 }

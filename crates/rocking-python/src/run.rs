@@ -1,7 +1,7 @@
 //! `rocking.run` and `rocking.derived`: one analysis with its history and
 //! events, and the quantities derived from a scenario without running it.
 
-use crate::convert::json_to_py;
+use crate::convert::summary_dict;
 use crate::error::scenario_error;
 use crate::scenario::PyScenario;
 use numpy::PyArray1;
@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use rocking::{Event, Flow, Halt, History, Observer, Step};
 use rocking_scenario::columns::{Layout, Read, Value, EVENTS, HISTORY, HISTORY_POINTS};
-use rocking_scenario::{summary_json, Outcome, RunOptions};
+use rocking_scenario::{Outcome, RunOptions};
 use std::time::{Duration, Instant};
 
 /// How often a run looks for Ctrl-C (KeyboardInterrupt).
@@ -67,7 +67,7 @@ pub fn run_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyRes
         Ok(done) => done,
         Err(e) => return Err(signals.raised.take().unwrap_or_else(|| scenario_error(&e))),
     };
-    let summary = json_to_py(py, &summary_json(&outcome, wall))?;
+    let summary = summary_dict(py, &outcome, wall)?.into_any();
     let history = match &outcome.history {
         Some(h) => history_columns(py, h, &outcome.layout)?,
         None => PyDict::new(py),
