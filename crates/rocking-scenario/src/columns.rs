@@ -18,6 +18,14 @@ use rocking::{EndReason, Event, Motion, Sample};
 pub struct Layout {
     /// Extra tower points (`tower.points`): `pK_dx`, `pK_abs_acc` for K = 1..=points.
     pub points: usize,
+    /// A vertical ground motion (`[ground.vertical]`): `ground_acc_v` and
+    /// `min_effective_gravity_m_s2`.
+    pub vertical: bool,
+}
+
+/// The run has a vertical ground motion.
+pub fn vertical(layout: &Layout) -> bool {
+    layout.vertical
 }
 
 /// How a column is read from a record of type `T`.
@@ -128,6 +136,13 @@ pub const HISTORY: &[Column<Sample>] = &[
         meaning: "combined motion: `rest`, `rocking`, `sliding` or `rocking_sliding`",
         present: always,
         read: Read::Text(|s| s.motion.as_str()),
+    },
+    Column {
+        name: "ground_acc_v",
+        unit: "m/s²",
+        meaning: "vertical ground acceleration `a_v`, positive upwards (only with `[ground.vertical]`)",
+        present: vertical,
+        read: Read::Number(|s| s.ground_acc_v),
     },
 ];
 
@@ -514,6 +529,14 @@ pub const SUMMARY: &[Field] = &[
         read: |o| tower(o, o.summary.theta_range.1),
     },
     Field {
+        name: "min_effective_gravity_m_s2",
+        kind: Kind::Number,
+        unit: "m/s²",
+        meaning: "least effective gravity `g + a_v` over the run (only with `[ground.vertical]`)",
+        present: vertical,
+        read: |o| float(o.summary.min_effective_gravity),
+    },
+    Field {
         name: "events",
         kind: Kind::Number,
         unit: "",
@@ -661,22 +684,24 @@ mod tests {
     #[test]
     fn a_column_added_to_the_list_appears_in_the_header_the_rows_and_the_reference() {
         let mut columns = HISTORY.to_vec();
-        columns.insert(HISTORY.len(), EXTRA); // after `regime`, before the points
+        columns.push(EXTRA); // after the last column, before the points
         let with = outcome("points = [[0.0, 6.0]]");
+        // The columns of this run before the new one (no vertical motion here).
+        let before = HISTORY.iter().filter(|c| (c.present)(&with.layout)).count();
         let header = history_header(&columns, HISTORY_POINTS, &with.layout);
-        assert_eq!(header[HISTORY.len()], "twice_ground_acc");
-        assert_eq!(&header[HISTORY.len() + 1..], ["p1_dx", "p1_abs_acc"]);
+        assert_eq!(header[before], "twice_ground_acc");
+        assert_eq!(&header[before + 1..], ["p1_dx", "p1_abs_acc"]);
         let Some(history) = &with.history else { panic!("no history") };
         for (sample, points) in history.samples.iter().zip(&history.point_values) {
             let mut values = Vec::new();
             history_values(&columns, HISTORY_POINTS, &with.layout, HistoryRow { sample, points }, |v| values.push(v));
             assert_eq!(values.len(), header.len());
             // Doubling is exact in binary floating point.
-            assert_eq!(values[HISTORY.len()], Value::Number(2.0 * sample.ground_acc));
+            assert_eq!(values[before], Value::Number(2.0 * sample.ground_acc));
         }
         // Absent where its condition does not hold: the header is today's.
         let without = outcome("");
-        let names: Vec<&str> = HISTORY.iter().map(|c| c.name).collect();
+        let names: Vec<&str> = HISTORY.iter().filter(|c| (c.present)(&without.layout)).map(|c| c.name).collect();
         assert_eq!(history_header(&columns, HISTORY_POINTS, &without.layout), names);
         let reference = outputs_markdown_of(&columns, HISTORY_POINTS, EVENTS, SUMMARY);
         assert!(reference.contains("| `twice_ground_acc` | m/s² | a column added for the test |"), "{reference}");
@@ -695,7 +720,7 @@ mod tests {
         });
         let o = outcome("");
         let cells = fields_of(&fields, &o.layout, &o);
-        assert_eq!(cells.len(), SUMMARY.len() + 1);
+        assert_eq!(cells.len(), SUMMARY.iter().filter(|f| (f.present)(&o.layout)).count() + 1);
         assert_eq!(cells.last().map(|(k, _)| k.as_str()), Some("impacts_plus_one"));
         assert_eq!(cells.last().map(|(_, c)| c.clone()), Some(Cell::Int(o.summary.impacts as i64 + 1)));
         assert!(outputs_markdown_of(HISTORY, HISTORY_POINTS, EVENTS, &fields).contains("`impacts_plus_one`"));
@@ -723,7 +748,7 @@ mod tests {
         let o = outcome("");
         let json = crate::summary_json(&o, 0.0);
         let keys: Vec<String> = crate::summary_scalars(&json).into_iter().map(|(k, _)| k).collect();
-        let mut expected: Vec<String> = SUMMARY.iter().map(|f| f.name.to_string()).collect();
+        let mut expected: Vec<String> = SUMMARY.iter().filter(|f| (f.present)(&o.layout)).map(|f| f.name.to_string()).collect();
         expected.push(WALL_TIME.name.to_string());
         assert_eq!(keys, expected);
     }

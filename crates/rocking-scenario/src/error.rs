@@ -177,6 +177,11 @@ impl From<rocking::Error> for Fault {
     fn from(e: rocking::Error) -> Self {
         match e {
             rocking::Error::InvalidParameter { parameter, reason } => Fault::invalid(key_of(parameter), reason),
+            // Only the vertical motion can take g + a_v to zero.
+            free_fall @ rocking::Error::FreeFall { .. } => Fault {
+                key: Some("ground.vertical".into()),
+                kind: ErrorKind::Simulation(free_fall),
+            },
             other => Fault {
                 key: None,
                 kind: ErrorKind::Simulation(other),

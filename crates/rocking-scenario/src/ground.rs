@@ -48,7 +48,8 @@ impl GroundKind {
         KINDS.iter().find(|(_, k)| *k == self).map_or("none", |(name, _)| name)
     }
 
-    /// The keys this type takes (each documented in [`crate::keys::SCENARIO_KEYS`]).
+    /// The keys this type takes (each documented in [`crate::keys::SCENARIO_KEYS`]),
+    /// besides the table `vertical`, which any type of `[ground]` may hold.
     pub(crate) fn keys(self) -> &'static [&'static str] {
         match self {
             GroundKind::None => &["type"],
@@ -100,6 +101,8 @@ pub struct RecordInfo {
 /// A record still to be read (when the scenario is built).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct RecordSpec {
+    /// The table it was given in (`ground` or `ground.vertical`), for the keys errors name.
+    section: &'static str,
     /// The file, or [`TEXT_NAME`] for a record given as `text`.
     file: PathBuf,
     /// The content given as `text` (then nothing is read from disk).
@@ -118,6 +121,28 @@ pub(crate) enum GroundSpec {
     Record(RecordSpec),
 }
 
+impl GroundSpec {
+    /// The record file read, if any (resolved against the scenario's folder).
+    pub(crate) fn record_file(&self) -> Option<&Path> {
+        match self {
+            GroundSpec::Record(r) => r.file(),
+            GroundSpec::Ready(..) => None,
+        }
+    }
+
+    /// The motion (m/s²) and its description, reading the record if there is
+    /// one (from `cache` if it was read before).
+    pub(crate) fn load(&self, g: f64, cache: Option<&RecordCache>) -> Result<(GroundMotion, GroundInfo), Fault> {
+        match self {
+            GroundSpec::Ready(motion, info) => Ok((motion.clone(), info.clone())),
+            GroundSpec::Record(spec) => match cache {
+                Some(cache) => spec.load_cached(g, cache),
+                None => spec.load(g),
+            },
+        }
+    }
+}
+
 /// What the ratios need from the rest of the scenario.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Context<'a> {
@@ -129,16 +154,36 @@ pub(crate) struct Context<'a> {
     pub(crate) folder: &'a Path,
 }
 
-/// Parses `[ground]`.
-pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fault> {
+/// The table of `[ground]` that holds the vertical ground acceleration.
+pub(crate) const VERTICAL: &str = "vertical";
+
+/// Parses `[ground]`: the horizontal motion, and the vertical one if the
+/// table `[ground.vertical]` is given (the same types and keys, positive
+/// upwards).
+pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<(GroundSpec, Option<GroundSpec>), Fault> {
+    let vertical = match s.get(VERTICAL) {
+        Some(v) => Some(parse_motion(&Section::new("ground.vertical", v)?, cx)?),
+        None => None,
+    };
+    Ok((parse_motion(s, cx)?, vertical))
+}
+
+/// Parses one motion table: `[ground]` (where `vertical` is a table of its
+/// own) or `[ground.vertical]` (where it is not a key).
+fn parse_motion(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fault> {
     let names: Vec<String> = KINDS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
     let kind = s
         .choice("type", KINDS)?
         .ok_or_else(|| Fault::new(s.key("type"), ErrorKind::Missing(format!("required: one of {}", names.join(", ")))))?;
-    let valid = kind.keys();
+    let horizontal = s.name() == "ground";
+    let mut valid = kind.keys().to_vec();
+    if horizontal {
+        valid.push(VERTICAL);
+    }
+    let valid = &valid[..];
     let all_keys = crate::keys::section_keys("ground");
     for key in s.keys() {
-        if all_keys.contains(&key) && !valid.contains(&key) {
+        if all_keys.contains(&key) && !valid.contains(&key) && (horizontal || key != VERTICAL) {
             return Err(Fault::new(
                 s.key(key),
                 ErrorKind::NotApplicable(format!("does not apply to type = \"{}\" (its keys: {})", kind.as_str(), valid.join(", "))),
@@ -297,6 +342,7 @@ fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
         }
     }
     Ok(RecordSpec {
+        section: s.name(),
         file,
         text,
         format,
@@ -362,14 +408,19 @@ impl RecordSpec {
         self.finish(record, format, g)
     }
 
+    /// The dotted name of `key` of this record's table.
+    fn key(&self, key: &str) -> String {
+        format!("{}.{key}", self.section)
+    }
+
     /// Reads and parses the file, unscaled.
     fn read(&self, g: f64) -> Result<(Record, RecordFormat), Fault> {
         let (key, text) = match &self.text {
-            Some(text) => ("ground.text", std::borrow::Cow::Borrowed(&**text)),
+            Some(text) => (self.key("text"), std::borrow::Cow::Borrowed(&**text)),
             None => {
                 let text = read_text(&self.file).map_err(|(reason, os_error)| {
                     Fault::new(
-                        "ground.file",
+                        self.key("file"),
                         ErrorKind::Read {
                             path: self.file.clone(),
                             reason,
@@ -377,12 +428,12 @@ impl RecordSpec {
                         },
                     )
                 })?;
-                ("ground.file", std::borrow::Cow::Owned(text))
+                (self.key("file"), std::borrow::Cow::Owned(text))
             }
         };
         let malformed = |source| {
             Fault::new(
-                key,
+                &key,
                 ErrorKind::Record {
                     path: self.file.clone(),
                     source,
@@ -395,7 +446,7 @@ impl RecordSpec {
         };
         if let (RecordFormat::At2 | RecordFormat::Esm, Some(k)) = (format, self.csv_keys.first()) {
             return Err(Fault::new(
-                format!("ground.{k}"),
+                self.key(k),
                 ErrorKind::NotApplicable(format!(
                     "applies only to CSV records, and {} reads as \"{}\" (whose files carry their units and time step)",
                     self.file.display(),
@@ -415,9 +466,9 @@ impl RecordSpec {
         if peak_g > MAX_PEAK_G {
             // The scale is the one given (1 when absent): exact comparison is meant.
             let (key, what) = if self.scale.to_bits() == 1.0f64.to_bits() {
-                ("ground.file", format!("{} peaks at", self.file.display()))
+                (self.key("file"), format!("{} peaks at", self.file.display()))
             } else {
-                ("ground.scale", format!("{} scaled by {} peaks at", self.file.display(), self.scale))
+                (self.key("scale"), format!("{} scaled by {} peaks at", self.file.display(), self.scale))
             };
             return Err(Fault::invalid(
                 key,

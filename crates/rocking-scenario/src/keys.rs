@@ -20,6 +20,8 @@ pub enum KeyKind {
     Text,
     /// A list of `[x, y]` pairs of numbers.
     Points,
+    /// A table of keys of its own (`ground.vertical`).
+    Table,
 }
 
 impl KeyKind {
@@ -28,6 +30,7 @@ impl KeyKind {
             KeyKind::Number => "number",
             KeyKind::Text => "string",
             KeyKind::Points => "list of [x, y]",
+            KeyKind::Table => "table",
         }
     }
 }
@@ -82,7 +85,7 @@ const fn key(
     }
 }
 
-use KeyKind::{Number, Points, Text};
+use KeyKind::{Number, Points, Table, Text};
 
 /// Every key of a scenario, section by section, in the order the parser lists
 /// them in its errors.
@@ -353,6 +356,15 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "Time step of a CSV record that has one acceleration column.",
         "0.01",
     ),
+    key(
+        "ground.vertical",
+        Table,
+        "",
+        "none (no vertical motion)",
+        "a table with the keys of [ground] above, but vertical",
+        "Vertical ground acceleration a_v, positive upwards, written `[ground.vertical]`: any type, with the same keys, units and ranges as the horizontal motion (amplitudes in g). Gravity becomes g + a_v in the tower's equation, the normal force, the uplift and slip thresholds and the pivot reactions; where g + a_v reaches 0 the run stops with an error giving the instant. Its keys sweep as `ground.vertical.KEY`.",
+        "{ type = \"harmonic\", amplitude = 0.2, frequency = 8.0 }",
+    ),
     // [initial]
     key(
         "initial.theta",
@@ -439,7 +451,7 @@ pub(crate) fn section_keys(section: &str) -> Vec<&'static str> {
 fn ground_types_of(name: &str) -> Vec<&'static str> {
     crate::ground::KINDS
         .iter()
-        .filter(|(_, kind)| kind.keys().contains(&name) && *kind != GroundKind::None || name == "type")
+        .filter(|(_, kind)| kind.keys().contains(&name) && *kind != GroundKind::None || name == "type" || name == crate::ground::VERTICAL)
         .map(|(type_name, _)| *type_name)
         .collect()
 }
@@ -601,17 +613,21 @@ mod tests {
     /// axes its string keys.
     #[test]
     fn sweepable_and_string_keys_follow_the_table() {
-        let scalar: Vec<&str> = SCENARIO_KEYS.iter().filter(|k| k.kind != Points).map(|k| k.key).collect();
-        let mut sweepable = SWEEPABLE_KEYS.to_vec();
-        let mut expected = scalar.clone();
+        // The scalar keys, and those of [ground] again under ground.vertical.
+        let scalar = |kind: Option<KeyKind>| -> Vec<String> {
+            let of_kind = |k: &&KeyDoc| k.kind != Points && k.kind != Table && kind.is_none_or(|kind| k.kind == kind);
+            let mut keys: Vec<String> = SCENARIO_KEYS.iter().filter(of_kind).map(|k| k.key.to_string()).collect();
+            let vertical = SCENARIO_KEYS.iter().filter(of_kind).filter(|k| k.section() == Some("ground"));
+            keys.extend(vertical.map(|k| format!("ground.vertical.{}", k.name())));
+            keys.sort_unstable();
+            keys
+        };
+        let mut sweepable: Vec<String> = SWEEPABLE_KEYS.iter().map(|k| k.to_string()).collect();
         sweepable.sort_unstable();
-        expected.sort_unstable();
-        assert_eq!(sweepable, expected);
-        let mut text: Vec<&str> = SCENARIO_KEYS.iter().filter(|k| k.kind == Text).map(|k| k.key).collect();
-        let mut strings = STRING_KEYS.to_vec();
-        text.sort_unstable();
+        assert_eq!(sweepable, scalar(None));
+        let mut strings: Vec<String> = STRING_KEYS.iter().map(|k| k.to_string()).collect();
         strings.sort_unstable();
-        assert_eq!(strings, text);
+        assert_eq!(strings, scalar(Some(Text)));
     }
 
     /// Every example value is accepted where it stands: each key's example,

@@ -70,6 +70,16 @@ impl<'a> Section<'a> {
         }
     }
 
+    /// The section's dotted name (`ground`, `ground.vertical`).
+    pub(crate) fn name(&self) -> &'static str {
+        self.name
+    }
+
+    /// The value of `key`, if given.
+    pub(crate) fn get(&self, key: &str) -> Option<&'a Value> {
+        self.table.get(key)
+    }
+
     /// Whether `key` is given.
     pub(crate) fn has(&self, key: &str) -> bool {
         self.table.contains_key(key)

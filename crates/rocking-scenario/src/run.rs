@@ -4,7 +4,7 @@
 use crate::columns::Layout;
 use crate::error::{Error, Fault};
 use crate::scenario::Case;
-use rocking::{simulate, Derived, Event, EventLog, Flow, History, Observer, Step, Summary};
+use rocking::{simulate_with_vertical, Derived, Event, EventLog, Flow, History, Observer, Step, Summary};
 
 /// What to record besides the summary.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -66,7 +66,10 @@ impl Observer for Recorder {
 impl Case {
     /// Which optional columns and fields its outputs have.
     pub fn layout(&self) -> Layout {
-        Layout { points: self.points.len() }
+        Layout {
+            points: self.points.len(),
+            vertical: self.vertical.is_some(),
+        }
     }
 
     /// Runs the case. A failure of the integration names the scenario file.
@@ -82,8 +85,15 @@ impl Case {
             history: options.history.then(|| History::new(self.output_dt, self.points.clone())),
             events: options.events.then(EventLog::default),
         };
-        let summary = simulate(&self.model, &self.ground, self.initial, &self.settings, &mut (&mut recorder, observer))
-            .map_err(|e| Fault::from(e).in_file(&self.file))?;
+        let summary = simulate_with_vertical(
+            &self.model,
+            &self.ground,
+            self.vertical.as_ref(),
+            self.initial,
+            &self.settings,
+            &mut (&mut recorder, observer),
+        )
+        .map_err(|e| Fault::from(e).in_file(&self.file))?;
         Ok(Outcome {
             name: self.name.clone(),
             summary,

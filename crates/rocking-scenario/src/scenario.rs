@@ -23,6 +23,8 @@ pub struct Scenario {
     model: Model,
     points: Vec<(f64, f64)>,
     ground: GroundSpec,
+    /// `[ground.vertical]`, if given.
+    vertical: Option<GroundSpec>,
     initial: Initial,
     settings: Settings,
     output_dt: f64,
@@ -41,6 +43,10 @@ pub struct Case {
     pub ground: GroundMotion,
     /// The ground motion as resolved from the scenario (for reports).
     pub ground_info: GroundInfo,
+    /// The vertical ground acceleration (m/s², positive upwards), if given.
+    pub vertical: Option<GroundMotion>,
+    /// The vertical motion as resolved from the scenario (for reports).
+    pub vertical_info: Option<GroundInfo>,
     /// Initial rotation and angular velocity.
     pub initial: Initial,
     /// Duration and tolerances.
@@ -160,7 +166,7 @@ impl Scenario {
             duration: sim.settings.duration,
             folder,
         };
-        let ground = ground::parse(&ground_section, &cx)?;
+        let (ground, vertical) = ground::parse(&ground_section, &cx)?;
         let initial = simulation::parse_initial(section("initial")?.as_ref(), tower.as_ref())?;
         Ok(Self {
             origin: origin.to_path_buf(),
@@ -168,6 +174,7 @@ impl Scenario {
             model,
             points,
             ground,
+            vertical,
             initial,
             settings: sim.settings,
             output_dt: sim.output_dt,
@@ -188,10 +195,17 @@ impl Scenario {
     }
     /// The record file the scenario reads, if any (resolved against its folder).
     pub fn record_file(&self) -> Option<&Path> {
-        match &self.ground {
-            GroundSpec::Record(r) => r.file(),
-            GroundSpec::Ready(..) => None,
-        }
+        self.ground.record_file()
+    }
+
+    /// The record file of `[ground.vertical]`, if any (resolved against its folder).
+    pub fn vertical_record_file(&self) -> Option<&Path> {
+        self.vertical.as_ref().and_then(GroundSpec::record_file)
+    }
+
+    /// Whether the scenario has a vertical ground motion (`[ground.vertical]`).
+    pub fn has_vertical(&self) -> bool {
+        self.vertical.is_some()
     }
 
     /// Builds the case: reads the ground-motion record if there is one.
@@ -202,13 +216,13 @@ impl Scenario {
     /// As [`Scenario::build`], taking the record from `cache` if it was read before.
     pub(crate) fn build_with(&self, cache: Option<&RecordCache>) -> Result<Case, Error> {
         let g = self.model.gravity();
-        let (ground, ground_info) = match &self.ground {
-            GroundSpec::Ready(motion, info) => (motion.clone(), info.clone()),
-            GroundSpec::Record(spec) => match cache {
-                Some(cache) => spec.load_cached(g, cache),
-                None => spec.load(g),
+        let (ground, ground_info) = self.ground.load(g, cache).map_err(|f| f.in_file(&self.origin))?;
+        let (vertical, vertical_info) = match &self.vertical {
+            Some(spec) => {
+                let (motion, info) = spec.load(g, cache).map_err(|f| f.in_file(&self.origin))?;
+                (Some(motion), Some(info))
             }
-            .map_err(|f| f.in_file(&self.origin))?,
+            None => (None, None),
         };
         Ok(Case {
             name: self.name.clone(),
@@ -216,11 +230,18 @@ impl Scenario {
             model: self.model.clone(),
             ground,
             ground_info,
+            vertical,
+            vertical_info,
             initial: self.initial,
             settings: self.settings,
             output_dt: self.output_dt,
             points: self.points.clone(),
-            inputs: self.record_file().map(Path::to_path_buf).into_iter().collect(),
+            inputs: self
+                .record_file()
+                .into_iter()
+                .chain(self.vertical_record_file())
+                .map(Path::to_path_buf)
+                .collect(),
         })
     }
 }

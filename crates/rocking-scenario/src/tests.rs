@@ -368,7 +368,7 @@ fn keys_of_another_ground_type_do_not_apply() {
         "ground.frequency",
     );
     assert!(
-        msg.starts_with("does not apply to type = \"record\" (its keys: type, file, text, format, scale, units, dt)"),
+        msg.starts_with("does not apply to type = \"record\" (its keys: type, file, text, format, scale, units, dt, vertical)"),
         "{msg}"
     );
     fails(&[("ground.t0", Some("1.0"))], "ground.t0");

@@ -42,6 +42,20 @@ pub const SWEEPABLE_KEYS: &[&str] = &[
     "ground.scale",
     "ground.units",
     "ground.dt",
+    "ground.vertical.type",
+    "ground.vertical.amplitude",
+    "ground.vertical.amplitude_ratio",
+    "ground.vertical.frequency",
+    "ground.vertical.frequency_ratio",
+    "ground.vertical.duration",
+    "ground.vertical.phase",
+    "ground.vertical.t0",
+    "ground.vertical.file",
+    "ground.vertical.text",
+    "ground.vertical.format",
+    "ground.vertical.scale",
+    "ground.vertical.units",
+    "ground.vertical.dt",
     "initial.theta",
     "initial.theta_over_alpha",
     "initial.theta_dot",
@@ -62,6 +76,11 @@ pub(crate) const STRING_KEYS: &[&str] = &[
     "ground.file",
     "ground.format",
     "ground.units",
+    "ground.vertical.type",
+    "ground.vertical.file",
+    "ground.vertical.text",
+    "ground.vertical.format",
+    "ground.vertical.units",
 ];
 
 /// Keys that are alternatives of each other: an axis on one removes the other
@@ -70,6 +89,8 @@ pub(crate) const STRING_KEYS: &[&str] = &[
 pub(crate) const ALTERNATIVES: &[(&str, &str)] = &[
     ("ground.amplitude", "ground.amplitude_ratio"),
     ("ground.frequency", "ground.frequency_ratio"),
+    ("ground.vertical.amplitude", "ground.vertical.amplitude_ratio"),
+    ("ground.vertical.frequency", "ground.vertical.frequency_ratio"),
     ("initial.theta", "initial.theta_over_alpha"),
     ("tower.mass", "tower.density"),
 ];

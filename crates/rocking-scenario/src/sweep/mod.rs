@@ -234,8 +234,12 @@ impl Sweep {
             _ => origin.file_stem().map_or_else(|| "sweep".to_string(), |s| s.to_string_lossy().into_owned()),
         };
         // Known without a run: the optional fields follow the base scenario
-        // (extra points add history columns only, not summary fields).
-        let layout = Layout::default();
+        // (extra points add history columns only, not summary fields; a
+        // vertical motion, a table no axis can add or remove, adds one).
+        let layout = Layout {
+            vertical: matches!(crate::get_dotted(&base, "ground.vertical"), Some(Value::Table(_))),
+            ..Layout::default()
+        };
         let mut sweep = Self {
             origin: origin.to_path_buf(),
             name,
