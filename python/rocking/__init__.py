@@ -71,11 +71,13 @@ class Result:
     Attributes:
         scenario: The scenario that was run.
         summary: The fields of ``summary.json`` (``max_theta_over_alpha``,
-            ``overturned``, ``time_in_regime_s`` as a nested dict, ``wall_time_s``, …);
+            ``overturned``, ``time_in_regime_s`` as a nested dict, ``wall_time_s``, …;
+            ``min_effective_gravity_m_s2`` with a ``ground.vertical`` table);
             ``None`` where a quantity does not exist (the tower's without a tower).
         history: The columns of ``history.csv``: 1-D ``float64`` NumPy arrays
             ``t``, ``ground_acc``, ``theta``, ``theta_dot``, ``slip``, ``slip_vel``,
-            ``top_dx``, ``top_abs_acc``, ``regime``, then ``pK_dx``, ``pK_abs_acc``
+            ``top_dx``, ``top_abs_acc``, ``regime``, ``ground_acc_v`` (only with a
+            ``ground.vertical`` table), then ``pK_dx``, ``pK_abs_acc``
             for each extra point K = 1, 2, … of ``tower.points`` (the order of
             ``history.csv``). ``regime`` is a NumPy array of dtype ``object`` holding
             the Python strings ``"rest"``, ``"rocking"``, ``"sliding"``,

@@ -32,13 +32,15 @@ class Scenario:
     def from_dict(d: Mapping[str, Any]) -> "Scenario":
         """Validates a scenario given as a dict with the keys of the TOML file (sections as nested dicts).
 
-        ``None`` is an absent key; a relative ``ground.file`` is resolved against the current directory.
+        ``None`` is an absent key; the vertical motion is the nested dict ``ground["vertical"]``
+        (the keys of ``ground``). A relative ``ground.file`` or ``ground.vertical.file`` is resolved
+        against the current directory.
         Raises ``ValueError`` (``<dict>: key: what is wrong``), also for a list or dict that
         contains itself or is nested more than 16 deep.
         """
         ...
     def to_dict(self) -> Dict[str, Any]:
-        """The keys as given (no defaults filled in), ``ground.file`` as the absolute path of the record read."""
+        """The keys as given (no defaults filled in), ``ground.file`` and ``ground.vertical.file`` as the absolute paths of the records read."""
         ...
     @property
     def name(self) -> str:

@@ -13,3 +13,4 @@ mod keys;
 mod run;
 mod shard;
 mod sweep;
+mod vertical;

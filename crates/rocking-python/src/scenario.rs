@@ -21,6 +21,9 @@ pub const DICT_ORIGIN: &str = "<dict>";
 /// Make one with `Scenario.from_toml(path)` or `Scenario.from_dict(d)`; every
 /// value is checked then, so a `Scenario` is always valid. A ground-motion
 /// record is read when the scenario is run.
+/// The keys that name a record file: the horizontal and the vertical motion's.
+const RECORD_KEYS: [&str; 2] = ["ground.file", "ground.vertical.file"];
+
 #[pyclass(name = "Scenario", module = "rocking", frozen)]
 pub struct PyScenario {
     /// The table as given (the sweep's base).
@@ -64,18 +67,20 @@ impl PyScenario {
     /// Validates a scenario given as a dict with the keys of the TOML file,
     /// sections as nested dicts: `{"tower": {"width": 4.0, ...}, "ground": {...}}`.
     /// `None` stands for an absent key. A relative record path
-    /// (`ground.file`) is resolved against the current directory, now.
+    /// (`ground.file`, `ground.vertical.file`) is resolved against the current directory, now.
     ///
     /// Raises `ValueError` naming the key (`<dict>: tower.hieght: unknown key ...`).
     #[staticmethod]
     fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<Self> {
         let mut table = table_of(d, "").map_err(|u| PyValueError::new_err(u.message(DICT_ORIGIN)))?;
-        if let Some(Value::String(file)) = get_dotted(&table, "ground.file") {
-            if Path::new(file).is_relative() {
-                if let Ok(absolute) = std::path::absolute(file) {
-                    let absolute = Value::String(absolute.to_string_lossy().into_owned());
-                    // ground is a table: get_dotted found a value under it.
-                    let _ = set_dotted(&mut table, "ground.file", absolute);
+        for key in RECORD_KEYS {
+            if let Some(Value::String(file)) = get_dotted(&table, key) {
+                if Path::new(file).is_relative() {
+                    if let Ok(absolute) = std::path::absolute(file) {
+                        let absolute = Value::String(absolute.to_string_lossy().into_owned());
+                        // The table is there: get_dotted found a value under it.
+                        let _ = set_dotted(&mut table, key, absolute);
+                    }
                 }
             }
         }
@@ -85,14 +90,16 @@ impl PyScenario {
     }
 
     /// The scenario as a dict with the keys of the TOML file, as given (defaults
-    /// are not filled in), except `ground.file`, which is the absolute path of
+    /// are not filled in), except `ground.file` (and `ground.vertical.file`), each the absolute path of
     /// the record the scenario reads. `Scenario.from_dict(s.to_dict())` gives
     /// the same scenario from any directory.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let mut table = self.table.clone();
-        if let Some(file) = self.scenario.record_file() {
-            let file = std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf());
-            let _ = set_dotted(&mut table, "ground.file", Value::String(file.to_string_lossy().into_owned()));
+        for (key, file) in RECORD_KEYS.into_iter().zip([self.scenario.record_file(), self.scenario.vertical_record_file()]) {
+            if let Some(file) = file {
+                let file = std::path::absolute(file).unwrap_or_else(|_| file.to_path_buf());
+                let _ = set_dotted(&mut table, key, Value::String(file.to_string_lossy().into_owned()));
+            }
         }
         table_to_py(py, &table)
     }

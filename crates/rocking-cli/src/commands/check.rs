@@ -2,8 +2,8 @@
 //! any) and prints the derived quantities, without running it.
 
 use crate::format::sig;
-use rocking::NormalForce;
-use rocking_scenario::{record_format_name, Case, GroundKind};
+use rocking::{GroundMotion, NormalForce};
+use rocking_scenario::{record_format_name, Case, GroundInfo, GroundKind};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -76,46 +76,15 @@ fn describe(case: &Case) -> String {
             let _ = writeln!(out, "building    none (fixed base)");
         }
     }
-    let info = &case.ground_info;
-    let mut motion = vec![info.kind.as_str().to_string()];
-    if let Some(a) = info.amplitude_g {
-        motion.push(format!("amplitude {} g = {} m/s²", sig(a, 6), sig(a * g, 6)));
-    }
-    if let Some(f) = info.frequency_hz {
-        motion.push(format!("frequency {} Hz", sig(f, 6)));
-    }
-    if let Some(phase) = info.phase_rad {
-        motion.push(format!("phase {} rad", sig(phase, 6)));
-    }
-    if let Some(t0) = info.t0_s {
-        motion.push(format!("t0 = {} s", sig(t0, 6)));
-    }
-    if let Some(end) = info.end_time_s {
-        motion.push(format!("until t = {} s", sig(end, 6)));
-    }
-    let _ = writeln!(out, "ground      {}", motion.join(", "));
-    if let Some(r) = &info.record {
-        let step = r
-            .time_step_s
-            .map_or_else(|| "uneven time step".to_string(), |dt| format!("dt = {} s", sig(dt, 6)));
+    describe_motion(&mut out, "ground     ", "a_g", &case.ground_info, &case.ground, g);
+    if let (Some(info), Some(motion)) = (&case.vertical_info, &case.vertical) {
+        describe_motion(&mut out, "vertical   ", "a_v", info, motion, g);
+        let bound = g - motion.peak().0;
         let _ = writeln!(
             out,
-            "            record {} ({}): {} samples, {step}, duration {} s, scale {}",
-            r.file.display(),
-            record_format_name(r.format),
-            r.samples,
-            sig(r.duration_s, 6),
-            sig(r.scale, 6)
-        );
-    }
-    if info.kind != GroundKind::None {
-        let (peak, at) = case.ground.peak();
-        let _ = writeln!(
-            out,
-            "            peak |a_g| = {} g = {} m/s² at t = {} s",
-            sig(peak / g, 6),
-            sig(peak, 6),
-            sig(at, 6)
+            "            effective gravity g + a_v >= g - max |a_v| = {} m/s²{}",
+            sig(bound, 6),
+            if bound > 0.0 { "" } else { " (the run stops where g + a_v reaches 0)" }
         );
     }
     let _ = writeln!(
@@ -137,4 +106,50 @@ fn describe(case: &Case) -> String {
         sig(s.atol, 3)
     );
     out
+}
+
+/// The lines of `rocking check` for one ground motion (`label` is the first
+/// column, `symbol` the acceleration's name in the peak line).
+fn describe_motion(out: &mut String, label: &str, symbol: &str, info: &GroundInfo, motion: &GroundMotion, g: f64) {
+    let mut parts = vec![info.kind.as_str().to_string()];
+    if let Some(a) = info.amplitude_g {
+        parts.push(format!("amplitude {} g = {} m/s²", sig(a, 6), sig(a * g, 6)));
+    }
+    if let Some(f) = info.frequency_hz {
+        parts.push(format!("frequency {} Hz", sig(f, 6)));
+    }
+    if let Some(phase) = info.phase_rad {
+        parts.push(format!("phase {} rad", sig(phase, 6)));
+    }
+    if let Some(t0) = info.t0_s {
+        parts.push(format!("t0 = {} s", sig(t0, 6)));
+    }
+    if let Some(end) = info.end_time_s {
+        parts.push(format!("until t = {} s", sig(end, 6)));
+    }
+    let _ = writeln!(out, "{label} {}", parts.join(", "));
+    if let Some(r) = &info.record {
+        let step = r
+            .time_step_s
+            .map_or_else(|| "uneven time step".to_string(), |dt| format!("dt = {} s", sig(dt, 6)));
+        let _ = writeln!(
+            out,
+            "            record {} ({}): {} samples, {step}, duration {} s, scale {}",
+            r.file.display(),
+            record_format_name(r.format),
+            r.samples,
+            sig(r.duration_s, 6),
+            sig(r.scale, 6)
+        );
+    }
+    if info.kind != GroundKind::None {
+        let (peak, at) = motion.peak();
+        let _ = writeln!(
+            out,
+            "            peak |{symbol}| = {} g = {} m/s² at t = {} s",
+            sig(peak / g, 6),
+            sig(peak, 6),
+            sig(at, 6)
+        );
+    }
 }

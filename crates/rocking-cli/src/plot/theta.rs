@@ -1,11 +1,11 @@
 //! `theta.svg`/`.png`: the tower's rotation θ/α against time (the paper's
-//! Figure 7) above the ground acceleration in g, sharing the time axis, with
-//! the impacts, the stretches where the building slides and the overturning
-//! marked.
+//! Figure 7) above the ground acceleration in g (and the vertical one, with
+//! `[ground.vertical]`), sharing the time axis, with the impacts, the
+//! stretches where the building slides and the overturning marked.
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE};
+use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE, PURPLE};
 use super::timeline::{self, Timeline, PLOT_LEFT};
 use crate::format::sig;
 use plotters::coord::Shift;
@@ -116,13 +116,21 @@ impl ThetaFigure<'_> {
             None => (1.0, "m/s²"),
         };
         let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.ground_acc * per_unit)).collect();
-        let peak = scale::max_abs(points.iter().map(|p| p.1));
+        let vertical: Vec<(f64, f64)> = if self.outcome.layout.vertical {
+            self.samples.iter().map(|s| (s.t, s.ground_acc_v * per_unit)).collect()
+        } else {
+            Vec::new()
+        };
+        let peak = scale::max_abs(points.iter().chain(&vertical).map(|p| p.1));
         // The thresholds are in g: shown when the axis is in g and they are not far off the signal.
         let shown = |threshold: Option<f64>| threshold.filter(|x| g.is_some() && x.is_finite() && *x > 0.0 && peak > 0.0 && *x <= 2.0 * peak);
         let (uplift, slip) = (shown(d.uplift_acceleration_g), shown(d.slip_acceleration_g));
         let y = scale::symmetric(peak.max(uplift.unwrap_or(0.0)).max(slip.unwrap_or(0.0)));
 
         let mut entries = vec![Entry::new(Swatch::Line(INK), "ground acceleration a_g")];
+        if !vertical.is_empty() {
+            entries.push(Entry::new(Swatch::Line(PURPLE), "vertical a_v (up)"));
+        }
         // Without a tower panel above, the bands are explained here.
         if alpha(self.outcome).is_none() && !tl.slides.is_empty() {
             entries.push(Entry::new(Swatch::Band(ORANGE, 0.3), "building slides"));
@@ -137,7 +145,12 @@ impl ThetaFigure<'_> {
         let (top, panel) = area.split_vertically(strip);
         legend::draw(&top, PLOT_LEFT, &entries)?;
 
-        let mut chart = timeline::time_chart(&panel, tl.range, y, &format!("a_g ({unit})"), true)?;
+        let label = if vertical.is_empty() {
+            format!("a_g ({unit})")
+        } else {
+            format!("a_g, a_v ({unit})")
+        };
+        let mut chart = timeline::time_chart(&panel, tl.range, y, &label, true)?;
         timeline::draw_slides(&mut chart, tl, y)?;
         for (level, color) in [(uplift, GREEN), (slip, ORANGE)] {
             if let Some(x) = level {
@@ -145,6 +158,9 @@ impl ThetaFigure<'_> {
                     timeline::dashed_level(&mut chart, tl.range, sign * x, color.stroke_width(2))?;
                 }
             }
+        }
+        for segment in scale::segments(vertical) {
+            chart.draw_series(LineSeries::new(segment, PURPLE.stroke_width(1)))?;
         }
         for segment in scale::segments(points) {
             chart.draw_series(LineSeries::new(segment, INK.stroke_width(1)))?;

@@ -1,0 +1,184 @@
+//! `[ground.vertical]` through the command: the outputs it adds, the closed
+//! form of a constant vertical acceleration (the motion under gravity
+//! `g + c`), free fall reported on one line with its instant, and a sweep of
+//! its keys.
+
+use crate::util::{arg, read, rocking, tempdir, write};
+
+/// The tower on a church that can slide (μs = 0.45, dynamic normal force), 3 s of
+/// a horizontal harmonic, and `vertical` (a `[ground.vertical]` table or
+/// nothing); `g` and the horizontal amplitude in g are given.
+fn scenario(g: f64, amplitude_g: f64, vertical: &str) -> String {
+    format!(
+        r#"[tower]
+width = 4.0
+height = 12.0
+mass = 1.5e5
+
+[building]
+mass = 2.0e6
+mu_static = 0.45
+mu_kinetic = 0.4
+normal_force = "dynamic"
+
+[ground]
+type = "harmonic"
+amplitude = {amplitude_g:?}
+frequency = 2.0
+{vertical}
+[simulation]
+duration = 3.0
+output_dt = 0.01
+g = {g:?}
+"#
+    )
+}
+
+/// The columns of a history.csv: header and rows of numbers (text → NaN).
+fn history(dir: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = read(&dir.join("history.csv"));
+    let mut lines = text.lines();
+    let header = lines.next().unwrap_or_default().split(',').map(String::from).collect();
+    let rows = lines.map(|l| l.split(',').map(|f| f.parse().unwrap_or(f64::NAN)).collect()).collect();
+    (header, rows)
+}
+
+fn summary(dir: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&read(&dir.join("summary.json"))).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// A constant `a_v = c` (a rectangular pulse longer than the run) gives the
+/// motion of a run with gravity `g + c` under the same horizontal
+/// acceleration in m/s² (model.md's closed form): θ and the slip agree at
+/// every output instant to 1e-7 of their peaks. 0.7 g with c = 0.2 g lifts
+/// the tower (0.7 > 1.2 tan α) and slides the church (0.7 > 1.2 μs). The
+/// horizontal amplitude in g of the second run is 0.7 · 9.81 / (9.81 + c),
+/// which rounds, and the two
+/// runs step differently (their right-hand sides differ by rounding), so
+/// they agree to the integration tolerance (rtol 1e-8), not to the bit.
+#[test]
+fn a_constant_vertical_acceleration_is_gravity_plus_it() {
+    let dir = tempdir();
+    let c_g = 0.2;
+    let g = 9.81;
+    let lifted = write(
+        dir.path(),
+        "lifted.toml",
+        &scenario(
+            g,
+            0.7,
+            &format!("[ground.vertical]\ntype = \"rectangular-pulse\"\namplitude = {c_g}\nduration = 10.0\n"),
+        ),
+    );
+    let heavier = write(dir.path(), "heavier.toml", &scenario(g + c_g * g, 0.7 * g / (g + c_g * g), ""));
+    for f in [&lifted, &heavier] {
+        let r = rocking(&["run", arg(f), "--out", arg(&dir.path().join(f.file_stem().unwrap_or_default()))]);
+        assert_eq!(r.code, Some(0), "{r:?}");
+    }
+    let (header_a, a) = history(&dir.path().join("lifted"));
+    let (header_b, b) = history(&dir.path().join("heavier"));
+    assert_eq!(header_a.last().map(String::as_str), Some("ground_acc_v"));
+    assert_eq!(header_a[..header_a.len() - 1], header_b[..], "the vertical column is the only one added");
+    assert_eq!(a.len(), b.len());
+    let column = |h: &[String], name: &str| h.iter().position(|c| c == name).unwrap_or_else(|| panic!("no {name}"));
+    for name in ["theta", "slip", "ground_acc"] {
+        let (ia, ib) = (column(&header_a, name), column(&header_b, name));
+        let peak = b.iter().map(|r| r[ib].abs()).fold(0.0, f64::max);
+        assert!(peak > 0.0, "{name} moves");
+        for (ra, rb) in a.iter().zip(&b) {
+            assert!((ra[ia] - rb[ib]).abs() <= 1e-7 * peak, "{name} at t = {}: {} against {}", ra[0], ra[ia], rb[ib]);
+        }
+    }
+    let v = column(&header_a, "ground_acc_v");
+    assert!(a.iter().all(|r| (r[v] - c_g * g).abs() < 1e-15), "a_v = c throughout");
+    let s = summary(&dir.path().join("lifted"));
+    assert_eq!(s["min_effective_gravity_m_s2"].as_f64(), Some(g + c_g * g));
+    assert!(summary(&dir.path().join("heavier")).get("min_effective_gravity_m_s2").is_none());
+}
+
+/// `a_v = 1.2 g sin(2π t)` takes `g + a_v` to zero where `sin(2π t) = −1/1.2`:
+/// `t = (π + asin(1/1.2)) / (2π)`. The run stops there with exit code 1 and
+/// one line naming the file, the table and that instant (to 1e-9 s: it is
+/// located by root finding on the input).
+#[test]
+fn free_fall_is_one_line_with_its_instant() {
+    let dir = tempdir();
+    let file = write(
+        dir.path(),
+        "falls.toml",
+        &scenario(9.81, 0.1, "[ground.vertical]\ntype = \"harmonic\"\namplitude = 1.2\nfrequency = 1.0\n"),
+    );
+    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
+    let line = r.stderr.trim_end();
+    assert!(
+        line.starts_with(&format!("error: {}: ground.vertical: the ground falls faster than gravity at t = ", arg(&file))),
+        "{line}"
+    );
+    let exact = (std::f64::consts::PI + (1.0f64 / 1.2).asin()) / (2.0 * std::f64::consts::PI);
+    let t: f64 = line
+        .split("at t = ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("no instant in {line}"));
+    assert!((t - exact).abs() < 1e-9, "{t} against {exact}");
+}
+
+/// The vertical amplitude as a sweep axis: the column of the least effective
+/// gravity is there, and for a harmonic that completes its trough it is
+/// `g (1 − A)` (to rounding of the sine at its trough).
+#[test]
+fn the_vertical_keys_sweep() {
+    let dir = tempdir();
+    let text = scenario(9.81, 0.3, "[ground.vertical]\ntype = \"harmonic\"\namplitude = 0.1\nfrequency = 5.0\n")
+        + "\n[sweep]\n\"ground.vertical.amplitude\" = [0.1, 0.3, 0.5]\n";
+    let file = write(dir.path(), "sweep.toml", &text);
+    let out = dir.path().join("o");
+    let r = rocking(&["sweep", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    let csv = read(&out.join("sweep.csv"));
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    let column = header
+        .iter()
+        .position(|c| *c == "min_effective_gravity_m_s2")
+        .unwrap_or_else(|| panic!("{header:?}"));
+    for (line, amplitude) in lines.zip([0.1, 0.3, 0.5]) {
+        let g_min: f64 = line.split(',').nth(column).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN);
+        assert!((g_min - 9.81 * (1.0 - amplitude)).abs() < 1e-12, "{line}");
+    }
+}
+
+/// A vertical record that cannot be read names `ground.vertical.file`.
+#[test]
+fn a_missing_vertical_record_names_its_key() {
+    let dir = tempdir();
+    let file = write(
+        dir.path(),
+        "missing.toml",
+        &scenario(9.81, 0.3, "[ground.vertical]\ntype = \"record\"\nfile = \"nowhere.AT2\"\n"),
+    );
+    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
+    assert!(r.stderr.contains(": ground.vertical.file: "), "{}", r.stderr);
+    // And a key of another type, inside the table, names the table's key.
+    let file = write(
+        dir.path(),
+        "wrong.toml",
+        &scenario(
+            9.81,
+            0.3,
+            "[ground.vertical]\ntype = \"sine-pulse\"\namplitude = 0.2\nfrequency = 3.0\nduration = 1.0\n",
+        ),
+    );
+    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert!(
+        r.stderr.contains(": ground.vertical.duration: does not apply to type = \"sine-pulse\""),
+        "{}",
+        r.stderr
+    );
+}
