@@ -95,13 +95,14 @@ def command_summary(scenario_file: Path, tmp: Path) -> dict:
 
 
 def page_object(scenario_file: Path) -> dict:
-    """The scenario file as the page's object: a record file becomes its text."""
+    """The scenario file as the page's object: a record file (horizontal or vertical) becomes its text."""
     scenario = tomllib.loads(scenario_file.read_text())
     # The command names an unnamed scenario after its file.
     scenario.setdefault("name", scenario_file.stem)
     ground = scenario.get("ground", {})
-    if ground.get("type") == "record" and "file" in ground:
-        ground["text"] = (scenario_file.parent / ground.pop("file")).read_text()
+    for table in (ground, ground.get("vertical", {})):
+        if table.get("type") == "record" and "file" in table:
+            table["text"] = (scenario_file.parent / table.pop("file")).read_text()
     return scenario
 
 

@@ -159,11 +159,12 @@ impl ThetaFigure<'_> {
                 }
             }
         }
-        for segment in scale::segments(vertical) {
-            chart.draw_series(LineSeries::new(segment, PURPLE.stroke_width(1)))?;
-        }
+        // a_v over a_g: the smaller of the two as a rule, it would hide under it.
         for segment in scale::segments(points) {
             chart.draw_series(LineSeries::new(segment, INK.stroke_width(1)))?;
+        }
+        for segment in scale::segments(vertical) {
+            chart.draw_series(LineSeries::new(segment, PURPLE.stroke_width(1)))?;
         }
         timeline::draw_overturn(&mut chart, tl, y)?;
         if peak <= 0.0 {
