@@ -5,17 +5,14 @@
 //! Ctrl-C), then `fragility.csv` and `fractions.csv` from the exceedances
 //! counted on the way, and with `--plot` the figures `ida` and `fragility`.
 
-use super::sweep::{peak_memory_kb, progress_bar, Interrupted};
+use super::rows::{write_rows, RowsFile, Written};
+use super::sweep::{peak_memory_kb, Interrupted};
 use crate::format::sig;
 use crate::output;
 use crate::plot::{IdaCurve, StateCurve, StudyFigures};
 use anyhow::Context;
-use rocking_scenario::{Cell, RunError, Study, Threshold};
-use std::fs::File;
-use std::io::{BufWriter, Write};
+use rocking_scenario::{Cell, Study, Threshold};
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Instant;
 
 /// One row per case.
 pub const STRIPES_CSV: &str = "stripes.csv";
@@ -23,9 +20,6 @@ pub const STRIPES_CSV: &str = "stripes.csv";
 pub const FRAGILITY_CSV: &str = "fragility.csv";
 /// One row per limit state and level: the observed fraction.
 pub const FRACTIONS_CSV: &str = "fractions.csv";
-
-/// Set by the first Ctrl-C: no new case starts.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// Arguments of `rocking fragility`.
 #[derive(Debug, clap::Args)]
@@ -63,16 +57,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     inputs.extend(study.inputs());
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
 
-    let file = File::create(&stripes_path).with_context(|| format!("cannot write {}", stripes_path.display()))?;
-    let mut csv = BufWriter::new(file);
-    writeln!(csv, "{}", study.csv_header()).with_context(|| format!("cannot write {}", stripes_path.display()))?;
-
-    let _ = ctrlc::set_handler(|| {
-        if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            eprintln!("interrupted twice: stopping now; the last row of stripes.csv may be incomplete");
-            std::process::exit(130);
-        }
-    });
     let mut tally = study.tally();
     // The response of the first limit state's field per case, for the IDA figure (one number per case).
     let header = study.header();
@@ -89,35 +73,33 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         })
         .collect();
 
-    let progress = progress_bar(study.len());
-    let start = Instant::now();
     let levels = study.levels().len();
-    let result = study.run(args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
-        writeln!(csv, "{}", row.to_csv_line())?;
-        tally.add(&row);
-        let cell = |c: Option<usize>| c.and_then(|c| row.cells.get(c));
-        let value = match cell(ida_column) {
-            Some(Cell::Bool(b)) => Some(f64::from(u8::from(*b))),
-            Some(c) => c.as_f64(),
-            None => None,
-        };
-        let overturned = matches!(cell(overturned_column), Some(Cell::Bool(true)));
-        // Only for the figure: one point per case.
-        if let Some(curve) = ida.get_mut(row.index / levels).filter(|_| args.plot) {
-            curve.points.push((study.levels()[row.index % levels], value, overturned));
-        }
-        progress.inc(1);
-        Ok::<(), std::io::Error>(())
-    });
-    progress.finish_and_clear();
-    let flushed = csv.flush();
-    let done = match result {
-        Ok(done) => done,
-        Err(RunError::Stopped(e)) => return Err(e).with_context(|| format!("cannot write {}", stripes_path.display())),
-        Err(e) => return Err(e.into()),
+    let file = RowsFile {
+        path: &stripes_path,
+        shown: &stripes_path,
+        header: study.csv_header(),
+        if_killed: "the last row of stripes.csv may be incomplete",
     };
-    flushed.with_context(|| format!("cannot write {}", stripes_path.display()))?;
-    let wall = start.elapsed().as_secs_f64();
+    let threads = args.threads.map(|n| n as usize);
+    let Written { done, wall } = write_rows(
+        &file,
+        study.len(),
+        |row| {
+            tally.add(row);
+            let cell = |c: Option<usize>| c.and_then(|c| row.cells.get(c));
+            let value = match cell(ida_column) {
+                Some(Cell::Bool(b)) => Some(f64::from(u8::from(*b))),
+                Some(c) => c.as_f64(),
+                None => None,
+            };
+            let overturned = matches!(cell(overturned_column), Some(Cell::Bool(true)));
+            // Only for the figure: one point per case.
+            if let Some(curve) = ida.get_mut(row.index / levels).filter(|_| args.plot) {
+                curve.points.push((study.levels()[row.index % levels], value, overturned));
+            }
+        },
+        |cancel, sink| study.run(threads, cancel, sink),
+    )?;
     if done.cancelled {
         return Err(Interrupted {
             written: done.written,

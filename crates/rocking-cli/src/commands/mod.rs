@@ -4,6 +4,7 @@ pub mod check;
 pub mod fragility;
 pub mod keys;
 pub mod merge;
+pub mod rows;
 pub mod run;
 pub mod sweep;
 

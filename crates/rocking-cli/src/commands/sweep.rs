@@ -5,24 +5,17 @@
 //! contiguous blocks of cases and writes `shard.json` next to its rows, for
 //! `rocking merge` (interface.md, "Sweeps beyond one machine").
 
+use super::rows::{write_rows, RowsFile, Written};
 use crate::format::sig;
 use crate::output;
 use crate::shard::{Manifest, SHARD_JSON};
 use anyhow::Context;
-use indicatif::{ProgressBar, ProgressStyle};
-use rocking_scenario::{RunError, Shard, Sweep};
+use rocking_scenario::{Shard, Sweep};
 use std::fmt;
-use std::fs::File;
-use std::io::{BufWriter, IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Instant;
 
 /// The file of a sweep's rows.
 pub const SWEEP_CSV: &str = "sweep.csv";
-
-/// Set by the first Ctrl-C: no new case starts.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// Arguments of `rocking sweep`.
 #[derive(Debug, clap::Args)]
@@ -96,20 +89,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // shard.json left by an earlier run is removed with the other files).
     let staging = output::Staging::new(&dir, &inputs)?;
 
-    let file = File::create(staging.path(SWEEP_CSV)).with_context(|| format!("cannot write {}", csv_path.display()))?;
-    let mut csv = BufWriter::new(file);
-    writeln!(csv, "{}", sweep.csv_header()).with_context(|| format!("cannot write {}", csv_path.display()))?;
-
-    // A second Ctrl-C while the cases under way finish ends the process at once.
-    // Without a handler (one already set), Ctrl-C simply ends the process.
-    let _ = ctrlc::set_handler(|| {
-        if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            eprintln!("interrupted twice: stopping now; sweep.csv not written");
-            std::process::exit(130);
-        }
-    });
-    let progress = progress_bar(cases.len());
-    let start = Instant::now();
     // The figures are drawn from the rows as they come, not from sweep.csv read back.
     let header = sweep.header();
     let mut table = if args.plot {
@@ -117,23 +96,23 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     } else {
         None
     };
-    let result = sweep.run_range(cases.clone(), args.threads.map(|n| n as usize), &INTERRUPTED, |row| {
-        writeln!(csv, "{}", row.to_csv_line())?;
-        if let Some(table) = &mut table {
-            table.push(&row.cells);
-        }
-        progress.inc(1);
-        Ok::<(), std::io::Error>(())
-    });
-    progress.finish_and_clear();
-    let flushed = csv.flush();
-    let done = match result {
-        Ok(done) => done,
-        Err(RunError::Stopped(e)) => return Err(e).with_context(|| format!("cannot write {}", csv_path.display())),
-        Err(e) => return Err(e.into()),
+    let file = RowsFile {
+        path: &staging.path(SWEEP_CSV),
+        shown: &csv_path,
+        header: sweep.csv_header(),
+        if_killed: "sweep.csv not written",
     };
-    flushed.with_context(|| format!("cannot write {}", csv_path.display()))?;
-    let wall = start.elapsed().as_secs_f64();
+    let threads = args.threads.map(|n| n as usize);
+    let Written { done, wall } = write_rows(
+        &file,
+        cases.len(),
+        |row| {
+            if let Some(table) = &mut table {
+                table.push(&row.cells);
+            }
+        },
+        |cancel, sink| sweep.run_range(cases.clone(), threads, cancel, sink),
+    )?;
     if done.cancelled {
         staging.commit()?;
         return Err(Interrupted {
@@ -182,18 +161,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     staging.commit()?;
     super::print(&(lines.join("\n") + "\n"))?;
     Ok(())
-}
-
-/// A bar with the rate and the time left on stderr, when stderr is a terminal; hidden otherwise.
-pub(crate) fn progress_bar(len: usize) -> ProgressBar {
-    if !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::new(len as u64);
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} cases  {per_sec}  {elapsed} elapsed, {eta} left") {
-        bar.set_style(style);
-    }
-    bar
 }
 
 /// The process's peak resident memory (kB), from `/proc/self/status` (Linux only).
