@@ -4,15 +4,13 @@
 
 use crate::convert::table_of;
 use crate::error::scenario_error;
-use crate::sweep::{column, thread_count, SIGNAL_CHECK};
+use crate::sweep::{column, gather, thread_count};
 use numpy::PyArray1;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use rocking_scenario::{Cell, RunError, Study};
+use rocking_scenario::Study;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
-use std::time::Instant;
 
 /// Runs a study given as the path of a study file or as a dict with its keys
 /// (relative record patterns then resolve against the current directory).
@@ -31,29 +29,15 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
     };
 
     let header = study.header();
-    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(study.len())).collect();
     let mut tally = study.tally();
-    let cancel = AtomicBool::new(false);
-    let mut last_check = Instant::now();
-    let finished = py.detach(|| {
-        study.run(threads, &cancel, |row| {
-            tally.add(&row);
-            for (column, cell) in columns.iter_mut().zip(row.cells) {
-                column.push(cell);
-            }
-            if last_check.elapsed() < SIGNAL_CHECK {
-                return Ok(());
-            }
-            last_check = Instant::now();
-            // Ctrl-C: the handler raises KeyboardInterrupt here, and the study stops.
-            Python::attach(|py| py.check_signals())
-        })
-    });
-    match finished {
-        Ok(_) => {}
-        Err(RunError::Stopped(e)) => return Err(e),
-        Err(e) => return Err(PyRuntimeError::new_err(format!("{}: {e}", study.origin().display()))),
-    }
+    let columns = gather(
+        py,
+        header.len(),
+        study.len(),
+        study.origin(),
+        |row| tally.add(row),
+        |cancel, sink| study.run(threads, cancel, sink),
+    )?;
     let stripes = PyDict::new(py);
     for (name, cells) in header.iter().zip(columns) {
         stripes.set_item(name, column(py, name, cells)?)?;

@@ -13,9 +13,9 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use rocking_scenario::columns::{Kind, SUMMARY};
-use rocking_scenario::{Cell, RunError, Sweep, ERROR_COLUMN};
+use rocking_scenario::{Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN};
 use std::ops::Range;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 use toml::Value;
@@ -114,11 +114,40 @@ pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
 fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases: Range<usize>) -> PyResult<Bound<'py, PyDict>> {
     let header = sweep.header();
     let rows = cases.end.min(sweep.len()).saturating_sub(cases.start);
-    let mut columns: Vec<Vec<Cell>> = header.iter().map(|_| Vec::with_capacity(rows)).collect();
+    let columns = gather(
+        py,
+        header.len(),
+        rows,
+        sweep.origin(),
+        |_| {},
+        |cancel, sink| sweep.run_range(cases, threads, cancel, sink),
+    )?;
+    let out = PyDict::new(py);
+    for (name, cells) in header.iter().zip(columns) {
+        out.set_item(name, column(py, name, cells)?)?;
+    }
+    Ok(out)
+}
+
+/// Runs the cases of a sweep or a study by `run` with the GIL released and
+/// gathers their rows into `width` columns of cells (`rows` expected), each
+/// row shown to `each` first (a study's tally). Every `SIGNAL_CHECK` the GIL
+/// is taken back for Ctrl-C, whose `KeyboardInterrupt` stops the run; another
+/// failure is a `RuntimeError` naming `origin`.
+pub(crate) fn gather(
+    py: Python<'_>,
+    width: usize,
+    rows: usize,
+    origin: &Path,
+    mut each: impl FnMut(&Row) + Send,
+    run: impl FnOnce(&AtomicBool, &mut (dyn FnMut(Row) -> PyResult<()> + Send)) -> Result<Finished, RunError<PyErr>> + Send,
+) -> PyResult<Vec<Vec<Cell>>> {
+    let mut columns: Vec<Vec<Cell>> = (0..width).map(|_| Vec::with_capacity(rows)).collect();
     let cancel = AtomicBool::new(false);
     let mut last_check = Instant::now();
     let finished = py.detach(|| {
-        sweep.run_range(cases, threads, &cancel, |row| {
+        run(&cancel, &mut |row: Row| {
+            each(&row);
             for (column, cell) in columns.iter_mut().zip(row.cells) {
                 column.push(cell);
             }
@@ -126,20 +155,15 @@ fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases:
                 return Ok(());
             }
             last_check = Instant::now();
-            // Ctrl-C: the handler raises KeyboardInterrupt here, and the sweep stops.
+            // Ctrl-C: the handler raises KeyboardInterrupt here, and the run stops.
             Python::attach(|py| py.check_signals())
         })
     });
     match finished {
-        Ok(_) => {}
-        Err(RunError::Stopped(e)) => return Err(e),
-        Err(e) => return Err(PyRuntimeError::new_err(format!("{}: {e}", sweep.origin().display()))),
+        Ok(_) => Ok(columns),
+        Err(RunError::Stopped(e)) => Err(e),
+        Err(e) => Err(PyRuntimeError::new_err(format!("{}: {e}", origin.display()))),
     }
-    let out = PyDict::new(py);
-    for (name, cells) in header.iter().zip(columns) {
-        out.set_item(name, column(py, name, cells)?)?;
-    }
-    Ok(out)
 }
 
 /// Whether the column `name` holds text (the summary's names and the error
