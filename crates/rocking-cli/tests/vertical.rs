@@ -182,3 +182,52 @@ fn a_missing_vertical_record_names_its_key() {
         r.stderr
     );
 }
+
+/// `[ground.vertical]` of type "none" is a vertical motion of zero: the
+/// column is there (all zeros), the least effective gravity is g itself, and
+/// the motion is that of no vertical table at all, to the bit.
+#[test]
+fn a_vertical_of_type_none_is_gravity_alone() {
+    let dir = tempdir();
+    let none = write(dir.path(), "none.toml", &scenario(9.81, 0.7, "[ground.vertical]\ntype = \"none\"\n"));
+    let plain = write(dir.path(), "plain.toml", &scenario(9.81, 0.7, ""));
+    for f in [&none, &plain] {
+        let r = rocking(&["run", arg(f), "--out", arg(&dir.path().join(f.file_stem().unwrap_or_default()))]);
+        assert_eq!(r.code, Some(0), "{r:?}");
+    }
+    let (header, rows) = history(&dir.path().join("none"));
+    let (_, plain_rows) = history(&dir.path().join("plain"));
+    assert_eq!(header.last().map(String::as_str), Some("ground_acc_v"));
+    for (a, b) in rows.iter().zip(&plain_rows) {
+        assert_eq!(a[a.len() - 1].to_bits(), 0.0f64.to_bits());
+        assert_eq!(
+            a[..a.len() - 1].iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+            b.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+        );
+    }
+    assert_eq!(summary(&dir.path().join("none"))["min_effective_gravity_m_s2"].as_f64(), Some(9.81));
+}
+
+/// Axes on `ground.vertical` keys add the vertical motion to a base scenario
+/// without one: the sweep's column is there, `g (1 − A)` for each amplitude.
+#[test]
+fn axes_can_add_the_vertical_motion() {
+    let dir = tempdir();
+    let text = scenario(9.81, 0.3, "")
+        + "\n[sweep]\n\"ground.vertical.type\" = [\"harmonic\"]\n\"ground.vertical.frequency\" = [8.0]\n\"ground.vertical.amplitude\" = [0.1, 0.3]\n";
+    assert!(!text.contains("[ground.vertical]"));
+    let file = write(dir.path(), "axis.toml", &text);
+    let out = dir.path().join("o");
+    let r = rocking(&["sweep", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    let csv = read(&out.join("sweep.csv"));
+    let header: Vec<&str> = csv.lines().next().unwrap_or_default().split(',').collect();
+    let column = header
+        .iter()
+        .position(|c| *c == "min_effective_gravity_m_s2")
+        .unwrap_or_else(|| panic!("{header:?}"));
+    for (line, amplitude) in csv.lines().skip(1).zip([0.1, 0.3]) {
+        let g_min: f64 = line.split(',').nth(column).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN);
+        assert!((g_min - 9.81 * (1.0 - amplitude)).abs() < 1e-12, "{line}");
+    }
+}

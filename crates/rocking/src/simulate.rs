@@ -190,6 +190,7 @@ fn run<O: Observer, const N: usize>(
         ground,
         vertical: vertical.unwrap_or(&NO_MOTION),
         has_vertical: vertical.is_some_and(|v| !matches!(v, GroundMotion::None)),
+        vertical_given: vertical.is_some(),
         end: settings.duration,
         regime: Regime {
             tower,
@@ -341,6 +342,9 @@ struct Run<'a, O: Observer, const N: usize> {
     /// The vertical ground acceleration (`GroundMotion::None` without one).
     vertical: &'a GroundMotion,
     has_vertical: bool,
+    /// A vertical input was given, `GroundMotion::None` included (the summary
+    /// then reports the least effective gravity).
+    vertical_given: bool,
     end: f64,
     regime: Regime,
     t: f64,
@@ -415,6 +419,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.tracker.summary.evaluations = self.stepper.evaluations;
         if self.has_vertical {
             self.tracker.summary.min_effective_gravity = Some(self.min_effective_gravity(self.t));
+        } else if self.vertical_given {
+            // A vertical input of `GroundMotion::None`: g throughout.
+            self.tracker.summary.min_effective_gravity = Some(self.kernel.g);
         }
         Ok(self.tracker.finish(&self.kernel, self.t, &self.y))
     }

@@ -235,9 +235,10 @@ impl Sweep {
         };
         // Known without a run: the optional fields follow the base scenario
         // (extra points add history columns only, not summary fields; a
-        // vertical motion, a table no axis can add or remove, adds one).
+        // vertical motion, in the base or set by an axis, adds one).
         let layout = Layout {
-            vertical: matches!(crate::get_dotted(&base, "ground.vertical"), Some(Value::Table(_))),
+            vertical: matches!(crate::get_dotted(&base, "ground.vertical"), Some(Value::Table(_)))
+                || expanded.iter().any(|a| a.key().starts_with("ground.vertical.")),
             ..Layout::default()
         };
         let mut sweep = Self {
