@@ -54,8 +54,9 @@ def next_uplift(t, t_end, amplitude, omega, tan_alpha):
     return None
 
 
-def run(width, height, amplitude, frequency, t_total, rtol, shaking=None):
-    """One case: (max theta / alpha, impacts, overturned)."""
+def run(width, height, amplitude, frequency, t_total, rtol, shaking=None, impact_times=None):
+    """One case: (max theta / alpha, impacts, overturned); the instant of each
+    impact is appended to `impact_times` if a list is given."""
     shaking = t_total if shaking is None else shaking
     b, h = width / 2, height / 2
     radius = math.hypot(b, h)
@@ -114,6 +115,8 @@ def run(width, height, amplitude, frequency, t_total, rtol, shaking=None):
         # An impact: the pivot flips, theta' is multiplied by r.
         t = sol.t_events[0][0]
         impacts += 1
+        if impact_times is not None:
+            impact_times.append(t)
         theta, theta_dot, s = 0.0, r * sol.y_events[0][0][1], -s
         if abs(theta_dot) < REST_SPEED:
             a = ground(t)
