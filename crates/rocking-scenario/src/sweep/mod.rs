@@ -386,12 +386,14 @@ impl Sweep {
 
 /// The axes of a `[sweep]` table. A quoted key (`"ground.frequency" = …`) is
 /// the dotted key itself; an unquoted one (`ground.frequency = …`) arrives as a
-/// nested table under a section name, and is flattened back.
+/// nested table under a section name (and `ground.vertical.amplitude = …`
+/// under `ground`, then `vertical`), and is flattened back.
 fn flatten_axes(table: &Table, prefix: &str, out: &mut Vec<(String, AxisSpec)>) -> Result<(), Fault> {
     for (k, v) in table {
         let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+        let nested = (prefix.is_empty() && crate::scenario::SECTIONS.contains(&k.as_str())) || (prefix == "ground" && k == crate::ground::VERTICAL);
         match v {
-            Value::Table(t) if prefix.is_empty() && crate::scenario::SECTIONS.contains(&k.as_str()) => flatten_axes(t, &key, out)?,
+            Value::Table(t) if nested => flatten_axes(t, &key, out)?,
             _ => {
                 if out.iter().any(|(existing, _)| *existing == key) {
                     return Err(Fault::invalid(axis_name(&key), "is given twice"));

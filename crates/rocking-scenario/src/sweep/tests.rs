@@ -173,6 +173,15 @@ fn unquoted_dotted_keys_are_the_same_axes() {
     assert_eq!(quoted.axes(), nested.axes());
     let e = fails("ground.frequency = [3.0]\n\"ground.frequency\" = [4.0]", r#"sweep."ground.frequency""#);
     assert_eq!(e, "is given twice");
+    // Three levels: a key of the vertical motion.
+    let quoted = ok(r#""ground.vertical.type" = ["harmonic"]
+"ground.vertical.frequency" = [5.0]
+"ground.vertical.amplitude" = [0.1, 0.2]"#);
+    let nested = ok(r#"ground.vertical.type = ["harmonic"]
+ground.vertical.frequency = [5.0]
+ground.vertical.amplitude = [0.1, 0.2]"#);
+    assert_eq!(quoted.axes(), nested.axes());
+    assert_eq!(nested.axes()[2].key(), "ground.vertical.amplitude");
 }
 
 #[test]
