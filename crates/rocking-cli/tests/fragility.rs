@@ -252,3 +252,34 @@ fn the_example_study_runs() {
         assert!(read(&dir.path().join(f)).contains("bell tower on a sliding church"), "{f}");
     }
 }
+
+/// The output folder holds one run's files: a second run without `--plot`
+/// removes the figures of a first run with it (they would describe other
+/// stripes), keeps a file of the user's, and stripes.csv is the second run's.
+#[test]
+fn a_second_run_replaces_the_first_runs_files() {
+    let dir = tempdir();
+    records(dir.path());
+    let file = write(dir.path(), "study.toml", &study("pga"));
+    let out = dir.path().join("o");
+    let r = rocking(&["fragility", arg(&file), "--out", arg(&out), "--plot"]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    assert!(out.join("ida.svg").exists() && out.join("fragility.png").exists());
+    write(&out, "notes.txt", "mine");
+    let smaller = write(dir.path(), "smaller.toml", &study("pga").replace("levels = [0.2, 0.45, 0.9]", "levels = [0.2]"));
+    let r = rocking(&["fragility", arg(&smaller), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    for stale in ["ida.svg", "ida.png", "fragility.svg", "fragility.png"] {
+        assert!(!out.join(stale).exists(), "{stale} of the first run is left");
+    }
+    assert_eq!(read(&out.join("notes.txt")), "mine");
+    // Two records at one level: two stripes.
+    assert_eq!(csv(&out.join("stripes.csv")).1.len(), 2);
+    let leftovers: Vec<_> = std::fs::read_dir(&out)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .filter_map(Result::ok)
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect();
+    assert!(leftovers.is_empty(), "no staging folder is left: {leftovers:?}");
+}

@@ -3,7 +3,8 @@
 //! cases are `rocking_scenario::Study`, run on the sweep's engine; this file
 //! writes `stripes.csv` row by row (with a progress bar and a clean stop on
 //! Ctrl-C), then `fragility.csv` and `fractions.csv` from the exceedances
-//! counted on the way, and with `--plot` the figures `ida` and `fragility`.
+//! counted on the way, and with `--plot` the figures `ida` and `fragility`,
+//! all in a staging folder moved into place at the end.
 
 use super::rows::{write_rows, RowsFile, Written};
 use super::sweep::{peak_memory_kb, Interrupted};
@@ -27,7 +28,8 @@ pub struct Args {
     /// The study file: a scenario without [ground] plus a [study] table (records, measure, levels, limit states).
     pub study: PathBuf,
     /// Output folder, created if needed [default: out/<study file stem>].
-    /// stripes.csv, fragility.csv and fractions.csv there are overwritten; an input file never is.
+    /// The files of an earlier run of this tool there are replaced (stale
+    /// figures removed) once the study ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Also draw the response against the level per record (ida) and the fragility curves (fragility).
@@ -47,7 +49,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     // The study's errors already name the file, the key and the cause.
     let study = Study::from_toml_str(&text, &args.study)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.study));
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     let stripes_path = dir.join(STRIPES_CSV);
     let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV].iter().map(|f| dir.join(f)).collect();
     if args.plot {
@@ -56,6 +57,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let mut inputs = vec![args.study.clone()];
     inputs.extend(study.inputs());
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
+    // Written under a staging folder and moved into place at the end (or on
+    // Ctrl-C, with the rows finished): never a mix with an earlier study's files.
+    let staging = output::Staging::new(&dir, &inputs)?;
 
     let mut tally = study.tally();
     // The response of the first limit state's field per case, for the IDA figure (one number per case).
@@ -75,10 +79,10 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
 
     let levels = study.levels().len();
     let file = RowsFile {
-        path: &stripes_path,
+        path: &staging.path(STRIPES_CSV),
         shown: &stripes_path,
         header: study.csv_header(),
-        if_killed: "the last row of stripes.csv may be incomplete",
+        if_killed: "stripes.csv not written",
     };
     let threads = args.threads.map(|n| n as usize);
     let Written { done, wall } = write_rows(
@@ -101,6 +105,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         |cancel, sink| study.run(threads, cancel, sink),
     )?;
     if done.cancelled {
+        staging.commit()?;
         return Err(Interrupted {
             written: done.written,
             total: study.len(),
@@ -109,8 +114,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         .into());
     }
     for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv()), (FRACTIONS_CSV, tally.fractions_csv())] {
-        let path = dir.join(name);
-        std::fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))?;
+        std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()))?;
     }
 
     let fits = tally.fits();
@@ -154,7 +158,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         }
     }
     lines.push(format!("wrote {STRIPES_CSV}, {FRAGILITY_CSV}, {FRACTIONS_CSV} in {}", dir.display()));
-    super::print(&(lines.join("\n") + "\n"))?;
     if args.plot {
         let figures = StudyFigures {
             title: study.name().to_string(),
@@ -176,7 +179,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
                 })
                 .collect(),
         };
-        crate::plot::study_figures(&dir, &figures).context("drawing the figures")?;
+        crate::plot::study_figures(staging.folder(), &figures).context("drawing the figures")?;
     }
+    staging.commit()?;
+    super::print(&(lines.join("\n") + "\n"))?;
     Ok(())
 }
