@@ -270,7 +270,8 @@ fn watched(
         }
     };
     yj[0] = Jet::new(y[0], y[1]);
-    let demand = (regime.building == BuildingRegime::Stick && kernel.has_building).then(|| kernel.rocking_stick_demand(lean, yj[1], theta_ddot, a_g, g_e));
+    let demand = (!list.is_empty() && regime.building == BuildingRegime::Stick && kernel.has_building)
+        .then(|| kernel.rocking_stick_demand(lean, yj[1], theta_ddot, a_g, g_e));
     for (slot, &c) in w.conditions.iter_mut().zip(list) {
         *slot = match (c, demand) {
             (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(force, normal, kernel.mu_s),
@@ -773,7 +774,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
         if let Some(d) = &dense {
-            let at = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), list, d, t);
+            // The peaks alone: no condition is evaluated (an empty list).
+            let at = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), &[], d, t);
             let tracker = &mut self.tracker;
             if top_inside {
                 interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, &mut |t, v| {
