@@ -4,7 +4,7 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, size, text, Figure, CYCLE, GREY, INK};
+use super::style::{self, Figure, CYCLE};
 use super::StudyFigures;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -53,22 +53,8 @@ impl Figure for FragilityFigure<'_> {
         let levels: Vec<f64> = s.states.iter().flat_map(|st| st.stripes.iter().map(|p| p.level)).collect();
         let x_hi = levels.iter().copied().fold(0.0, f64::max);
         let x_range = scale::padded(0.0, if x_hi > 0.0 { x_hi } else { 1.0 }, 0.03);
-        let mut chart = ChartBuilder::on(&panel)
-            .margin_left(8)
-            .margin_right(24)
-            .margin_top(8)
-            .margin_bottom(6)
-            .y_label_area_size(PLOT_LEFT - 8)
-            .x_label_area_size(56)
-            .build_cartesian_2d(x_range.0..x_range.1, 0.0..1.02)?;
-        chart
-            .configure_mesh()
-            .label_style(text(size::TICK, INK))
-            .axis_desc_style(text(size::AXIS, INK))
-            .bold_line_style(GREY.mix(0.25))
-            .light_line_style(GREY.mix(0.08))
-            .x_desc(s.measure_label())
-            .y_desc("probability of exceedance")
+        let mut chart = style::xy_chart(&panel, PLOT_LEFT, x_range, (0.0, 1.02))?;
+        style::xy_mesh(&mut chart, s.measure_label(), "probability of exceedance")
             .x_label_formatter(&|v| crate::format::sig(*v, 3))
             .y_label_formatter(&|v| crate::format::sig(*v, 2))
             .draw()?;

@@ -5,7 +5,7 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, curve_color, size, text, Figure, GREY, INK, OVERTURN};
+use super::style::{self, curve_color, Figure, INK, OVERTURN};
 use super::StudyFigures;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -68,22 +68,8 @@ impl Figure for IdaFigure<'_> {
         let (top_strip, panel) = rest.split_vertically(strip);
         legend::draw(&top_strip, PLOT_LEFT, &entries)?;
 
-        let mut chart = ChartBuilder::on(&panel)
-            .margin_left(8)
-            .margin_right(24)
-            .margin_top(8)
-            .margin_bottom(6)
-            .y_label_area_size(PLOT_LEFT - 8)
-            .x_label_area_size(56)
-            .build_cartesian_2d(x_range.0..x_range.1, bottom.min(0.0)..1.1 * top)?;
-        chart
-            .configure_mesh()
-            .label_style(text(size::TICK, INK))
-            .axis_desc_style(text(size::AXIS, INK))
-            .bold_line_style(GREY.mix(0.25))
-            .light_line_style(GREY.mix(0.08))
-            .x_desc(s.measure_label())
-            .y_desc(s.ida_field.clone())
+        let mut chart = style::xy_chart(&panel, PLOT_LEFT, x_range, (bottom.min(0.0), 1.1 * top))?;
+        style::xy_mesh(&mut chart, s.measure_label(), s.ida_field.clone())
             .x_label_formatter(&|v| crate::format::sig(*v, 3))
             .y_label_formatter(&|v| crate::format::sig(*v, 3))
             .draw()?;

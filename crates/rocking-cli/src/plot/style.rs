@@ -10,6 +10,8 @@
 //! of colour blindness; continuous values use viridis.
 
 use anyhow::Context;
+use plotters::chart::MeshStyle;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -192,6 +194,43 @@ where
         text(size::NOTE, GREY).pos(Pos::new(HPos::Center, VPos::Center)),
     ))?;
     Ok(())
+}
+
+/// The chart of an x–y figure (the sweep's curves, a study's IDA and
+/// fragility curves).
+pub type XyChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// An x–y chart on `panel` with the figures' margins; `plot_left` is the left
+/// margin plus the label area (px), where the legend above starts.
+pub fn xy_chart<'a, DB: DrawingBackend>(panel: &'a DrawingArea<DB, Shift>, plot_left: i32, x: (f64, f64), y: (f64, f64)) -> anyhow::Result<XyChart<'a, DB>>
+where
+    DB::ErrorType: 'static,
+{
+    Ok(ChartBuilder::on(panel)
+        .margin_left(8)
+        .margin_right(24)
+        .margin_top(8)
+        .margin_bottom(6)
+        .y_label_area_size(plot_left - 8)
+        .x_label_area_size(56)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)?)
+}
+
+/// The mesh of an x–y chart in the figures' look, with the axes' names; the
+/// caller adds the label formatters and draws it.
+pub fn xy_mesh<'a, 'b, DB: DrawingBackend>(
+    chart: &'b mut XyChart<'a, DB>,
+    x_desc: impl Into<String>,
+    y_desc: impl Into<String>,
+) -> MeshStyle<'a, 'b, RangedCoordf64, RangedCoordf64, DB> {
+    let mut mesh = chart.configure_mesh();
+    mesh.label_style(text(size::TICK, INK))
+        .axis_desc_style(text(size::AXIS, INK))
+        .bold_line_style(GREY.mix(0.25))
+        .light_line_style(GREY.mix(0.08))
+        .x_desc(x_desc)
+        .y_desc(y_desc);
+    mesh
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 use super::labels;
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, curve_color, size, text, Figure, GREY, INK, OVERTURN};
+use super::style::{self, curve_color, Figure, INK, OVERTURN};
 use super::sweep_table::{number, Case, SweepTable};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -174,14 +174,7 @@ impl Figure for CurvesFigure<'_> {
         let (top_strip, panel) = rest.split_vertically(strip);
         legend::draw(&top_strip, PLOT_LEFT, &entries)?;
 
-        let mut chart = ChartBuilder::on(&panel)
-            .margin_left(8)
-            .margin_right(24)
-            .margin_top(8)
-            .margin_bottom(6)
-            .y_label_area_size(PLOT_LEFT - 8)
-            .x_label_area_size(56)
-            .build_cartesian_2d(x_range.0..x_range.1, y.0..y.1)?;
+        let mut chart = style::xy_chart(&panel, PLOT_LEFT, x_range, y)?;
         let x_label = |v: &f64| x.label(*v);
         let y_label = |v: &f64| {
             if any_overturned && *v > 1.1 * top {
@@ -190,15 +183,8 @@ impl Figure for CurvesFigure<'_> {
                 crate::format::sig(*v, 3)
             }
         };
-        let mut mesh = chart.configure_mesh();
-        mesh.label_style(text(size::TICK, INK))
-            .axis_desc_style(text(size::AXIS, INK))
-            .bold_line_style(GREY.mix(0.25))
-            .light_line_style(GREY.mix(0.08))
-            .x_desc(labels::axis(&self.table.axes[0]))
-            .y_desc("max θ/α (–)")
-            .x_label_formatter(&x_label)
-            .y_label_formatter(&y_label);
+        let mut mesh = style::xy_mesh(&mut chart, labels::axis(&self.table.axes[0]), "max θ/α (–)");
+        mesh.x_label_formatter(&x_label).y_label_formatter(&y_label);
         if let Some(c) = &x.categories {
             mesh.x_labels(c.len().max(2));
         }
