@@ -5,28 +5,11 @@
 //! finite values at strictly increasing times. New crashing inputs go to
 //! `tests/data/fuzz/records/`.
 
-use rocking::{AccelerationUnit, CsvOptions, Record, RecordFormat};
 use std::path::Path;
 
-/// What the `records` fuzz target does with one input.
-fn replay(data: &[u8]) {
-    let Some((&selector, rest)) = data.split_first() else { return };
-    let Ok(text) = std::str::from_utf8(rest) else { return };
-    let format = match selector % 5 {
-        0 => Some(RecordFormat::At2),
-        1 => Some(RecordFormat::Esm),
-        2 | 3 => Some(RecordFormat::Csv),
-        _ => None,
-    };
-    let csv = CsvOptions {
-        units: AccelerationUnit::G,
-        dt: (selector % 5 == 3).then_some(0.01),
-    };
-    if let Ok(record) = Record::parse(text, format, &csv, 9.81) {
-        assert!(record.values().iter().all(|v| v.is_finite()));
-        assert!(record.times().windows(2).all(|w| w[1] > w[0]));
-    }
-}
+#[path = "support/records_fuzz.rs"]
+mod records_fuzz;
+use records_fuzz::replay;
 
 #[test]
 fn kept_fuzz_inputs_never_panic() {
