@@ -43,6 +43,9 @@ const FIELDS = {
     { k: "units", t: "select", o: ["", "g", "m/s2", "cm/s2"] },
     { k: "dt", u: "s" },
   ],
+  // [ground.vertical]: the vertical ground acceleration, positive upwards,
+  // with the types and keys of [ground] (filled in below).
+  "ground.vertical": [],
   initial: [
     { k: "theta", u: "rad", d: "0" },
     { k: "theta_over_alpha", d: "0" },
@@ -66,7 +69,25 @@ const GROUND_KEYS = {
   ricker: ["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "t0"],
   record: ["type", "file", "text", "format", "scale", "units", "dt"],
 };
-const OPTIONAL_SECTIONS = ["tower", "building", "initial"];
+FIELDS["ground.vertical"] = FIELDS.ground;
+const OPTIONAL_SECTIONS = ["tower", "building", "ground.vertical", "initial"];
+// A vertical motion switched on from the form starts as this one.
+const VERTICAL_START = { type: "harmonic", amplitude: 0.2, frequency: 8.0 };
+
+/** The table of `section` in the scenario (`ground.vertical` lives in `ground`), or undefined. */
+function tableOf(section) {
+  return section === "ground.vertical" ? scenario.ground?.vertical : scenario[section];
+}
+
+/** The table of `section`, created empty if absent. */
+function ensureTable(section) {
+  if (section !== "ground.vertical") return (scenario[section] = scenario[section] || {});
+  scenario.ground = scenario.ground || {};
+  return (scenario.ground.vertical = scenario.ground.vertical || {});
+}
+
+/** Whether `section` holds a ground motion (its keys follow its type). */
+const isMotion = (section) => section === "ground" || section === "ground.vertical";
 
 let scenario = {};
 let result = null;
@@ -97,7 +118,7 @@ function buildForm() {
   for (const [section, fields] of Object.entries(FIELDS)) {
     const set = document.createElement("fieldset");
     const legend = document.createElement("legend");
-    const present = scenario[section] !== undefined;
+    const present = tableOf(section) !== undefined;
     if (OPTIONAL_SECTIONS.includes(section)) {
       const box = document.createElement("input");
       box.type = "checkbox";
@@ -109,8 +130,8 @@ function buildForm() {
       legend.textContent = `[${section}]`;
     }
     set.append(legend);
-    const table = scenario[section] || {};
-    const type = section === "ground" ? table.type || "harmonic" : null;
+    const table = tableOf(section) || {};
+    const type = isMotion(section) ? table.type || "harmonic" : null;
     if (present || !OPTIONAL_SECTIONS.includes(section)) {
       for (const f of fields) {
         if (type && !GROUND_KEYS[type]?.includes(f.k)) continue;
@@ -140,12 +161,13 @@ function field(section, f, value) {
   }
   input.name = `${section}.${f.k}`;
   input.addEventListener(f.t === "select" ? "change" : "input", () => {
-    const table = (scenario[section] = scenario[section] || {});
+    const table = ensureTable(section);
     const v = f.t === "select" ? input.value || undefined : parseValue(input.value);
     if (v === undefined) delete table[f.k];
     else table[f.k] = v;
-    if (section === "ground" && f.k === "type") {
-      for (const k of Object.keys(table)) if (!GROUND_KEYS[v].includes(k)) delete table[k];
+    if (isMotion(section) && f.k === "type") {
+      // The keys of another type go; the vertical table is not a key of [ground]'s type.
+      for (const k of Object.keys(table)) if (!GROUND_KEYS[v].includes(k) && k !== "vertical") delete table[k];
       buildForm();
     }
     recompute();
@@ -158,7 +180,14 @@ function field(section, f, value) {
 }
 
 function toggleSection(section, on) {
-  if (on) {
+  if (section === "ground.vertical") {
+    scenario.ground = scenario.ground || {};
+    if (on) scenario.ground.vertical = removed[section] || { ...VERTICAL_START };
+    else {
+      removed[section] = scenario.ground.vertical;
+      delete scenario.ground.vertical;
+    }
+  } else if (on) {
     scenario[section] = removed[section] || {};
   } else {
     removed[section] = scenario[section];
@@ -275,7 +304,8 @@ function loadRecord(name, text) {
   const ground = scenario.ground || {};
   const keep = {};
   for (const k of ["format", "scale", "units", "dt"]) if (ground.type === "record" && ground[k] !== undefined) keep[k] = ground[k];
-  scenario.ground = { type: "record", text, ...keep };
+  // A vertical motion stays: the record is the horizontal one.
+  scenario.ground = { type: "record", text, ...keep, ...(ground.vertical ? { vertical: ground.vertical } : {}) };
   recordName = name;
   $("record-name").textContent = `record: ${name} (${text.length} characters)`;
   buildForm();

@@ -72,10 +72,15 @@ export class Charts {
           ...common,
           title: "θ/α and ground acceleration (red lines: impacts; shaded: sliding)",
           scales: { x: { time: false }, g: { auto: true } },
-          series: [{}, { label: "θ/α", stroke: "#1f4e99", width: 1.5 }, { label: "a_g (g)", stroke: "rgba(60, 160, 60, 0.7)", width: 1, scale: "g" }],
+          series: [
+            {},
+            { label: "θ/α", stroke: "#1f4e99", width: 1.5 },
+            { label: "a_g (g)", stroke: "rgba(60, 160, 60, 0.7)", width: 1, scale: "g" },
+            { label: "a_v (g)", stroke: "rgba(204, 121, 167, 0.8)", width: 1, scale: "g", show: false },
+          ],
           axes: [axisX, { label: "θ/α" }, { scale: "g", side: 1, label: "a_g (g)", grid: { show: false } }],
         },
-        [[], [], []],
+        [[], [], [], []],
         this.container,
       ),
       new uPlot(
@@ -100,7 +105,10 @@ export class Charts {
     // a_g in g: the scenario's g (from the derived quantities), set by the page.
     const gravity = result.gravity;
     const ratio = alpha ? h.theta.map((x) => x / alpha) : h.theta.map(() => null);
-    this.plots[0].setData([h.t, ratio, h.ground_acc.map((a) => a / gravity)]);
+    // The vertical acceleration (with [ground.vertical]) on the same axis as a_g.
+    const vertical = h.ground_acc_v ? h.ground_acc_v.map((a) => a / gravity) : h.t.map(() => null);
+    this.plots[0].setData([h.t, ratio, h.ground_acc.map((a) => a / gravity), vertical]);
+    this.plots[0].setSeries(3, { show: !!h.ground_acc_v });
     this.plots[1].setData([h.t, h.slip]);
     this.plots[2].setData([h.t, h.top_dx]);
   }

@@ -162,6 +162,27 @@ def test_changing_an_input_changes_the_shown_summary(page):
     assert '"width":6' in page.evaluate("decodeURIComponent(location.hash)")
 
 
+def test_a_vertical_motion_switched_on_in_the_form(page, tmp_path):
+    """The [ground.vertical] box adds a 0.2 g harmonic at 8 Hz: the summary
+    shows its least effective gravity, g (1 − 0.2) (the input's closed form),
+    equal to the command's on the same scenario; changing the horizontal
+    type keeps it; switching it off removes the field."""
+    page.locator('[id="has-ground.vertical"]').check()
+    expect(page.locator('#summary tr[data-key="min_effective_gravity_m_s2"]')).to_have_count(1)
+    assert math.isclose(shown(page, "min_effective_gravity_m_s2"), 9.81 * 0.8, rel_tol=1e-14)
+    scenario = page.evaluate("JSON.parse(decodeURIComponent(location.hash.slice(1)))")
+    assert scenario["ground"]["vertical"] == {"type": "harmonic", "amplitude": 0.2, "frequency": 8.0}
+    file = tmp_path / "vertical.toml"
+    file.write_text(page.evaluate("s => window.rocking.toToml(s)", scenario))
+    expected = command_summary(file, tmp_path)
+    got = page.evaluate("s => window.rocking.run(s).summary", scenario)
+    assert without_wall_time(got) == without_wall_time(expected)
+    page.select_option('select[name="ground.type"]', "sine-pulse")
+    assert "vertical" in page.evaluate("JSON.parse(decodeURIComponent(location.hash.slice(1)))")["ground"]
+    page.locator('[id="has-ground.vertical"]').uncheck()
+    expect(page.locator('#summary tr[data-key="min_effective_gravity_m_s2"]')).to_have_count(0)
+
+
 def test_a_bad_value_shows_the_commands_line_not_a_blank_page(page):
     page.fill('input[name="tower.width"]', "-4")
     error = page.locator("#error")
