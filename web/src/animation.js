@@ -1,6 +1,6 @@
 // The tower rocking on the sliding church, to scale, driven by the history:
 // the church moves by the slip u, the tower turns about its pivot corner
-// (s b, 0) by θ (model.md, "Points of the tower": Rot(θ) (x − s b, y)).
+// (s b, 0) by θ (docs/src/model.md, "Points of the tower": Rot(θ) (x − s b, y)).
 // The church's outline is schematic (the model knows only its mass); the
 // tower's size, its rotation and the slip are true to scale.
 

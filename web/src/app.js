@@ -9,7 +9,7 @@ import examples from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
 
-// The form: every key of interface.md's scenario file, per section. `d` is the
+// The form: every key of the scenario file (docs/src/reference/keys.md), per section. `d` is the
 // default shown as a placeholder (an empty field is an absent key).
 const FIELDS = {
   tower: [

@@ -35,7 +35,7 @@ AXES = {"ground.frequency": {"from": 3.0, "to": 7.0, "steps": 100}, "ground.ampl
 def main():
     scenario = tomllib.loads((ROOT / "examples" / "tower-on-church.toml").read_text())
     scenario["simulation"]["duration"] = 20.0
-    # The same tower without the extra points (interface.md's scenario).
+    # The same tower without the extra points (the scenario of examples/tower-on-church.toml).
     scenario["tower"] = {"width": 4.0, "height": 12.0, "mass": 1.5e5}
     tmp = Path(tempfile.mkdtemp())
     case = tmp / "case.toml"

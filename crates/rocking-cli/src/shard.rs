@@ -1,4 +1,4 @@
-//! The manifest of a shard, `shard.json` (interface.md, "Sweeps beyond one
+//! The manifest of a shard, `shard.json` (README, "Studies beyond one
 //! machine"): which block of which study the folder's rows are.
 //!
 //! ```json

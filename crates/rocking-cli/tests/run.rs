@@ -117,7 +117,7 @@ fn the_summary_does_not_depend_on_the_output_spacing() {
 }
 
 /// The file the command writes is the library's summary of the same run (the
-/// keys interface.md requires are checked on that summary, in
+/// keys the outputs reference lists are checked on that summary, in
 /// rocking-scenario's tests), with the wall time filled in.
 #[test]
 fn summary_json_is_the_summary_of_the_same_run() {

@@ -83,7 +83,7 @@ fn merging_1_3_and_7_shards_gives_the_unsharded_file_byte_for_byte() {
         let parts = dir.path().join(format!("n{n}"));
         let dirs = shards(&file, &parts, n);
         for (k, d) in (1..=n).zip(&dirs) {
-            // The block of interface.md, computed here from its formula.
+            // The block of README, "Studies beyond one machine", computed here from its formula.
             let (first, end) = ((k - 1) * CASES / n, k * CASES / n);
             let m = manifest(d);
             assert_eq!((m["k"].as_u64(), m["n_shards"].as_u64()), (Some(k as u64), Some(n as u64)));

@@ -49,7 +49,7 @@ fn summary(dir: &std::path::Path) -> serde_json::Value {
 
 /// A constant `a_v = c` (a rectangular pulse longer than the run) gives the
 /// motion of a run with gravity `g + c` under the same horizontal
-/// acceleration in m/s² (model.md's closed form): θ and the slip agree at
+/// acceleration in m/s² (docs/src/model.md's closed form): θ and the slip agree at
 /// every output instant to 1e-7 of their peaks. 0.7 g with c = 0.2 g lifts
 /// the tower (0.7 > 1.2 tan α) and slides the church (0.7 > 1.2 μs). The
 /// horizontal amplitude in g of the second run is 0.7 · 9.81 / (9.81 + c),

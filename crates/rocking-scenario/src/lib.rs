@@ -1,12 +1,12 @@
 //! # rocking-scenario
 //!
-//! Scenario files of the `rocking` simulator (interface.md, "Scenario file"):
+//! Scenario files of the `rocking` simulator (docs/src/reference/keys.md):
 //! TOML (or JSON) in, a validated [`rocking::Model`], ground motion, initial
 //! state and settings out; a run gives an [`Outcome`] and its `summary.json`.
 //! No printing, no command line: the `rocking` binary and the bindings use it.
-//! A [`Sweep`] (interface.md, "Sweep file") runs every combination of values
+//! A [`Sweep`] (docs/src/reference/keys.md, "[sweep]") runs every combination of values
 //! of some keys in parallel, one [`Row`] per case in a fixed order. A
-//! [`Study`] (interface.md, "Fragility studies") runs a suite of records
+//! [`Study`] (README, "Fragility studies") runs a suite of records
 //! scaled to levels of an intensity measure on the same engine, counts the
 //! exceedances of its limit states ([`Tally`]) and fits lognormal fragility
 //! curves ([`fit_fragility`]).

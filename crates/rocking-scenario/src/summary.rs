@@ -1,5 +1,5 @@
-//! `summary.json`: the keys of the interface (interface.md, "Outputs of
-//! `run`"), `null` where a quantity does not exist (the tower's without a
+//! `summary.json`: the keys of the outputs reference
+//! (docs/src/reference/outputs.md), `null` where a quantity does not exist (the tower's without a
 //! tower, the slip's without a building), plus a few additions.
 
 use crate::columns::{fields_of, SUMMARY};

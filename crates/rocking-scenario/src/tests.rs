@@ -514,7 +514,7 @@ fn a_sweep_sets_dotted_keys_before_parsing() {
     assert_eq!(case.ground_info.frequency_hz, Some(3.0));
 }
 
-/// The keys interface.md requires in summary.json.
+/// The keys the outputs reference lists in summary.json.
 const REQUIRED: &[&str] = &[
     "alpha_rad",
     "R_m",

@@ -4,7 +4,7 @@
 //! functions that take and give JSON text, so that the page accepts exactly
 //! the keys of a scenario file and gives exactly the numbers and the error
 //! lines of the `rocking` command. `web/rocking.js` wraps them into
-//! `window.rocking` (interface.md, "The page in the browser").
+//! `window.rocking` (README, "The page in the browser").
 //!
 //! JSON text rather than JavaScript objects built field by field: one
 //! `JSON.parse` on the page is faster than thousands of calls across the

@@ -6,7 +6,7 @@
 //! `θ̇` falling from about 1e-3 to the rest threshold of 1e-9 rad/s, hundreds
 //! of impacts within a fraction of a second, each costing the integrator a
 //! restart and a few steps. Between impacts the motion is conservative
-//! (model.md, "Closed forms"), so each flight is known exactly:
+//! (docs/src/validation.md), so each flight is known exactly:
 //!
 //! - a flight that leaves `θ = 0` at the speed `ω = |θ̇|` rises to the apex
 //!   `ψm` (`ψ = s θ`, the lean towards the pivot) where the energy
@@ -16,7 +16,7 @@
 //!   reversible in time: `θ̈` depends on `θ` alone), so the next impact takes
 //!   `ω` to `r ω` exactly as the impact law says;
 //! - its duration is twice the time from `θ = 0` to the apex, the quadrature
-//!   of model.md, `T = 2 ∫₀^ψm dψ / sqrt(2p² (cos(α − ψm) − cos(α − ψ)))`.
+//!   of docs/src/model.md, `T = 2 ∫₀^ψm dψ / sqrt(2p² (cos(α − ψm) − cos(α − ψ)))`.
 //!
 //! **Why this is exact to the solver's tolerance.** The apex is solved by
 //! Newton to a few ulps. The quadrature is written in a form without
@@ -125,7 +125,7 @@ impl Kernel {
     }
 
     /// The duration of a free flight from `θ = 0` to the apex `ψm` and back
-    /// (s): model.md's quadrature
+    /// (s): docs/src/model.md's quadrature
     /// `T = 2 ∫₀^ψm dψ / sqrt(2p² (cos(α − ψm) − cos(α − ψ)))`.
     ///
     /// With `ψ = ψm (1 − v²)` and

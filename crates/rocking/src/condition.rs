@@ -1,4 +1,4 @@
-//! The transition conditions of model.md, "Regimes", each a function that is
+//! The transition conditions of docs/src/model.md, "Regimes and transitions", each a function that is
 //! negative while the regime holds and crosses zero upwards when it must
 //! change, evaluated on `f64` or, with its exact time derivative, on [`Jet`].
 

@@ -1,4 +1,4 @@
-//! The equations of the model, each written once (model.md, "Equations of
+//! The equations of the model, each written once (docs/src/model.md, "Equations of
 //! motion", "Regimes", "Checks the model must report", "Points of the tower"),
 //! generic over [`Real`] so that the right-hand side evaluates them on `f64`
 //! and event location and peak finding on [`Jet`](crate::jet::Jet) (value and
@@ -148,7 +148,7 @@ impl Kernel {
     }
 
     /// The uplift threshold of a standing tower: `|Ẍ_p| > g_e tan α` lifts it
-    /// (model.md, "Regimes": rest → rocking).
+    /// (docs/src/model.md, "Regimes and transitions": rest → rocking).
     #[inline(always)]
     pub(crate) fn uplift_threshold<T: Real>(&self, g_e: T) -> T {
         g_e * self.tan_alpha
@@ -239,7 +239,7 @@ impl Kernel {
     }
 
     /// The pivot reactions per unit tower mass, `(f_x, f_y) / m2` (m/s²)
-    /// (model.md, "Checks the model must report"); a standing tower has
+    /// (docs/src/model.md, "What the model does not cover"); a standing tower has
     /// `(Ẍ_p, g_e)`.
     #[inline(always)]
     pub(crate) fn pivot_reactions<T: Real>(&self, lean: Option<Lean<T>>, theta_dot: T, theta_ddot: T, acc_pivot: T, g_e: T) -> (T, T) {
@@ -251,7 +251,7 @@ impl Kernel {
         )
     }
 
-    /// Point kinematics (paper eqs. 7–13 with model.md's rotation): the
+    /// Point kinematics (paper eqs. 7–13 with docs/src/model.md's rotation): the
     /// horizontal displacement relative to the building and the absolute
     /// horizontal acceleration of the tower point `(x, y)` (tower coordinates,
     /// origin at the base centre), at rest `(0, Ẍ_p)`. Relative to the pivot

@@ -1,4 +1,4 @@
-//! Regime changes, each located in time by root finding (model.md, "Regimes").
+//! Regime changes, each located in time by root finding (docs/src/model.md, "Regimes and transitions").
 
 use crate::regime::{Regime, State};
 

@@ -1,4 +1,4 @@
-//! The impact of the tower on its new corner (model.md, "Impact on a building
+//! The impact of the tower on its new corner (docs/src/model.md, "Impact on a building
 //! that can slide").
 //!
 //! At `θ = 0` the pivot flips from `s` to `−s`, with impulsive reactions at the

@@ -7,7 +7,7 @@
 //! every regime change (uplift, impact, stick, slip, reversal, overturning)
 //! located by root finding on the integrator's dense output.
 //!
-//! The physics is that of `spec/model.md`: equations (T)–(B), sign conventions
+//! The physics is that of `docs/src/model.md`: equations (T)–(B), sign conventions
 //! (`θ > 0` leans towards `+x`; a positive ground acceleration drives `θ` and the
 //! slip `u` negative), regimes and transitions.
 //!

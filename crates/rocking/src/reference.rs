@@ -1,5 +1,5 @@
 //! Closed-form and quadrature solutions that a correct implementation
-//! reproduces (model.md, "Closed forms"), used by the tests and benchmarks.
+//! reproduces (docs/src/validation.md), used by the tests and benchmarks.
 
 use crate::body::{MassInput, Section, Tower, TowerGeometry};
 

@@ -1,4 +1,4 @@
-//! The regimes of the two bodies (model.md, "Regimes") and the state.
+//! The regimes of the two bodies (docs/src/model.md, "Regimes and transitions") and the state.
 
 /// Side of the base corner the tower pivots on, `s = sgn θ`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

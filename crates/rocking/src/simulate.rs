@@ -1,6 +1,6 @@
 //! The event-driven run: integrate the smooth motion of one regime, locate the
 //! instant a transition condition is met by root finding on the dense output,
-//! switch, and go on (model.md, "Regimes").
+//! switch, and go on (docs/src/model.md, "Regimes and transitions").
 //!
 //! Conditions (`condition.rs`) are negative while the regime holds and cross
 //! zero upwards when it must change. The signs of a condition at the two ends
@@ -134,7 +134,7 @@ static NO_MOTION: GroundMotion = GroundMotion::None;
 
 /// Runs `model` under the horizontal `ground` and, if given, the vertical
 /// ground acceleration `vertical` (`a_v`, positive upwards: the effective
-/// gravity is `g + a_v`, model.md, "Vertical ground acceleration"). Where
+/// gravity is `g + a_v`, docs/src/model.md, "Vertical ground acceleration"). Where
 /// `g + a_v <= 0` the run stops with [`Error::FreeFall`] at that instant.
 pub fn simulate_with_vertical(
     model: &Model,

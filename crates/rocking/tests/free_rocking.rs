@@ -1,4 +1,4 @@
-//! Free rocking on a fixed base (model.md, "Closed forms"): time to the first
+//! Free rocking on a fixed base (docs/src/validation.md): time to the first
 //! impact, restitution at every impact, energy between impacts, and rest in
 //! finite time.
 

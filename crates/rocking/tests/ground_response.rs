@@ -93,7 +93,7 @@ fn summary_does_not_depend_on_output_spacing() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
 
-    /// a_g → −a_g gives θ → −θ and u → −u (model.md, "Mirror symmetry"), for
+    /// a_g → −a_g gives θ → −θ and u → −u (docs/src/validation.md), for
     /// random harmonic inputs on a sliding building with either normal force.
     #[test]
     fn mirror_symmetry(amp in 0.2f64..1.5, f in 1.0f64..6.0, phase in 0.0f64..std::f64::consts::TAU, mu in 0.2f64..1.0, dynamic in proptest::bool::ANY) {

@@ -1,4 +1,4 @@
-//! The impact law on a building that can slide (model.md, "Impact on a
+//! The impact law on a building that can slide (docs/src/model.md, "Impact on a
 //! building that can slide"), against its closed forms.
 //!
 //! Before it, an impact kept `u̇` continuous and `θ̇⁺ = r θ̇⁻`, which creates

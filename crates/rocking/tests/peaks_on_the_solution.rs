@@ -5,7 +5,7 @@
 //! Checked against a second method: a dense sampling of the solution itself
 //! (the run's dense output through an observer, 2·10⁵ points) refined by
 //! golden-section search around the best sample of each step. The pivot
-//! reactions are computed here from model.md's formulas, independently of
+//! reactions are computed here from docs/src/model.md's formulas, independently of
 //! the engine's: `f_x/m2 = Ẍ_p + R (cos φ θ̈ + s sin φ θ̇²)`,
 //! `f_y/m2 = g + R (s sin φ θ̈ − cos φ θ̇²)`.
 #![allow(clippy::unwrap_used)]

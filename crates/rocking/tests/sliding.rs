@@ -55,7 +55,7 @@ fn sliding_block_under_rectangular_pulse() {
 /// impacts, horizontal momentum `M u̇ + m2 R cos φ θ̇` and energy
 /// `½ M u̇² + m2 R cos φ θ̇ u̇ + ½ I_O θ̇² + m2 g R cos φ` are constant (to the
 /// integration tolerance), for both normal-force laws. Momentum starts at zero
-/// and the impact law keeps it (model.md, "Impact on a building that can
+/// and the impact law keeps it (docs/src/model.md, "Impact on a building that can
 /// slide"), with `θ̇⁺/θ̇⁻ = (r I_O − m2² h²/M) / (I_O − m2² h²/M)`; energy only
 /// falls at an impact.
 #[test]
@@ -110,7 +110,7 @@ fn frictionless_building_conserves_momentum_and_energy() {
             if let Some(e) = impacts.get(k) {
                 let (before, after) = (momentum_energy(e.before).0, momentum_energy(e.after).0);
                 assert!((after - before).abs() <= 1e-10 * mr, "{normal:?}: momentum jumped by {:e}", after - before);
-                // model.md: θ̇⁺/θ̇⁻ = (r I_O − m2² h²/M) / (I_O − m2² h²/M), h = H/2.
+                // docs/src/model.md: θ̇⁺/θ̇⁻ = (r I_O − m2² h²/M) / (I_O − m2² h²/M), h = H/2.
                 let h = 0.5 * 2.0;
                 let coupling = (tower.mass() * h).powi(2) / total;
                 let ratio = (tower.restitution() * tower.inertia_pivot() - coupling) / (tower.inertia_pivot() - coupling);

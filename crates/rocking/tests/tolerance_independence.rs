@@ -1,4 +1,4 @@
-//! The answer must not depend on where the steps fall (model.md, "Regimes"):
+//! The answer must not depend on where the steps fall (docs/src/model.md, "Regimes and transitions"):
 //! over random scenarios (bodies, friction, both normal-force laws, harmonic
 //! and pulse inputs), a run at rtol 1e-7 and one at rtol 1e-12 pass through
 //! the same sequence of events (the tail of an impact cascade aside, whose

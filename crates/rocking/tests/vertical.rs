@@ -1,4 +1,4 @@
-//! Vertical ground acceleration (model.md, "Vertical ground acceleration"):
+//! Vertical ground acceleration (docs/src/model.md, "Vertical ground acceleration"):
 //! the closed forms a vertical input must reproduce. `a_v` enters only as the
 //! effective gravity `g + a_v`, so a constant `a_v = c` is a run under gravity
 //! `g + c`; `a_v` alone moves nothing; the thresholds follow `g + a_v(t)`; and
@@ -103,7 +103,7 @@ fn vertical_acceleration_alone_moves_nothing() {
 }
 
 /// A block alone on its foundation under a rectangular pulse `a0 > μs (g + c)`
-/// with a constant `a_v = c`: the closed form of model.md with `g + c` for `g`.
+/// with a constant `a_v = c`: the closed form of docs/src/model.md with `g + c` for `g`.
 /// The accelerations are piecewise constant, integrated exactly; 1e-12
 /// relative is rounding only.
 #[test]

@@ -1,5 +1,5 @@
 //! `rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]`: a
-//! fragility study (interface.md, "Fragility studies"). The study and its
+//! fragility study (README, "Fragility studies"). The study and its
 //! cases are `rocking_scenario::Study`, run on the sweep's engine; this file
 //! writes `stripes.csv` row by row (with a progress bar and a clean stop on
 //! Ctrl-C), then `fragility.csv` and `fractions.csv` from the exceedances

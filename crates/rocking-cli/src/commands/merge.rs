@@ -1,6 +1,6 @@
 //! `rocking merge DIR... --out DIR`: the shards of a study (folders written by
 //! `rocking sweep --shard K/N`) put back into one file, in case order,
-//! byte-identical to the file of the unsharded run (interface.md, "Sweeps
+//! byte-identical to the file of the unsharded run (README, "Studies
 //! beyond one machine").
 //!
 //! Everything is checked before a byte is kept: every folder's `shard.json`

@@ -3,7 +3,7 @@
 //! writes `sweep.csv` row by row, shows a progress bar on a terminal and stops
 //! cleanly on Ctrl-C. With `--shard K/N` it runs only the K-th of N
 //! contiguous blocks of cases and writes `shard.json` next to its rows, for
-//! `rocking merge` (interface.md, "Sweeps beyond one machine").
+//! `rocking merge` (README, "Studies beyond one machine").
 
 use super::rows::{write_rows, RowsFile, Written};
 use crate::format::sig;

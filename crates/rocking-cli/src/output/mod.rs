@@ -1,5 +1,5 @@
 //! The files of `rocking run`: `summary.json`, `history.csv`, `events.csv`
-//! (interface.md, "Outputs of `run`"). Numbers are written with every digit
+//! (docs/src/reference/outputs.md). Numbers are written with every digit
 //! (shortest round-trip form), never rounded.
 
 mod events;

@@ -1,5 +1,5 @@
 //! Names, symbols and units of the scenario keys a sweep varies, for axis
-//! labels and legends (interface.md, "Scenario file").
+//! labels and legends (docs/src/reference/keys.md).
 
 /// `(description, symbol, unit)` of the keys with a known meaning.
 const KEYS: &[(&str, &str, &str, &str)] = &[

@@ -1,5 +1,5 @@
 //! Figures of a run and of a sweep, each written as SVG and PNG
-//! (interface.md, `--plot`), drawn with plotters and an embedded font.
+//! (docs/src/reference/commands.md, `--plot`), drawn with plotters and an embedded font.
 //!
 //! A run: `theta` (θ/α and a_g against time, the paper's Figure 7) and `slip`
 //! (the building's slip and the top displacement). A sweep: `sweep_max_theta`

@@ -1,6 +1,6 @@
 //! Intensity measures of a record as the engine sees it: linearly
 //! interpolated between its samples, zero before the first and after the last
-//! (interface.md, "Fragility studies").
+//! (README, "Fragility studies").
 //!
 //! - PGA: the peak `|a_g|`, at a sample (a linear interpolant peaks at its ends).
 //! - PGV: the peak `|v|` of `v(t) = ∫₀ᵗ a_g dt`. On a sample interval

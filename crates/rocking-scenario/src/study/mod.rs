@@ -1,4 +1,4 @@
-//! Fragility studies (interface.md, "Fragility studies"): a scenario without
+//! Fragility studies (README, "Fragility studies"): a scenario without
 //! `[ground]` plus a `[study]` table naming a suite of records (glob
 //! patterns), an intensity measure and its levels, and limit states. Every
 //! (record, level) is one case: the record scaled so that its measure equals

@@ -1,5 +1,5 @@
 //! One axis of a sweep: a scalar scenario key and its values, given as a list
-//! or as an evenly spaced range (interface.md, "Sweep file"); the rules are on [`AxisSpec`].
+//! or as an evenly spaced range (docs/src/reference/keys.md, "[sweep]"); the rules are on [`AxisSpec`].
 
 use crate::error::{closest, ErrorKind, Fault};
 use crate::read::{as_number, with_article};
@@ -111,7 +111,7 @@ pub(crate) enum KeyType {
     Text,
 }
 
-/// How the values of one axis are given (interface.md, "Sweep file"):
+/// How the values of one axis are given (docs/src/reference/keys.md, "[sweep]"):
 ///
 /// - `[v1, v2, …]`: those values, in that order (numbers for a numeric key,
 ///   strings for a string key such as `building.normal_force`).

@@ -1,4 +1,4 @@
-//! Parametric sweeps (interface.md, "Sweep file"): a scenario plus a `[sweep]`
+//! Parametric sweeps (docs/src/reference/keys.md, "[sweep]"): a scenario plus a `[sweep]`
 //! table of dotted scenario keys and their values; every combination is one
 //! case, run in parallel, each giving one [`Row`] in a fixed order.
 //!

@@ -1,5 +1,5 @@
 //! Shards: a sweep cut into `N` contiguous blocks of cases, one per machine
-//! or batch job (interface.md, "Sweeps beyond one machine").
+//! or batch job (README, "Studies beyond one machine").
 //!
 //! Shard `K` of `N` (1 <= K <= N) of a sweep of `n` cases runs the cases
 //! `floor((K−1)·n/N) … floor(K·n/N) − 1`: the blocks are contiguous, in case

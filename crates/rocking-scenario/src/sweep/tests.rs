@@ -555,7 +555,7 @@ fn a_record_is_read_once_and_scaled_per_case() {
 
 #[test]
 fn shards_are_contiguous_blocks_covering_every_case_once() {
-    // The blocks of interface.md, floor((K−1)·n/N) .. floor(K·n/N), written out
+    // The blocks of `--shard K/N`, floor((K−1)·n/N) .. floor(K·n/N), written out
     // by hand for n = 10, N = 3 and n = 2, N = 3 (an empty block).
     let blocks = |total: usize, n: usize| (1..=n).map(|k| Shard::new(k, n).map(|s| s.cases(total))).collect::<Result<Vec<_>, _>>();
     assert_eq!(blocks(10, 3), Ok(vec![0..3, 3..6, 6..10]));

@@ -1,5 +1,5 @@
 //! The sliding base (the church without the tower): a rigid body translating on
-//! its foundation with Coulomb friction (model.md, equation (B)).
+//! its foundation with Coulomb friction (docs/src/model.md, equation (B)).
 
 use crate::error::{in_range, non_negative, Error, Parameter, MASS_RANGE};
 

@@ -1,5 +1,5 @@
 //! The rocking block (the tower above the springing level): mass, inertia about
-//! a base corner, `R`, `α` and restitution (model.md, "Bodies and symbols").
+//! a base corner, `R`, `α` and restitution (docs/src/model.md, "Bodies and symbols").
 
 use crate::error::{in_range, non_negative, positive, Error, Parameter, DENSITY_RANGE, INERTIA_RANGE, LENGTH_RANGE, MASS_RANGE};
 
@@ -61,7 +61,7 @@ fn length(parameter: Parameter, value: f64) -> Result<f64, Error> {
 
 impl Tower {
     /// A tower from its outer dimensions, section and mass or density
-    /// (model.md: solid `I_O = m (B² + H²) / 3`; hollow: outer prism minus inner
+    /// (docs/src/model.md: solid `I_O = m (B² + H²) / 3`; hollow: outer prism minus inner
     /// prism about the centroid, then `I_O = I_c + m R²`).
     pub fn from_geometry(geometry: &TowerGeometry) -> Result<Self, Error> {
         let width = length(Parameter::TowerWidth, geometry.width)?;
