@@ -335,6 +335,37 @@ const PEAK_MARGIN: f64 = 0.05;
 /// At most the roots a polynomial of degree 7 can have, plus the step's ends.
 const MAX_POINTS: usize = 9;
 
+/// The instants inside a step where a condition is known, in time order, with
+/// its values: the ends and the extrema between, at most `MAX_POINTS + 2`
+/// (no more can exist; one beyond is dropped). On the stack: no allocation
+/// in the inner loop.
+struct Points {
+    items: [(f64, f64); MAX_POINTS + 2],
+    len: usize,
+}
+
+impl Default for Points {
+    fn default() -> Self {
+        Self {
+            items: [(0.0, 0.0); MAX_POINTS + 2],
+            len: 0,
+        }
+    }
+}
+
+impl Points {
+    fn push(&mut self, p: (f64, f64)) {
+        if let Some(slot) = self.items.get_mut(self.len) {
+            *slot = p;
+            self.len += 1;
+        }
+    }
+
+    fn as_slice(&self) -> &[(f64, f64)] {
+        &self.items[..self.len]
+    }
+}
+
 /// The state of a run; the integrator carries the first `N` components of
 /// `(θ, θ̇, u, u̇)` (2 on a fixed base, 4 on a building).
 struct Run<'a, O: Observer, const N: usize> {
@@ -524,19 +555,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // monotone parts.
                 let yj = state_jets(&y, 0.0, 0.0);
                 let jet = |t: f64| c.value(&kernel, regime, piece.eval_jet(t), Jet::from(kernel.g) + vpiece.eval_jet(t), &yj);
-                let mut points = [(0.0, 0.0); MAX_POINTS + 2];
-                let mut m = 0;
-                let mut push = |p: (f64, f64)| {
-                    if m < points.len() {
-                        points[m] = p;
-                        m += 1;
-                    }
-                };
-                push((self.t, v0));
-                interior_extrema(self.t, jet(self.t), t1, jet(t1), &mut |t| jet(t), &mut |t, v| push((t, v)));
-                push((t1, v1));
+                let mut points = Points::default();
+                points.push((self.t, v0));
+                interior_extrema(self.t, jet(self.t), t1, jet(t1), &mut |t| jet(t), &mut |t, v| points.push((t, v)));
+                points.push((t1, v1));
                 let hit = first_crossing(
-                    &points[..m],
+                    points.as_slice(),
                     |ta, va, tb, vb| find_crossing(|t| value(c, t), ta, va, tb, vb, 0.0).tb,
                     |ta, tb| leaving_point(&|t| value(c, t), ta, tb),
                 );
@@ -698,25 +722,18 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let mut first: Option<(f64, Condition)> = None;
         for (i, &c) in list.iter().enumerate() {
             let (v0, v1) = (w0.conditions[i].v, w1.conditions[i].v);
-            let mut points = [(0.0, 0.0); MAX_POINTS + 2];
-            let mut m = 0;
-            let mut push = |p: (f64, f64)| {
-                if m < points.len() {
-                    points[m] = p;
-                    m += 1;
-                }
-            };
-            push((t0, v0));
+            let mut points = Points::default();
+            points.push((t0, v0));
             let s = pivot_sign(regime);
             let hit = if c.of_theta() {
                 for &(t, theta) in &theta_points[..n_theta] {
-                    push((t, c.value(&kernel, regime, 0.0, g, &[theta, 0.0, 0.0, 0.0])));
+                    points.push((t, c.value(&kernel, regime, 0.0, g, &[theta, 0.0, 0.0, 0.0])));
                 }
-                push((t1, v1));
+                points.push((t1, v1));
                 // c = sgn θ + offset, with θ̇ from the same dense output for Newton.
                 let (sgn, offset) = if c == Condition::Impact { (-s, 0.0) } else { (s, -FRAC_PI_2) };
                 first_crossing(
-                    &points[..m],
+                    points.as_slice(),
                     |ta, va, tb, vb| {
                         let Some(d) = &dense else { return tb };
                         let f = |t: f64| {
@@ -742,19 +759,19 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                             bracket.get_or_insert((t0 + xa * h, (t0 + xb * h).min(t1)));
                         });
                         if let Some((ta, tb)) = bracket {
-                            push((ta, value(ta)));
-                            push((tb, value(tb)));
+                            points.push((ta, value(ta)));
+                            points.push((tb, value(tb)));
                         }
                     }
                 } else if stick_examined && !c.of_theta() {
                     if let Some(d) = &dense {
                         let mut eval = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), list, d, t).conditions[i];
-                        interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, &mut |t, v| push((t, v)));
+                        interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, &mut |t, v| points.push((t, v)));
                     }
                 }
-                push((t1, v1));
+                points.push((t1, v1));
                 first_crossing(
-                    &points[..m],
+                    points.as_slice(),
                     |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
                     |ta, tb| dense.as_ref().and_then(|_| leaving_point(&value, ta, tb)),
                 )
