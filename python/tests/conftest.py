@@ -113,3 +113,30 @@ def flatten(obj: Dict[str, Any], prefix: str = "") -> Dict[str, Any]:
         elif not isinstance(value, list):
             out[name] = value
     return out
+
+
+class Interrupted(Exception):
+    """Raised by the SIGINT handler of :func:`seconds_to_interrupt` (in place of KeyboardInterrupt, which would stop pytest)."""
+
+
+def seconds_to_interrupt(call: Any, after: float = 0.3) -> float:
+    """Sends SIGINT to this process `after` seconds into `call()` and returns
+    how long `call` took to give up (it must raise the handler's exception)."""
+    import signal
+    import threading
+    import time
+
+    def handler(signum, frame):  # type: ignore[no-untyped-def]
+        raise Interrupted
+
+    previous = signal.signal(signal.SIGINT, handler)
+    timer = threading.Timer(after, os.kill, args=(os.getpid(), signal.SIGINT))
+    try:
+        t0 = time.perf_counter()
+        timer.start()
+        with pytest.raises(Interrupted):
+            call()
+        return time.perf_counter() - t0
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import rocking
 
-from conftest import EXAMPLES, cli_run, example_files, flatten
+from conftest import EXAMPLES, cli_run, example_files, flatten, seconds_to_interrupt
 
 SCENARIOS = example_files(sweeps=False)
 FLOAT_COLUMNS = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc"]
@@ -132,19 +132,12 @@ def test_derived_without_a_run() -> None:
     assert rocking.derived(EXAMPLES / "housner-block.toml")["slip_acceleration_g"] is None
 
 
-class Interrupted(Exception):
-    """Raised by the test's SIGINT handler (in place of KeyboardInterrupt, which would stop pytest)."""
-
-
 def test_ctrl_c_stops_a_run() -> None:
     """SIGINT during a long run: the handler's exception comes out of rocking.run within a fraction of a second.
 
     Were signals not checked while the run goes, the exception would come only
     after the whole run (several seconds), and the time check would fail.
     """
-    import os
-    import signal
-    import threading
     import time
 
     d = rocking.Scenario.from_toml(EXAMPLES / "tower-on-church.toml").to_dict()
@@ -155,18 +148,5 @@ def test_ctrl_c_stops_a_run() -> None:
     d["simulation"]["duration"] = max(2.0, 5.0 / per_second)  # about 5 s of work
     d["ground"]["duration"] = d["simulation"]["duration"]
 
-    def handler(signum, frame):  # type: ignore[no-untyped-def]
-        raise Interrupted
-
-    previous = signal.signal(signal.SIGINT, handler)
-    timer = threading.Timer(0.3, os.kill, args=(os.getpid(), signal.SIGINT))
-    try:
-        t0 = time.perf_counter()
-        timer.start()
-        with pytest.raises(Interrupted):
-            rocking.run(d)
-        elapsed = time.perf_counter() - t0
-    finally:
-        timer.cancel()
-        signal.signal(signal.SIGINT, previous)
+    elapsed = seconds_to_interrupt(lambda: rocking.run(d))
     assert elapsed < 2.0, f"the run stopped {elapsed:.2f} s after it started (about 5 s of work, SIGINT at 0.3 s)"

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 import rocking
 
-from conftest import EXAMPLES, example_files, run_cli
+from conftest import EXAMPLES, example_files, run_cli, seconds_to_interrupt
 
 CHURCH = EXAMPLES / "tower-on-church.toml"
 AXES = {"ground.frequency": {"from": 3.0, "to": 7.0, "steps": 5}, "ground.amplitude": [0.3, 0.5, 1.5]}
@@ -168,37 +168,17 @@ def test_the_gil_is_released_during_a_sweep() -> None:
     assert during > 0.2 * alone, f"{count} iterations in {elapsed[0]:.2f} s ({during:.0f}/s) against {alone:.0f}/s alone"
 
 
-class Interrupted(Exception):
-    """Raised by the test's SIGINT handler (in place of KeyboardInterrupt, which would stop pytest)."""
-
-
 def test_ctrl_c_stops_a_sweep() -> None:
     """SIGINT during a long sweep: the handler's exception comes out of rocking.sweep within a fraction of a second.
 
     Were signals not checked while the sweep runs, the exception would come only
     after the whole sweep (several seconds), and the time check would fail.
     """
-    import os
-    import signal
-
     s = rocking.Scenario.from_toml(CHURCH)
     start = time.perf_counter()
     rocking.sweep(s, {"ground.frequency": [5.0] * 20}, threads=1)
     per_case = (time.perf_counter() - start) / 20
     cases = int(5.0 / per_case)  # about 5 s of work
 
-    def handler(signum, frame):  # type: ignore[no-untyped-def]
-        raise Interrupted
-
-    previous = signal.signal(signal.SIGINT, handler)
-    timer = threading.Timer(0.3, os.kill, args=(os.getpid(), signal.SIGINT))
-    try:
-        t0 = time.perf_counter()
-        timer.start()
-        with pytest.raises(Interrupted):
-            rocking.sweep(s, {"ground.frequency": np.linspace(3.0, 7.0, cases)}, threads=1)
-        elapsed = time.perf_counter() - t0
-    finally:
-        timer.cancel()
-        signal.signal(signal.SIGINT, previous)
+    elapsed = seconds_to_interrupt(lambda: rocking.sweep(s, {"ground.frequency": np.linspace(3.0, 7.0, cases)}, threads=1))
     assert elapsed < 2.0, f"the sweep stopped {elapsed:.2f} s after it started (about 5 s of work, SIGINT at 0.3 s)"

@@ -21,7 +21,7 @@ import tomllib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from test_page import ARGS, BIN, CHROMIUM, DIST, ROOT  # noqa: E402
+from test_page import ARGS, BIN, CHROMIUM, DIST, ROOT, to_toml  # noqa: E402
 
 import http.server  # noqa: E402
 import threading  # noqa: E402
@@ -74,15 +74,6 @@ def native_case(case: Path, tmp: Path) -> float:
     """The command's own wall_time_s: the run, history and events included, files not."""
     subprocess.run([BIN, "run", str(case), "--out", str(tmp / "case")], check=True, capture_output=True)
     return json.loads((tmp / "case" / "summary.json").read_text())["wall_time_s"]
-
-
-def to_toml(table: dict) -> str:
-    lines = [f"{k} = {json.dumps(v)}" for k, v in table.items() if not isinstance(v, dict)]
-    for k, v in table.items():
-        if isinstance(v, dict):
-            lines.append(f"\n[{k}]")
-            lines += [f"{kk} = {json.dumps(vv)}" for kk, vv in v.items()]
-    return "\n".join(lines) + "\n"
 
 
 if __name__ == "__main__":

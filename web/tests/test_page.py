@@ -221,7 +221,7 @@ def test_a_record_file_loaded_in_the_page_runs_as_the_command_reads_it(page, tmp
     assert shown(page, "max_theta_over_alpha") == expected["max_theta_over_alpha"]
 
 
-def to_toml(table: dict, prefix="") -> str:
+def to_toml(table: dict) -> str:
     """A two-level TOML writer for the test's scenario (tomllib only reads)."""
     lines = [f"{k} = {json.dumps(v)}" for k, v in table.items() if not isinstance(v, dict)]
     for k, v in table.items():

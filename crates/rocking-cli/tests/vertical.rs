@@ -4,6 +4,7 @@
 //! its keys.
 
 use crate::util::{arg, read, rocking, tempdir, write};
+use std::path::{Path, PathBuf};
 
 /// The tower on a church that can slide (μs = 0.45, dynamic normal force), 3 s of
 /// a horizontal harmonic, and `vertical` (a `[ground.vertical]` table or
@@ -35,7 +36,7 @@ g = {g:?}
 }
 
 /// The columns of a history.csv: header and rows of numbers (text → NaN).
-fn history(dir: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
+fn history(dir: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     let text = read(&dir.join("history.csv"));
     let mut lines = text.lines();
     let header = lines.next().unwrap_or_default().split(',').map(String::from).collect();
@@ -43,8 +44,56 @@ fn history(dir: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
     (header, rows)
 }
 
-fn summary(dir: &std::path::Path) -> serde_json::Value {
+fn summary(dir: &Path) -> serde_json::Value {
     serde_json::from_str(&read(&dir.join("summary.json"))).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Writes `text` as `dir/name.toml` and runs it into `dir/name`, which must succeed.
+fn run_ok(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let file = write(dir, &format!("{name}.toml"), text);
+    let out = dir.join(name);
+    let r = rocking(&["run", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    out
+}
+
+/// Writes `text` as `dir/name.toml` and runs it, which must fail with exit
+/// code 1 and one line: the file and that line.
+fn run_fails(dir: &Path, name: &str, text: &str) -> (PathBuf, String) {
+    let file = write(dir, &format!("{name}.toml"), text);
+    let r = rocking(&["run", arg(&file), "--out", arg(&dir.join("o"))]);
+    assert_eq!(r.code, Some(1), "{r:?}");
+    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
+    let line = r.stderr.trim_end().to_string();
+    (file, line)
+}
+
+/// Runs the sweep file `text` and returns its column of the least effective gravity.
+fn least_gravity_of_sweep(dir: &Path, text: &str) -> Vec<f64> {
+    let file = write(dir, "sweep.toml", text);
+    let out = dir.join("o");
+    let r = rocking(&["sweep", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    let csv = read(&out.join("sweep.csv"));
+    let header: Vec<&str> = csv.lines().next().unwrap_or_default().split(',').collect();
+    let column = header
+        .iter()
+        .position(|c| *c == "min_effective_gravity_m_s2")
+        .unwrap_or_else(|| panic!("{header:?}"));
+    csv.lines()
+        .skip(1)
+        .map(|line| line.split(',').nth(column).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN))
+        .collect()
+}
+
+/// `g (1 − A)`, the least of `g + A g sin(…)` over whole periods, against
+/// each value of `found`: to 1e-14 m/s², a few ulps of g, the rounding of
+/// `A g` and of the sine at its trough.
+fn assert_least_gravity(found: &[f64], amplitudes: &[f64]) {
+    assert_eq!(found.len(), amplitudes.len());
+    for (g_min, a) in found.iter().zip(amplitudes) {
+        assert!((g_min - 9.81 * (1.0 - a)).abs() < 1e-14, "{g_min} for A = {a}");
+    }
 }
 
 /// A constant `a_v = c` (a rectangular pulse longer than the run) gives the
@@ -61,22 +110,11 @@ fn a_constant_vertical_acceleration_is_gravity_plus_it() {
     let dir = tempdir();
     let c_g = 0.2;
     let g = 9.81;
-    let lifted = write(
-        dir.path(),
-        "lifted.toml",
-        &scenario(
-            g,
-            0.7,
-            &format!("[ground.vertical]\ntype = \"rectangular-pulse\"\namplitude = {c_g}\nduration = 10.0\n"),
-        ),
-    );
-    let heavier = write(dir.path(), "heavier.toml", &scenario(g + c_g * g, 0.7 * g / (g + c_g * g), ""));
-    for f in [&lifted, &heavier] {
-        let r = rocking(&["run", arg(f), "--out", arg(&dir.path().join(f.file_stem().unwrap_or_default()))]);
-        assert_eq!(r.code, Some(0), "{r:?}");
-    }
-    let (header_a, a) = history(&dir.path().join("lifted"));
-    let (header_b, b) = history(&dir.path().join("heavier"));
+    let vertical = format!("[ground.vertical]\ntype = \"rectangular-pulse\"\namplitude = {c_g}\nduration = 10.0\n");
+    let lifted = run_ok(dir.path(), "lifted", &scenario(g, 0.7, &vertical));
+    let heavier = run_ok(dir.path(), "heavier", &scenario(g + c_g * g, 0.7 * g / (g + c_g * g), ""));
+    let (header_a, a) = history(&lifted);
+    let (header_b, b) = history(&heavier);
     assert_eq!(header_a.last().map(String::as_str), Some("ground_acc_v"));
     assert_eq!(header_a[..header_a.len() - 1], header_b[..], "the vertical column is the only one added");
     assert_eq!(a.len(), b.len());
@@ -91,9 +129,8 @@ fn a_constant_vertical_acceleration_is_gravity_plus_it() {
     }
     let v = column(&header_a, "ground_acc_v");
     assert!(a.iter().all(|r| (r[v] - c_g * g).abs() < 1e-15), "a_v = c throughout");
-    let s = summary(&dir.path().join("lifted"));
-    assert_eq!(s["min_effective_gravity_m_s2"].as_f64(), Some(g + c_g * g));
-    assert!(summary(&dir.path().join("heavier")).get("min_effective_gravity_m_s2").is_none());
+    assert_eq!(summary(&lifted)["min_effective_gravity_m_s2"].as_f64(), Some(g + c_g * g));
+    assert!(summary(&heavier).get("min_effective_gravity_m_s2").is_none());
 }
 
 /// `a_v = 1.2 g sin(2π t)` takes `g + a_v` to zero where `sin(2π t) = −1/1.2`:
@@ -103,15 +140,8 @@ fn a_constant_vertical_acceleration_is_gravity_plus_it() {
 #[test]
 fn free_fall_is_one_line_with_its_instant() {
     let dir = tempdir();
-    let file = write(
-        dir.path(),
-        "falls.toml",
-        &scenario(9.81, 0.1, "[ground.vertical]\ntype = \"harmonic\"\namplitude = 1.2\nfrequency = 1.0\n"),
-    );
-    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
-    assert_eq!(r.code, Some(1), "{r:?}");
-    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
-    let line = r.stderr.trim_end();
+    let text = scenario(9.81, 0.1, "[ground.vertical]\ntype = \"harmonic\"\namplitude = 1.2\nfrequency = 1.0\n");
+    let (file, line) = run_fails(dir.path(), "falls", &text);
     assert!(
         line.starts_with(&format!("error: {}: ground.vertical: the ground falls faster than gravity at t = ", arg(&file))),
         "{line}"
@@ -134,53 +164,23 @@ fn the_vertical_keys_sweep() {
     let dir = tempdir();
     let text = scenario(9.81, 0.3, "[ground.vertical]\ntype = \"harmonic\"\namplitude = 0.1\nfrequency = 5.0\n")
         + "\n[sweep]\n\"ground.vertical.amplitude\" = [0.1, 0.3, 0.5]\n";
-    let file = write(dir.path(), "sweep.toml", &text);
-    let out = dir.path().join("o");
-    let r = rocking(&["sweep", arg(&file), "--out", arg(&out)]);
-    assert_eq!(r.code, Some(0), "{r:?}");
-    let csv = read(&out.join("sweep.csv"));
-    let mut lines = csv.lines();
-    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
-    let column = header
-        .iter()
-        .position(|c| *c == "min_effective_gravity_m_s2")
-        .unwrap_or_else(|| panic!("{header:?}"));
-    for (line, amplitude) in lines.zip([0.1, 0.3, 0.5]) {
-        let g_min: f64 = line.split(',').nth(column).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN);
-        assert!((g_min - 9.81 * (1.0 - amplitude)).abs() < 1e-12, "{line}");
-    }
+    assert_least_gravity(&least_gravity_of_sweep(dir.path(), &text), &[0.1, 0.3, 0.5]);
 }
 
 /// A vertical record that cannot be read names `ground.vertical.file`.
 #[test]
 fn a_missing_vertical_record_names_its_key() {
     let dir = tempdir();
-    let file = write(
+    let (_, line) = run_fails(
         dir.path(),
-        "missing.toml",
+        "missing",
         &scenario(9.81, 0.3, "[ground.vertical]\ntype = \"record\"\nfile = \"nowhere.AT2\"\n"),
     );
-    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
-    assert_eq!(r.code, Some(1), "{r:?}");
-    assert_eq!(r.stderr.lines().count(), 1, "{r:?}");
-    assert!(r.stderr.contains(": ground.vertical.file: "), "{}", r.stderr);
+    assert!(line.contains(": ground.vertical.file: "), "{line}");
     // And a key of another type, inside the table, names the table's key.
-    let file = write(
-        dir.path(),
-        "wrong.toml",
-        &scenario(
-            9.81,
-            0.3,
-            "[ground.vertical]\ntype = \"sine-pulse\"\namplitude = 0.2\nfrequency = 3.0\nduration = 1.0\n",
-        ),
-    );
-    let r = rocking(&["run", arg(&file), "--out", arg(&dir.path().join("o"))]);
-    assert_eq!(r.code, Some(1), "{r:?}");
-    assert!(
-        r.stderr.contains(": ground.vertical.duration: does not apply to type = \"sine-pulse\""),
-        "{}",
-        r.stderr
-    );
+    let wrong = "[ground.vertical]\ntype = \"sine-pulse\"\namplitude = 0.2\nfrequency = 3.0\nduration = 1.0\n";
+    let (_, line) = run_fails(dir.path(), "wrong", &scenario(9.81, 0.3, wrong));
+    assert!(line.contains(": ground.vertical.duration: does not apply to type = \"sine-pulse\""), "{line}");
 }
 
 /// `[ground.vertical]` of type "none" is a vertical motion of zero: the
@@ -189,14 +189,10 @@ fn a_missing_vertical_record_names_its_key() {
 #[test]
 fn a_vertical_of_type_none_is_gravity_alone() {
     let dir = tempdir();
-    let none = write(dir.path(), "none.toml", &scenario(9.81, 0.7, "[ground.vertical]\ntype = \"none\"\n"));
-    let plain = write(dir.path(), "plain.toml", &scenario(9.81, 0.7, ""));
-    for f in [&none, &plain] {
-        let r = rocking(&["run", arg(f), "--out", arg(&dir.path().join(f.file_stem().unwrap_or_default()))]);
-        assert_eq!(r.code, Some(0), "{r:?}");
-    }
-    let (header, rows) = history(&dir.path().join("none"));
-    let (_, plain_rows) = history(&dir.path().join("plain"));
+    let none = run_ok(dir.path(), "none", &scenario(9.81, 0.7, "[ground.vertical]\ntype = \"none\"\n"));
+    let plain = run_ok(dir.path(), "plain", &scenario(9.81, 0.7, ""));
+    let (header, rows) = history(&none);
+    let (_, plain_rows) = history(&plain);
     assert_eq!(header.last().map(String::as_str), Some("ground_acc_v"));
     for (a, b) in rows.iter().zip(&plain_rows) {
         assert_eq!(a[a.len() - 1].to_bits(), 0.0f64.to_bits());
@@ -205,7 +201,7 @@ fn a_vertical_of_type_none_is_gravity_alone() {
             b.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
         );
     }
-    assert_eq!(summary(&dir.path().join("none"))["min_effective_gravity_m_s2"].as_f64(), Some(9.81));
+    assert_eq!(summary(&none)["min_effective_gravity_m_s2"].as_f64(), Some(9.81));
 }
 
 /// Axes on `ground.vertical` keys add the vertical motion to a base scenario
@@ -216,18 +212,5 @@ fn axes_can_add_the_vertical_motion() {
     let text = scenario(9.81, 0.3, "")
         + "\n[sweep]\n\"ground.vertical.type\" = [\"harmonic\"]\n\"ground.vertical.frequency\" = [8.0]\n\"ground.vertical.amplitude\" = [0.1, 0.3]\n";
     assert!(!text.contains("[ground.vertical]"));
-    let file = write(dir.path(), "axis.toml", &text);
-    let out = dir.path().join("o");
-    let r = rocking(&["sweep", arg(&file), "--out", arg(&out)]);
-    assert_eq!(r.code, Some(0), "{r:?}");
-    let csv = read(&out.join("sweep.csv"));
-    let header: Vec<&str> = csv.lines().next().unwrap_or_default().split(',').collect();
-    let column = header
-        .iter()
-        .position(|c| *c == "min_effective_gravity_m_s2")
-        .unwrap_or_else(|| panic!("{header:?}"));
-    for (line, amplitude) in csv.lines().skip(1).zip([0.1, 0.3]) {
-        let g_min: f64 = line.split(',').nth(column).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN);
-        assert!((g_min - 9.81 * (1.0 - amplitude)).abs() < 1e-12, "{line}");
-    }
+    assert_least_gravity(&least_gravity_of_sweep(dir.path(), &text), &[0.1, 0.3]);
 }
