@@ -357,7 +357,7 @@ function download(name) {
     const n = result.history.t.length;
     text = csv(cols, Array.from({ length: n }, (_, i) => cols.map((c) => result.history[c][i])));
   } else if (name === "events.csv") {
-    const cols = ["t", "kind", "theta", "theta_dot_before", "theta_dot_after", "slip_vel", "slip", "regime"];
+    const cols = result.eventColumns;
     text = csv(cols, result.events.map((e) => cols.map((c) => e[c])));
   }
   if (!text) return;

@@ -16,21 +16,18 @@ function call(f, ...args) {
   }
 }
 
-/** Runs a scenario: { summary, history, events }, as summary.json, history.csv (columns), events.csv (rows). */
+/** Runs a scenario: { summary, history, events, eventColumns }, as summary.json, history.csv (columns), events.csv (rows, and its header). */
 function run(scenario) {
   const start = performance.now();
   const output = call(engine.runColumns, JSON.stringify(scenario));
   try {
     // The float columns come as Float64Arrays (a copy, no printing and parsing), made plain arrays here.
-    const { summary, events, columns, regime } = JSON.parse(output.meta());
+    const { summary, events, event_columns, order, columns, text } = JSON.parse(output.meta());
+    // history.csv's columns in its order: the numeric ones from their typed arrays, the text ones (regime) as given.
     const history = {};
-    columns.forEach((name, i) => {
-      history[name] = Array.from(output.column(i));
-      // history.csv's order: regime after the 8 columns before the extra points.
-      if (i === 7) history.regime = regime;
-    });
+    for (const name of order) history[name] = name in text ? text[name] : Array.from(output.column(columns.indexOf(name)));
     summary.wall_time_s = (performance.now() - start) / 1000;
-    return { summary, history, events };
+    return { summary, history, events, eventColumns: event_columns };
   } finally {
     output.free();
   }

@@ -175,8 +175,15 @@ def test_a_vertical_motion_switched_on_in_the_form(page, tmp_path):
     file = tmp_path / "vertical.toml"
     file.write_text(page.evaluate("s => window.rocking.toToml(s)", scenario))
     expected = command_summary(file, tmp_path)
-    got = page.evaluate("s => window.rocking.run(s).summary", scenario)
-    assert without_wall_time(got) == without_wall_time(expected)
+    got = page.evaluate("s => window.rocking.run(s)", scenario)
+    assert without_wall_time(got["summary"]) == without_wall_time(expected)
+    # The history's columns and the events' keys are the command's files' headers, ground_acc_v included.
+    out = tmp_path / file.stem
+    history_header = (out / "history.csv").read_text().splitlines()[0].split(",")
+    assert "ground_acc_v" in history_header and list(got["history"]) == history_header
+    events_header = (out / "events.csv").read_text().splitlines()[0].split(",")
+    assert got["eventColumns"] == events_header
+    assert all(list(e) == events_header for e in got["events"])
     page.select_option('select[name="ground.type"]', "sine-pulse")
     assert "vertical" in page.evaluate("JSON.parse(decodeURIComponent(location.hash.slice(1)))")["ground"]
     page.locator('[id="has-ground.vertical"]').uncheck()

@@ -1,113 +1,111 @@
 //! The JSON the page receives: a run's summary, history and events, the
 //! derived quantities of `rocking check`, and the cells of a sweep row.
 //!
-//! Column and field names are those of the command's `history.csv`,
-//! `events.csv` (rocking-cli's `output/history.rs` and `output/events.rs`)
-//! and `summary.json` ([`rocking_scenario::summary_json`], used as is).
+//! The history's columns and the events' keys are read from the column
+//! descriptors the command's writers use (`rocking_scenario::columns`), in
+//! the order of `history.csv` and `events.csv`, optional ones (extra points,
+//! the vertical motion) included as the run's layout says; the summary is
+//! [`rocking_scenario::summary_json`] as is.
 
-use rocking::{History, NormalForce};
+use rocking::NormalForce;
+use rocking_scenario::columns::{history_header, Read, Value as CellValue, EVENTS, HISTORY, HISTORY_POINTS};
 use rocking_scenario::{record_format_name, summary_json, Case, Cell, Outcome};
 use serde_json::{json, Map, Value};
 
-/// The float columns of `history.csv` before `regime`.
-pub const HISTORY_COLUMNS: [&str; 8] = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc"];
-
 /// `{ summary, history, events }` of a run (`wall_time_s` 0: the page times the call).
 pub fn outcome_json(outcome: &Outcome) -> Value {
+    let columns = Columns::of(outcome);
     let mut history = Map::new();
-    if let Some(h) = &outcome.history {
-        let columns = Columns::of(h);
-        for (name, values) in columns.names.iter().zip(&columns.values) {
-            history.insert(name.clone(), values.iter().map(|x| json!(x)).collect());
-        }
-        history.insert("regime".into(), json!(columns.regime));
-        // `regime` comes after the 8 float columns of history.csv, before the points.
-        let mut ordered = Map::new();
-        for name in HISTORY_COLUMNS
-            .iter()
-            .copied()
-            .chain(["regime"])
-            .map(String::from)
-            .chain(columns.names.iter().skip(8).cloned())
-        {
-            if let Some(v) = history.remove(&name) {
-                ordered.insert(name, v);
-            }
-        }
-        history = ordered;
+    // The numeric columns come in `order` with the text ones left out.
+    let mut numbers = columns.values.iter();
+    for name in &columns.order {
+        let value = match columns.text.iter().find(|(n, _)| n == name) {
+            Some((_, text)) => text.clone(),
+            None => numbers.next().map_or(Value::Null, |values| json!(values)),
+        };
+        history.insert(name.clone(), value);
     }
     json!({ "summary": summary_json(outcome, 0.0), "history": history, "events": events(outcome) })
 }
 
-/// The summary, the events and the names of the history's columns as JSON
-/// (`columns`: the float columns in `history.csv` order, `regime` apart), and
-/// the float columns themselves, handed to JavaScript as `Float64Array`s
-/// (copying 10^5 numbers is far faster than printing and parsing them).
+/// The summary, the events and the history's layout as JSON (`order`: every
+/// column in `history.csv` order; `columns`: the numeric ones, in that order;
+/// `text`: the text columns by name), and the numeric columns themselves,
+/// handed to JavaScript as `Float64Array`s (copying 10^5 numbers is far faster
+/// than printing and parsing them).
 pub fn outcome_parts(outcome: &Outcome) -> (Value, Vec<Vec<f64>>) {
-    let columns = outcome.history.as_ref().map(Columns::of).unwrap_or_default();
+    let columns = Columns::of(outcome);
     let meta = json!({
         "summary": summary_json(outcome, 0.0),
         "events": events(outcome),
+        "event_columns": EVENTS.iter().filter(|c| (c.present)(&outcome.layout)).map(|c| c.name).collect::<Vec<_>>(),
+        "order": columns.order,
         "columns": columns.names,
-        "regime": columns.regime,
+        "text": columns.text.into_iter().collect::<Map<String, Value>>(),
     });
     (meta, columns.values)
 }
 
-/// The history as columns: the float columns of `history.csv` in its order
-/// (the 8 before `regime`, then `pK_dx`, `pK_abs_acc` per extra point), and `regime`.
+/// The history as columns, from the descriptors.
 #[derive(Debug, Default)]
 struct Columns {
+    /// Every column, in `history.csv` order.
+    order: Vec<String>,
+    /// The numeric columns, in that order, and their values.
     names: Vec<String>,
     values: Vec<Vec<f64>>,
-    regime: Vec<&'static str>,
+    /// The text columns (`regime`) by name.
+    text: Vec<(String, Value)>,
 }
 
 impl Columns {
-    fn of(history: &History) -> Self {
+    fn of(outcome: &Outcome) -> Self {
+        let Some(history) = &outcome.history else { return Self::default() };
+        let layout = &outcome.layout;
         let samples = &history.samples;
-        let getters: [fn(&rocking::Sample) -> f64; 8] = [
-            |s| s.t,
-            |s| s.ground_acc,
-            |s| s.state.theta,
-            |s| s.state.theta_dot,
-            |s| s.state.slip,
-            |s| s.state.slip_vel,
-            |s| s.top_dx,
-            |s| s.top_abs_acc,
-        ];
-        let mut names: Vec<String> = HISTORY_COLUMNS.iter().map(|c| c.to_string()).collect();
-        let mut values: Vec<Vec<f64>> = getters.iter().map(|get| samples.iter().map(get).collect()).collect();
-        let points = history.point_values.first().map_or(0, Vec::len);
-        for k in 0..points {
-            let column = |pick: fn(&(f64, f64)) -> f64| -> Vec<f64> { history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, pick)).collect() };
-            names.push(format!("p{}_dx", k + 1));
-            values.push(column(|v| v.0));
-            names.push(format!("p{}_abs_acc", k + 1));
-            values.push(column(|v| v.1));
+        let mut columns = Self {
+            order: history_header(HISTORY, HISTORY_POINTS, layout),
+            ..Self::default()
+        };
+        for c in HISTORY.iter().filter(|c| (c.present)(layout)) {
+            match c.read {
+                Read::Number(f) => {
+                    columns.names.push(c.name.to_string());
+                    columns.values.push(samples.iter().map(f).collect());
+                }
+                Read::Text(f) => columns.text.push((c.name.to_string(), json!(samples.iter().map(f).collect::<Vec<_>>()))),
+            }
         }
-        let regime = samples.iter().map(|s| s.motion.as_str()).collect();
-        Self { names, values, regime }
+        for k in 0..layout.points {
+            for p in HISTORY_POINTS {
+                columns.names.push(format!("p{}_{}", k + 1, p.suffix));
+                columns
+                    .values
+                    .push(history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, p.read)).collect());
+            }
+        }
+        columns
     }
 }
 
-/// The events as rows with the `events.csv` columns (`theta`, `slip_vel`,
-/// `slip` after the event; `regime` the combined motion after it).
+/// The events as rows with the `events.csv` columns.
 fn events(outcome: &Outcome) -> Value {
+    let columns: Vec<_> = EVENTS.iter().filter(|c| (c.present)(&outcome.layout)).collect();
     outcome
         .events
         .iter()
         .map(|e| {
-            json!({
-                "t": e.time,
-                "kind": e.kind.as_str(),
-                "theta": e.after.theta,
-                "theta_dot_before": e.before.theta_dot,
-                "theta_dot_after": e.after.theta_dot,
-                "slip_vel": e.after.slip_vel,
-                "slip": e.after.slip,
-                "regime": e.regime.motion().as_str(),
-            })
+            let row: Map<String, Value> = columns
+                .iter()
+                .map(|c| {
+                    let value = match c.read.value(e) {
+                        CellValue::Number(x) => json!(x),
+                        CellValue::Text(t) => json!(t),
+                    };
+                    (c.name.to_string(), value)
+                })
+                .collect();
+            Value::Object(row)
         })
         .collect()
 }

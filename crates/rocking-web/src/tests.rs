@@ -22,7 +22,10 @@ fn a_toml_file_through_json_runs_as_the_file_itself() {
     assert_eq!(out["summary"], summary_json(&direct, 0.0));
     let rows = direct.history.as_ref().map_or(0, |h| h.samples.len());
     let history = out["history"].as_object().cloned().unwrap_or_default();
-    // history.csv's 9 columns plus 2 per extra point (the example has 2 points).
+    // history.csv's header, as the command writes it from the same descriptors.
+    let header = rocking_scenario::columns::history_header(rocking_scenario::columns::HISTORY, rocking_scenario::columns::HISTORY_POINTS, &direct.layout);
+    assert_eq!(history.keys().cloned().collect::<Vec<_>>(), header);
+    // The example's 2 extra points: 2 columns each beyond the 9 of every run.
     assert_eq!(history.len(), 9 + 2 * 2);
     for (name, column) in &history {
         assert_eq!(column.as_array().map(Vec::len), Some(rows), "{name}");
@@ -85,16 +88,19 @@ fn the_typed_columns_hold_the_json_history() {
     let (meta, columns) = output::outcome_parts(&outcome);
     assert_eq!(meta["summary"], full["summary"]);
     assert_eq!(meta["events"], full["events"]);
-    assert_eq!(meta["regime"], full["history"]["regime"]);
+    assert_eq!(meta["text"]["regime"], full["history"]["regime"]);
     let names: Vec<&str> = meta["columns"]
         .as_array()
         .map(|a| a.iter().filter_map(Value::as_str).collect())
         .unwrap_or_default();
-    // The JSON history's keys are these names with `regime` after the 8 of history.csv.
-    let mut expected: Vec<&str> = names.clone();
-    expected.insert(8, "regime");
+    // The JSON history's keys are `order`, and the numeric names are `order` without `regime`.
+    let order: Vec<&str> = meta["order"]
+        .as_array()
+        .map(|a| a.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
     let keys: Vec<&str> = full["history"].as_object().map(|m| m.keys().map(String::as_str).collect()).unwrap_or_default();
-    assert_eq!(keys, expected);
+    assert_eq!(keys, order);
+    assert_eq!(names, order.iter().copied().filter(|n| *n != "regime").collect::<Vec<_>>());
     for (name, column) in names.iter().zip(&columns) {
         assert_eq!(&json!(column), &full["history"][*name], "{name}");
     }
