@@ -13,6 +13,9 @@ use toml::{Table, Value};
 /// What a scenario given as a dict is called in error messages (in place of a file name).
 pub const DICT_ORIGIN: &str = "<dict>";
 
+/// The keys that name a record file: the horizontal and the vertical motion's.
+const RECORD_KEYS: [&str; 2] = ["ground.file", "ground.vertical.file"];
+
 /// A validated scenario: a tower, a building or both, a ground motion, the
 /// initial state and the simulation settings, with the keys and sections of
 /// a scenario file of the `rocking` command (`[tower]`, `[building]`,
@@ -21,9 +24,6 @@ pub const DICT_ORIGIN: &str = "<dict>";
 /// Make one with `Scenario.from_toml(path)` or `Scenario.from_dict(d)`; every
 /// value is checked then, so a `Scenario` is always valid. A ground-motion
 /// record is read when the scenario is run.
-/// The keys that name a record file: the horizontal and the vertical motion's.
-const RECORD_KEYS: [&str; 2] = ["ground.file", "ground.vertical.file"];
-
 #[pyclass(name = "Scenario", module = "rocking", frozen)]
 pub struct PyScenario {
     /// The table as given (the sweep's base).

@@ -561,11 +561,11 @@ pub fn keys_markdown() -> String {
     let sweepable: Vec<String> = SWEEPABLE_KEYS.iter().map(|k| format!("`{k}`")).collect();
     let _ = writeln!(out, "{}.", sweepable.join(", "));
     let _ = writeln!(out);
+    let pairs: Vec<String> = crate::sweep::axis::ALTERNATIVES.iter().map(|(a, b)| format!("`{a}` and `{b}`")).collect();
     let _ = writeln!(
         out,
-        "An axis on one of two alternatives (`ground.amplitude` and `ground.amplitude_ratio`, `ground.frequency` \
-         and `ground.frequency_ratio`, `initial.theta` and `initial.theta_over_alpha`, `tower.mass` and \
-         `tower.density`) replaces the other in the base scenario; two axes on the same pair are an error."
+        "An axis on one of two alternatives ({}) replaces the other in the base scenario; two axes on the same pair are an error.",
+        pairs.join(", ")
     );
     out
 }

@@ -68,9 +68,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let ida_field = first.map_or("max_theta_over_alpha", |s| s.field.as_str()).to_string();
     let ida_column = header.iter().position(|h| *h == ida_field);
     let overturned_column = header.iter().position(|h| h == "overturned");
+    // Only for the figure: no curves without --plot.
     let mut ida: Vec<IdaCurve> = study
         .records()
         .iter()
+        .filter(|_| args.plot)
         .map(|r| IdaCurve {
             record: r.path.clone(),
             points: Vec::with_capacity(study.levels().len()),
@@ -97,8 +99,8 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
                 None => None,
             };
             let overturned = matches!(cell(overturned_column), Some(Cell::Bool(true)));
-            // Only for the figure: one point per case.
-            if let Some(curve) = ida.get_mut(row.index / levels).filter(|_| args.plot) {
+            // One point per case.
+            if let Some(curve) = ida.get_mut(row.index / levels) {
                 curve.points.push((study.levels()[row.index % levels], value, overturned));
             }
         },

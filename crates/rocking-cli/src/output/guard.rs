@@ -31,26 +31,28 @@ fn same_file(_: &Path, _: &Path) -> bool {
     false
 }
 
-/// Whether `path` is one of `inputs`.
-pub fn is_input(path: &Path, inputs: &[PathBuf]) -> bool {
+/// The input `path` is, if it is one of `inputs`.
+fn matching_input<'a>(path: &Path, inputs: &'a [PathBuf]) -> Option<&'a PathBuf> {
     let target = canonical(path);
     inputs
         .iter()
-        .any(|input| target.is_some() && target == canonical(input) || same_file(path, input))
+        .find(|input| target.is_some() && target == canonical(input) || same_file(path, input))
+}
+
+/// Whether `path` is one of `inputs`.
+pub fn is_input(path: &Path, inputs: &[PathBuf]) -> bool {
+    matching_input(path, inputs).is_some()
 }
 
 /// Fails if any of `outputs` is one of `inputs`.
 pub fn refuse_to_overwrite_inputs(outputs: &[PathBuf], inputs: &[PathBuf]) -> anyhow::Result<()> {
     for output in outputs {
-        let target = canonical(output);
-        for input in inputs {
-            if target.is_some() && target == canonical(input) || same_file(output, input) {
-                bail!(
-                    "refusing to write {}: it is the input file {} (choose another --out)",
-                    output.display(),
-                    input.display()
-                );
-            }
+        if let Some(input) = matching_input(output, inputs) {
+            bail!(
+                "refusing to write {}: it is the input file {} (choose another --out)",
+                output.display(),
+                input.display()
+            );
         }
     }
     Ok(())
