@@ -81,10 +81,7 @@ impl Condition {
         let s = pivot_sign(regime);
         match self {
             Condition::UpliftNegative | Condition::UpliftPositive => {
-                let acc_pivot = match regime.building {
-                    BuildingRegime::Stick => a_g,
-                    BuildingRegime::Slip(dir) => kernel.resting_slide(dir.sign(), g_e),
-                };
+                let acc_pivot = kernel.pivot_acceleration_at_rest(regime.building, a_g, g_e);
                 let toward = if self == Condition::UpliftNegative { acc_pivot } else { -acc_pivot };
                 toward - kernel.uplift_threshold(g_e)
             }

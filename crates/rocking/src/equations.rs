@@ -162,6 +162,16 @@ impl Kernel {
         g_e * (-self.mu_k * sigma)
     }
 
+    /// The pivot line's acceleration `Ẍ_p` under a standing tower: the ground's
+    /// on a stuck building (or none), [`Kernel::resting_slide`] on a sliding one.
+    #[inline(always)]
+    pub(crate) fn pivot_acceleration_at_rest<T: Real>(&self, building: BuildingRegime, a_g: T, g_e: T) -> T {
+        match building {
+            BuildingRegime::Stick => a_g,
+            BuildingRegime::Slip(dir) => self.resting_slide(dir.sign(), g_e),
+        }
+    }
+
     /// The stick demand: the friction force `F_req` that keeps the building stuck
     /// (`ü = 0`, so `Ẍ_p = a_g`), (B) with `θ̈` from (T), and the normal force (N)
     /// at that instant. The building slips when `|F_req| > μs N`.

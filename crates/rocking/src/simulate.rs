@@ -332,22 +332,26 @@ fn first_crossing(points: &[(f64, f64)], mut locate: impl FnMut(f64, f64, f64, f
 /// conditions are never pruned this way.
 const PEAK_MARGIN: f64 = 0.05;
 
-/// At most the roots a polynomial of degree 7 can have, plus the step's ends.
-const MAX_POINTS: usize = 9;
+/// The most roots a component of the dense output (a polynomial of degree 7) can have.
+const MAX_ROOTS: usize = 7;
 
-/// The instants inside a step where a condition is known, in time order, with
-/// its values: the ends and the extrema between, at most `MAX_POINTS + 2`
-/// (no more can exist; one beyond is dropped). On the stack: no allocation
-/// in the inner loop.
+/// Room for a step's ends and, between them, a bracket (two points) around
+/// each root: what a condition's points can hold.
+const MAX_POINTS: usize = 2 * MAX_ROOTS + 2;
+
+/// Instants inside a step with a value each, in time order: a condition's
+/// ends and extrema, or the extremes of θ. Never more than [`MAX_POINTS`]
+/// can exist (one beyond would be dropped). On the stack: no allocation in
+/// the inner loop.
 struct Points {
-    items: [(f64, f64); MAX_POINTS + 2],
+    items: [(f64, f64); MAX_POINTS],
     len: usize,
 }
 
 impl Default for Points {
     fn default() -> Self {
         Self {
-            items: [(0.0, 0.0); MAX_POINTS + 2],
+            items: [(0.0, 0.0); MAX_POINTS],
             len: 0,
         }
     }
@@ -695,8 +699,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let dense: Option<DenseOutput<N>> = need_dense.then(|| self.stepper.dense(&mut rhs));
 
         // The extremes of θ inside the step: the roots of θ̇.
-        let mut theta_points = [(0.0, 0.0); MAX_POINTS];
-        let mut n_theta = 0;
+        let mut theta_points = Points::default();
         if let (true, Some(d)) = (theta_roots, &dense) {
             bernstein::isolate(&bernstein::coefficients(d, 1, 0.0), &mut |xa, xb| {
                 let (ta, tb) = (t0 + xa * h, (t0 + xb * h).min(t1));
@@ -711,10 +714,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 } else {
                     0.5 * (ta + tb)
                 };
-                if n_theta < MAX_POINTS {
-                    theta_points[n_theta] = (root, d.state(root)[0]);
-                    n_theta += 1;
-                }
+                theta_points.push((root, d.state(root)[0]));
             });
         }
 
@@ -726,7 +726,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             points.push((t0, v0));
             let s = pivot_sign(regime);
             let hit = if c.of_theta() {
-                for &(t, theta) in &theta_points[..n_theta] {
+                for &(t, theta) in theta_points.as_slice() {
                     points.push((t, c.value(&kernel, regime, 0.0, g, &[theta, 0.0, 0.0, 0.0])));
                 }
                 points.push((t1, v1));
@@ -785,7 +785,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let t_stop = first.map_or(t1, |(tb, _)| tb);
 
         // Peaks inside the step, up to the transition.
-        for &(t, theta) in &theta_points[..n_theta] {
+        for &(t, theta) in theta_points.as_slice() {
             if t <= t_stop {
                 self.tracker.theta(theta);
             }
@@ -857,7 +857,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let s = pivot.sign();
         let omega = s * self.y[1];
         let input_over = |segment: &Segment| segment.kink == f64::INFINITY && matches!(segment.piece, Piece::Constant(a) if a == 0.0);
-        if self.y[0] != 0.0 || omega <= 0.0 || !input_over(&self.segment) || (self.has_vertical && !input_over(&self.vsegment)) {
+        if self.y[0] != 0.0 || omega <= 0.0 || !input_over(&self.segment) || !input_over(&self.vsegment) {
             return None;
         }
         let flight = self.kernel.free_flight(s, self.t, omega, self.y[2], 0.1 * self.rtol.sqrt())?;
@@ -1056,10 +1056,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             self.y[1] = 0.0;
             self.regime.tower = TowerRegime::Rest;
             let g_e = self.g_e(self.t);
-            let acc_pivot = match self.regime.building {
-                BuildingRegime::Stick => self.a_g(self.t),
-                BuildingRegime::Slip(dir) => self.kernel.resting_slide(dir.sign(), g_e),
-            };
+            let acc_pivot = self.kernel.pivot_acceleration_at_rest(self.regime.building, self.a_g(self.t), g_e);
             // If it would lift at once, `settle` switches to rocking: no rest in between.
             if acc_pivot.abs() <= self.kernel.uplift_threshold(g_e) {
                 self.emit(EventKind::Rest, before)?;
