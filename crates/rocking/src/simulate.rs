@@ -291,6 +291,17 @@ fn watched_on<const N: usize>(kernel: &Kernel, regime: Regime, pieces: (&Piece, 
     watched(kernel, regime, pieces.0, pieces.1, list, t, &wide(&d.state(t)), None)
 }
 
+/// The one condition `c` with its time derivative at `t` on a step's dense
+/// output (root finding on it needs nothing else [`watched`] computes).
+#[inline]
+fn condition_on<const N: usize>(kernel: &Kernel, regime: Regime, pieces: (&Piece, &Piece), c: Condition, d: &DenseOutput<N>, t: f64) -> Jet {
+    let y = wide(&d.state(t));
+    let a_g = pieces.0.eval_jet(t);
+    let g_e = Jet::from(kernel.g) + pieces.1.eval_jet(t);
+    let acc = kernel.accelerations(regime, a_g.v, g_e.v, y[0], y[1]);
+    c.value(kernel, regime, a_g, g_e, &state_jets(&y, acc.theta, acc.slip))
+}
+
 /// The accelerations in a right-hand side `f = (θ̇, θ̈, u̇, ü)`.
 #[inline(always)]
 fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
@@ -765,7 +776,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     }
                 } else if stick_examined && !c.of_theta() {
                     if let Some(d) = &dense {
-                        let mut eval = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), list, d, t).conditions[i];
+                        let mut eval = |t: f64| condition_on(&kernel, regime, (&piece, &vpiece), c, d, t);
                         interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, &mut |t, v| points.push((t, v)));
                     }
                 }
