@@ -52,13 +52,9 @@ fn outer_key(key: &str) -> String {
     plain.split('.').take(2).collect::<Vec<_>>().join(".")
 }
 
+/// The table of a mapping's items at `depth` (checked by [`value_of`], the
+/// only way in below the top).
 fn table_of_items(items: Vec<(Bound<'_, PyAny>, Bound<'_, PyAny>)>, prefix: &str, depth: usize) -> Result<Table, Unsupported> {
-    if depth > MAX_DEPTH {
-        return Err(Unsupported {
-            key: outer_key(prefix),
-            reason: format!("nested more than {MAX_DEPTH} levels deep (a dict or list that contains itself?)"),
-        });
-    }
     let mut table = Table::new();
     for (key, value) in items {
         let Ok(key) = key.cast::<PyString>().map(|s| s.to_string()) else {

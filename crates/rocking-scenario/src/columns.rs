@@ -672,10 +672,14 @@ mod tests {
     };
 
     fn outcome(points: &str) -> Outcome {
-        let text = format!(
-            "[tower]\nwidth = 4\nheight = 12.0\nmass = 1.5e5\n{points}\n[ground]\ntype = \"sine-pulse\"\namplitude = 0.6\nfrequency = 1.0\n[simulation]\nduration = 0.5\noutput_dt = 0.05\n"
-        );
-        let case = Scenario::from_toml_str(&text, Path::new("t.toml"))
+        outcome_of(&format!("[tower]\nwidth = 4\nheight = 12.0\nmass = 1.5e5\n{points}\n{GROUND}"))
+    }
+
+    /// The ground motion and simulation of every test outcome.
+    const GROUND: &str = "[ground]\ntype = \"sine-pulse\"\namplitude = 0.6\nfrequency = 1.0\n[simulation]\nduration = 0.5\noutput_dt = 0.05\n";
+
+    fn outcome_of(text: &str) -> Outcome {
+        let case = Scenario::from_toml_str(text, Path::new("t.toml"))
             .and_then(|s| s.build())
             .unwrap_or_else(|e| panic!("{e}"));
         case.run(RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"))
@@ -728,8 +732,14 @@ mod tests {
 
     #[test]
     fn each_field_kind_is_that_of_its_cells() {
-        // A run with a tower and one without a building (null slip quantities).
-        for o in [outcome(""), outcome("points = [[0.0, 6.0]]")] {
+        // A tower without a building (null slip quantities), with extra points,
+        // a building without a tower (null tower quantities), and a vertical motion.
+        let building = format!("[building]\nmass = 2.0e6\nmu_static = 0.3\n{GROUND}");
+        let vertical =
+            format!("[tower]\nwidth = 4\nheight = 12.0\nmass = 1.5e5\n{GROUND}[ground.vertical]\ntype = \"harmonic\"\namplitude = 0.1\nfrequency = 5.0\n");
+        let outcomes = [outcome(""), outcome("points = [[0.0, 6.0]]"), outcome_of(&building), outcome_of(&vertical)];
+        assert!(outcomes[2].derived.alpha.is_none() && outcomes[3].layout.vertical);
+        for o in outcomes {
             for f in SUMMARY {
                 let cell = (f.read)(&o);
                 let ok = match f.kind {

@@ -181,9 +181,10 @@ fn parse_motion(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fault> 
         valid.push(VERTICAL);
     }
     let valid = &valid[..];
-    let all_keys = crate::keys::section_keys("ground");
+    // A key of another type is "not applicable"; any other unknown key is refused below.
+    let type_keys: Vec<&str> = KINDS.iter().flat_map(|(_, k)| k.keys().iter().copied()).collect();
     for key in s.keys() {
-        if all_keys.contains(&key) && !valid.contains(&key) && (horizontal || key != VERTICAL) {
+        if type_keys.contains(&key) && !valid.contains(&key) {
             return Err(Fault::new(
                 s.key(key),
                 ErrorKind::NotApplicable(format!("does not apply to type = \"{}\" (its keys: {})", kind.as_str(), valid.join(", "))),
@@ -504,9 +505,8 @@ pub const MAX_PEAK_G: f64 = 100.0;
 pub const MAX_RECORD_BYTES: u64 = 640 << 20;
 
 /// The text of a record file, refusing what is not a regular file (a device
-/// like `/dev/urandom` never ends) or is larger than [`MAX_RECORD_BYTES`].
-/// The reason is returned on its own, without the OS error number.
-/// The text of a record file, or why not and the OS error code if any.
+/// like `/dev/urandom` never ends) or is larger than [`MAX_RECORD_BYTES`]; or
+/// why not (without the OS error number) and the OS error code if any.
 fn read_text(path: &Path) -> Result<String, (String, Option<i32>)> {
     use std::io::Read;
     let io = |e: std::io::Error| (io_reason(&e), e.raw_os_error());

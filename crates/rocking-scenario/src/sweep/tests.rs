@@ -3,7 +3,6 @@
 //! stop the others, dimensionless axes, cancellation, and every class of error
 //! in a sweep file.
 
-use super::axis::STRING_KEYS;
 use super::*;
 use crate::summary_fields;
 use crate::{summary_json, summary_scalars};
@@ -492,23 +491,6 @@ fn csv_text_is_quoted_only_when_needed() {
         ],
     };
     assert_eq!(row.to_csv_line(), "3.1,-2,true,,1e-10,5.0");
-}
-
-#[test]
-fn the_sweepable_keys_are_the_scalar_keys_of_every_section() {
-    let mut expected: Vec<String> = vec!["name".into()];
-    for section in crate::SECTIONS {
-        let keys = crate::keys::section_keys(section);
-        expected.extend(keys.iter().filter(|k| !["points", "vertical"].contains(k)).map(|k| format!("{section}.{k}")));
-    }
-    // The keys of [ground] again in its table `vertical`.
-    let ground = crate::keys::section_keys("ground");
-    expected.extend(ground.iter().filter(|k| **k != "vertical").map(|k| format!("ground.vertical.{k}")));
-    let mut actual: Vec<String> = SWEEPABLE_KEYS.iter().map(|k| k.to_string()).collect();
-    expected.sort();
-    actual.sort();
-    assert_eq!(actual, expected);
-    assert!(STRING_KEYS.iter().all(|k| SWEEPABLE_KEYS.contains(k)));
 }
 
 /// A sweep over the scale of one record reads the file once: once the sweep
