@@ -493,8 +493,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let stop = self.vsegment.kink.min(self.end);
         let mut t = self.t;
         loop {
-            let piece = self.vertical.segment(t).piece;
-            let tb = self.vertical.segment(t).end.min(stop);
+            let segment = self.vertical.segment(t);
+            let (piece, tb) = (segment.piece, segment.end.min(stop));
             let value = |t: f64| -(g + piece.eval(t));
             let (va, vb) = (value(t), value(tb));
             if va >= 0.0 {
@@ -695,7 +695,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         // The demand |f_x| / f_y grows without bound as f_y falls towards zero (a
         // tower about to fly or overturn): no pruning where f_y is below g / 2.
         let low_fy = w0.fy.v.min(w1.fy.v) < 0.5 * g;
-        let ratio_inside = rocking
+        // Once f_y has reached zero the demand is unbounded and the uplift
+        // known: neither can change any more.
+        let reaction_open = rocking && !summary.tower_uplift_detected;
+        let ratio_inside = reaction_open
             && w0.fy.v > 0.0
             && w1.fy.v > 0.0
             && (if low_fy {
@@ -703,7 +706,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             } else {
                 near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand)
             });
-        let fy_inside = rocking && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g);
+        let fy_inside = reaction_open && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g);
         let stick_inside = stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h));
         let watched_inside = top_inside || ratio_inside || fy_inside || stick_inside;
         let need_dense = theta_roots || slip_roots || crossing_at_end || watched_inside || self.observer.wants_steps();
@@ -731,11 +734,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
         // The first transition in the step.
         let mut first: Option<(f64, Condition)> = None;
+        let s = pivot_sign(regime);
         for (i, &c) in list.iter().enumerate() {
             let (v0, v1) = (w0.conditions[i].v, w1.conditions[i].v);
             let mut points = Points::default();
             points.push((t0, v0));
-            let s = pivot_sign(regime);
             let hit = if c.of_theta() {
                 for &(t, theta) in theta_points.as_slice() {
                     points.push((t, c.value(&kernel, regime, 0.0, g, &[theta, 0.0, 0.0, 0.0])));
