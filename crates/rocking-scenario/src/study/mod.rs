@@ -123,7 +123,7 @@ impl Study {
                 },
             )));
         }
-        let template = summary_template().map_err(fail)?;
+        let template = summary_template();
         let measure = parse_measure(&study).map_err(fail)?;
         let levels = parse_levels(&study).map_err(fail)?;
         let free_after = match study.get("free_after") {

@@ -120,99 +120,97 @@ pub(crate) fn run_cases<C: Cases, E>(
     cancel: &AtomicBool,
     mut on_row: impl FnMut(Row) -> Result<(), E>,
 ) -> Result<Finished, RunError<E>> {
-    {
-        let end = cases.end.min(this.len());
-        let first = cases.start.min(end);
-        let count = end - first;
-        let workers = match threads {
-            Some(n) if n > 0 => n,
-            _ => default_threads(),
-        }
-        .clamp(1, count.max(1));
-        // The calling thread is one of the workers; the pool holds the others.
-        // (A pool thread without a case to run would spin for a while looking
-        // for work, and take time slices from those running cases.)
-        let pool = rayon::ThreadPoolBuilder::new()
-            // (`0` would mean one per core: a lone worker gets a pool of one idle thread.)
-            .num_threads((workers - 1).max(1))
-            .thread_name(|i| format!("sweep-{}", i + 1))
-            .build()?;
-        let window = WINDOW.max(64 * workers);
-        let next = AtomicUsize::new(first);
-        let stop = AtomicBool::new(false);
-        let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
-        // The index of the next row to pass on, and a signal when it grows.
-        let passed = (Mutex::new(first), Condvar::new());
-        let (sender, receiver) = mpsc::channel::<Row>();
-
-        let (written, failed, result) = pool.in_place_scope(|scope| {
-            // The calling thread runs cases too (it would otherwise wake for
-            // every row and take a core's time slices from the workers).
-            for _ in 1..workers {
-                let sender = sender.clone();
-                let (next, passed, halted) = (&next, &passed, &halted);
-                scope.spawn(move |_| {
-                    while !halted() {
-                        let index = next.fetch_add(1, Ordering::Relaxed);
-                        if index >= end {
-                            break;
-                        }
-                        let (lock, signal) = passed;
-                        let mut done = lock.lock().unwrap_or_else(PoisonError::into_inner);
-                        while index >= *done + window {
-                            if halted() {
-                                return;
-                            }
-                            done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
-                        }
-                        drop(done);
-                        if sender.send(guarded_case(this, index)).is_err() {
-                            break;
-                        }
-                    }
-                });
-            }
-            drop(sender);
-            let mut order = Reorder {
-                waiting: BTreeMap::new(),
-                next: first,
-                failed: 0,
-                result: Ok(()),
-                passed: &passed,
-            };
-            // Run cases here while there are any, passing on what the workers
-            // sent in between; a case beyond the window waits for rows first.
-            while !halted() {
-                order.take(receiver.try_iter(), &mut on_row, &stop);
-                let index = next.fetch_add(1, Ordering::Relaxed);
-                if index >= end {
-                    break;
-                }
-                while index >= order.next + window && !halted() {
-                    match receiver.recv_timeout(POLL) {
-                        Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
-                        Err(mpsc::RecvTimeoutError::Timeout) => {}
-                        // No worker left: every earlier row is in.
-                        Err(mpsc::RecvTimeoutError::Disconnected) => break,
-                    }
-                }
-                if halted() {
-                    break;
-                }
-                order.take(std::iter::once(guarded_case(this, index)), &mut on_row, &stop);
-            }
-            // The workers' last rows; the loop ends when the last worker does.
-            order.take(receiver.iter(), &mut on_row, &stop);
-            (order.next - first, order.failed, order.result)
-        });
-        result?;
-        Ok(Finished {
-            written,
-            failed,
-            cancelled: written < count,
-            threads: workers,
-        })
+    let end = cases.end.min(this.len());
+    let first = cases.start.min(end);
+    let count = end - first;
+    let workers = match threads {
+        Some(n) if n > 0 => n,
+        _ => default_threads(),
     }
+    .clamp(1, count.max(1));
+    // The calling thread is one of the workers; the pool holds the others.
+    // (A pool thread without a case to run would spin for a while looking
+    // for work, and take time slices from those running cases.)
+    let pool = rayon::ThreadPoolBuilder::new()
+        // (`0` would mean one per core: a lone worker gets a pool of one idle thread.)
+        .num_threads((workers - 1).max(1))
+        .thread_name(|i| format!("sweep-{}", i + 1))
+        .build()?;
+    let window = WINDOW.max(64 * workers);
+    let next = AtomicUsize::new(first);
+    let stop = AtomicBool::new(false);
+    let halted = || cancel.load(Ordering::Relaxed) || stop.load(Ordering::Relaxed);
+    // The index of the next row to pass on, and a signal when it grows.
+    let passed = (Mutex::new(first), Condvar::new());
+    let (sender, receiver) = mpsc::channel::<Row>();
+
+    let (written, failed, result) = pool.in_place_scope(|scope| {
+        // The calling thread runs cases too (it would otherwise wake for
+        // every row and take a core's time slices from the workers).
+        for _ in 1..workers {
+            let sender = sender.clone();
+            let (next, passed, halted) = (&next, &passed, &halted);
+            scope.spawn(move |_| {
+                while !halted() {
+                    let index = next.fetch_add(1, Ordering::Relaxed);
+                    if index >= end {
+                        break;
+                    }
+                    let (lock, signal) = passed;
+                    let mut done = lock.lock().unwrap_or_else(PoisonError::into_inner);
+                    while index >= *done + window {
+                        if halted() {
+                            return;
+                        }
+                        done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
+                    }
+                    drop(done);
+                    if sender.send(guarded_case(this, index)).is_err() {
+                        break;
+                    }
+                }
+            });
+        }
+        drop(sender);
+        let mut order = Reorder {
+            waiting: BTreeMap::new(),
+            next: first,
+            failed: 0,
+            result: Ok(()),
+            passed: &passed,
+        };
+        // Run cases here while there are any, passing on what the workers
+        // sent in between; a case beyond the window waits for rows first.
+        while !halted() {
+            order.take(receiver.try_iter(), &mut on_row, &stop);
+            let index = next.fetch_add(1, Ordering::Relaxed);
+            if index >= end {
+                break;
+            }
+            while index >= order.next + window && !halted() {
+                match receiver.recv_timeout(POLL) {
+                    Ok(row) => order.take(std::iter::once(row), &mut on_row, &stop),
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    // No worker left: every earlier row is in.
+                    Err(mpsc::RecvTimeoutError::Disconnected) => break,
+                }
+            }
+            if halted() {
+                break;
+            }
+            order.take(std::iter::once(guarded_case(this, index)), &mut on_row, &stop);
+        }
+        // The workers' last rows; the loop ends when the last worker does.
+        order.take(receiver.iter(), &mut on_row, &stop);
+        (order.next - first, order.failed, order.result)
+    });
+    result?;
+    Ok(Finished {
+        written,
+        failed,
+        cancelled: written < count,
+        threads: workers,
+    })
 }
 
 /// Case `index`'s row; a panic inside the case (a bug) becomes its error.
