@@ -32,7 +32,7 @@ use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDIT
 use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error, Parameter};
 use crate::event::{Event, EventKind};
-use crate::extrema::{hermite_range, interior_extrema, may_have_extremum};
+use crate::extrema::{hermite_hull, hermite_range, interior_extrema, may_have_extremum};
 use crate::ground::{GroundMotion, Piece, Segment};
 use crate::integrator::bernstein;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
@@ -597,7 +597,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
         let t_stop = first.map_or(t1, |(tb, _)| tb);
-        self.emit_step(Interpolant::Constant(self.y), t_stop)?;
+        let y = self.y;
+        self.emit_step(|| Interpolant::Constant(y), t_stop)?;
         self.t = t_stop;
         self.restart = true;
         self.record_instant();
@@ -689,7 +690,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let crossing_at_end = w1.conditions[..n].iter().any(|c| c.v >= 0.0);
         // Summary peaks that the step may raise (see PEAK_MARGIN).
         let summary = &self.tracker.summary;
-        let near = |q0: Jet, q1: Jet, peak: f64| hermite_range(q0, q1, h).is_some_and(|(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
+        // The interpolant's Bernstein hull first: it holds the interpolant's
+        // range, so a step it keeps clear needs no root of the quadratic.
+        let reaches = |(lo, hi): (f64, f64), peak: f64| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak;
+        let near = |q0: Jet, q1: Jet, peak: f64| reaches(hermite_hull(q0, q1, h), peak) && hermite_range(q0, q1, h).is_some_and(|range| reaches(range, peak));
         let ratio = |w: &Watched| w.fx / w.fy;
         let top_inside = rocking && near(w0.top, w1.top, summary.max_top_abs_acceleration);
         // The demand |f_x| / f_y grows without bound as f_y falls towards zero (a
@@ -706,7 +710,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             } else {
                 near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand)
             });
-        let fy_inside = reaction_open && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g);
+        let fy_inside =
+            reaction_open && hermite_hull(w0.fy, w1.fy, h).0 <= PEAK_MARGIN * g && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g);
         let stick_inside = stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h));
         let watched_inside = top_inside || ratio_inside || fy_inside || stick_inside;
         let need_dense = theta_roots || slip_roots || crossing_at_end || watched_inside || self.observer.wants_steps();
@@ -832,7 +837,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
 
-        let interpolant = match dense {
+        // Built only for an observer that wants it (a copy of the polynomial otherwise spent).
+        let interpolant = || match &dense {
             Some(d) => Interpolant::Dense(d.widen()),
             None => Interpolant::Constant(y1),
         };
@@ -905,7 +911,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// given the flight, and the impact at its end applied as any impact.
     fn advance_free_flight(&mut self, flight: Flight) -> Result<(), Error> {
         let t1 = flight.t0 + flight.duration;
-        self.emit_step(Interpolant::Flight(flight), t1)?;
+        self.emit_step(|| Interpolant::Flight(flight), t1)?;
         let apex = [flight.s * flight.apex, 0.0, flight.slip, 0.0];
         let acc = self.kernel.accelerations(self.regime, 0.0, self.kernel.g, apex[0], 0.0);
         self.tracker.instant(&self.kernel, self.regime, 0.0, self.kernel.g, &apex, acc);
@@ -919,14 +925,14 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Tells the observer about the stretch from the current time to `t1`, and
     /// accumulates the time spent in the regime.
-    fn emit_step(&mut self, interpolant: Interpolant, t1: f64) -> Result<(), Error> {
+    fn emit_step(&mut self, interpolant: impl FnOnce() -> Interpolant, t1: f64) -> Result<(), Error> {
         self.tracker.time(self.regime.motion(), t1 - self.t);
         if self.observer.wants_steps() {
             let step = Step {
                 kernel: &self.kernel,
                 piece: self.segment.piece,
                 vpiece: self.vsegment.piece,
-                interpolant,
+                interpolant: interpolant(),
                 t0: self.t,
                 t1,
                 regime: self.regime,
