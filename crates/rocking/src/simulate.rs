@@ -666,23 +666,41 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let w1 = watched(&kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
         let rocking = matches!(regime.tower, TowerRegime::Rocking(_));
 
-        // What needs the inside of the step. θ̇ (and u̇) cannot vanish inside if
-        // it keeps one sign at the ends and its rate is bounded so that it
-        // cannot reach zero from both: |v0| + |v1| > max|v̇| h.
+        // What needs the inside of the step. A velocity v (θ̇ or u̇) that keeps
+        // one sign at the ends cannot vanish inside if either
+        // - its rate is bounded so that it cannot reach zero from both ends:
+        //   |v0| + |v1| > max|v̇| h; or
+        // - it stays off the chord between its end values, by at most
+        //   (t − t0)(t1 − t) max|v̈| / 2 <= h² max|v̈| / 8 (the linear
+        //   interpolant's error), less than its smaller end value.
+        // The second is the sharper one on short steps; both are proofs.
         let a_max = piece.max_abs(t0, t1);
-        // An upper bound of g + a_v on the step.
+        let a_rate = piece.max_abs_rate();
+        // Upper bounds of g + a_v and of its rate on the step.
         let g_e = g + vpiece.max_abs(t0, t1);
-        let free_of_roots = |v0: f64, v1: f64, rate_bound: f64| v0 * v1 > 0.0 && v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9);
+        let g_rate = vpiece.max_abs_rate();
+        let free_of_roots = |v0: f64, v1: f64, rate_bound: f64, curvature_bound: f64| {
+            v0 * v1 > 0.0 && (v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9) || v0.abs().min(v1.abs()) > 0.125 * curvature_bound * h * h * (1.0 + 1e-9))
+        };
         let theta_roots = rocking
             && match regime.building {
-                // (T) on a stuck building: |θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²).
-                BuildingRegime::Stick => !free_of_roots(y0[1], y1[1], kernel.k * (g_e * g_e + a_max * a_max).sqrt()),
+                // (T) on a stuck building: |θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²), and
+                // θ⃛ = −k [(s ġ_e sin φ + ȧ_g cos φ) + θ̇ (s a_g sin φ − g_e cos φ)], so that
+                // |θ⃛| <= k [sqrt(ġ_e² + ȧ_g²) + max|θ̇| sqrt(g_e² + a_g²)] with
+                // max|θ̇| <= (|θ̇0| + |θ̇1| + max|θ̈| h) / 2.
+                BuildingRegime::Stick => {
+                    let reach = (g_e * g_e + a_max * a_max).sqrt();
+                    let rate_bound = kernel.k * reach;
+                    let w_max = 0.5 * (y0[1].abs() + y1[1].abs() + rate_bound * h);
+                    !free_of_roots(y0[1], y1[1], rate_bound, kernel.k * (libm::hypot(g_rate, a_rate) + w_max * reach))
+                }
                 BuildingRegime::Slip(_) => true,
             };
         let slip_roots = N == 4
             && match (regime.tower, regime.building) {
-                // The complex slides as one body: |ü| = |−μk σ g_e − a_g| <= μk g_e + max|a_g|.
-                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], kernel.mu_k * g_e + a_max),
+                // The complex slides as one body: ü = −μk σ g_e − a_g, so
+                // |ü| <= μk g_e + max|a_g| and |u⃛| <= μk max|ġ_e| + max|ȧ_g|.
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
                 (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
                 (_, BuildingRegime::Stick) => false,
             };
