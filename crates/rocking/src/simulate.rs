@@ -308,6 +308,20 @@ fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
     Accelerations { theta: f[1], slip: f[3] }
 }
 
+/// Whether a velocity `v` (θ̇ or u̇) with end values `v0`, `v1` on a step of
+/// length `h`, `|v̇| <= rate_bound` and `|v̈| <= curvature_bound` on it, is
+/// proved to keep one sign inside: the ends have one sign and either
+/// - the rate cannot take it to zero from both ends: `|v0| + |v1| > max|v̇| h`; or
+/// - it stays off the chord between its end values by at most
+///   `(t − t0)(t1 − t) max|v̈| / 2 <= h² max|v̈| / 8` (the linear
+///   interpolant's error), less than its smaller end value.
+///
+/// The second is the sharper one on short steps; both are proofs (the factor
+/// `1 + 1e-9` covers the rounding of the bounds).
+fn free_of_roots(v0: f64, v1: f64, h: f64, rate_bound: f64, curvature_bound: f64) -> bool {
+    v0 * v1 > 0.0 && (v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9) || v0.abs().min(v1.abs()) > 0.125 * curvature_bound * h * h * (1.0 + 1e-9))
+}
+
 /// The first instant in `points` (ordered, the condition monotone between
 /// consecutive ones) where a condition reaches zero: `locate(ta, va, tb, vb)`
 /// narrows a bracket `va < 0 <= vb`; `leaving(ta, tb)` finds where a
@@ -666,22 +680,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let w1 = watched(&kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
         let rocking = matches!(regime.tower, TowerRegime::Rocking(_));
 
-        // What needs the inside of the step. A velocity v (θ̇ or u̇) that keeps
-        // one sign at the ends cannot vanish inside if either
-        // - its rate is bounded so that it cannot reach zero from both ends:
-        //   |v0| + |v1| > max|v̇| h; or
-        // - it stays off the chord between its end values, by at most
-        //   (t − t0)(t1 − t) max|v̈| / 2 <= h² max|v̈| / 8 (the linear
-        //   interpolant's error), less than its smaller end value.
-        // The second is the sharper one on short steps; both are proofs.
+        // What needs the inside of the step: see `free_of_roots`.
         let a_max = piece.max_abs(t0, t1);
         let a_rate = piece.max_abs_rate();
         // Upper bounds of g + a_v and of its rate on the step.
         let g_e = g + vpiece.max_abs(t0, t1);
         let g_rate = vpiece.max_abs_rate();
-        let free_of_roots = |v0: f64, v1: f64, rate_bound: f64, curvature_bound: f64| {
-            v0 * v1 > 0.0 && (v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9) || v0.abs().min(v1.abs()) > 0.125 * curvature_bound * h * h * (1.0 + 1e-9))
-        };
+        let no_root = |v0: f64, v1: f64, rate_bound: f64, curvature_bound: f64| free_of_roots(v0, v1, h, rate_bound, curvature_bound);
         let theta_roots = rocking
             && match regime.building {
                 // (T) on a stuck building: |θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²), and
@@ -692,7 +697,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     let reach = (g_e * g_e + a_max * a_max).sqrt();
                     let rate_bound = kernel.k * reach;
                     let w_max = 0.5 * (y0[1].abs() + y1[1].abs() + rate_bound * h);
-                    !free_of_roots(y0[1], y1[1], rate_bound, kernel.k * (libm::hypot(g_rate, a_rate) + w_max * reach))
+                    !no_root(y0[1], y1[1], rate_bound, kernel.k * (libm::hypot(g_rate, a_rate) + w_max * reach))
                 }
                 BuildingRegime::Slip(_) => true,
             };
@@ -700,7 +705,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             && match (regime.tower, regime.building) {
                 // The complex slides as one body: ü = −μk σ g_e − a_g, so
                 // |ü| <= μk g_e + max|a_g| and |u⃛| <= μk max|ġ_e| + max|ȧ_g|.
-                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !no_root(y0[3], y1[3], kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
                 (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
                 (_, BuildingRegime::Stick) => false,
             };
@@ -1137,4 +1142,55 @@ fn leaving_point(value: &impl Fn(f64) -> f64, t0: f64, t1: f64) -> Option<(f64, 
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::free_of_roots;
+
+    /// A parabola with equal end values `m` that dips by exactly
+    /// `c h² / 8` at mid-step, `c` its second derivative, has roots inside
+    /// when `m < c h² / 8` and none when `m > c h² / 8`: the chord bound is
+    /// sharp, and `free_of_roots` must refuse the first and may accept the
+    /// second (its rate bound `c h / 2` proves nothing there).
+    #[test]
+    fn the_chord_bound_is_sharp_on_a_parabola() {
+        let (h, c) = (0.03, 40.0);
+        let dip = c * h * h / 8.0;
+        for m in [dip * (1.0 - 1e-6), dip * (1.0 + 1e-6)] {
+            let v = |t: f64| m + 0.5 * c * t * (t - h);
+            let has_root = v(0.5 * h) <= 0.0;
+            assert_eq!(has_root, m < dip);
+            assert_eq!(free_of_roots(v(0.0), v(h), h, 0.5 * c * h, c), !has_root, "m / dip = {}", m / dip);
+        }
+    }
+
+    /// `v = c + A sin(ω t + φ)` over a grid of offsets, phases and steps:
+    /// wherever `free_of_roots` (with the exact bounds `A ω`, `A ω²`)
+    /// claims no root, 10⁴ samples of `v` keep the ends' sign. It must also
+    /// accept some steps, or the test proves nothing.
+    #[test]
+    fn no_claimed_step_hides_a_root() {
+        let (amplitude, omega) = (1.0, 2.0 * std::f64::consts::PI * 3.0);
+        let mut accepted = 0;
+        for i in 0..40 {
+            let offset = -1.5 + 3.0 * i as f64 / 39.0;
+            for j in 0..24 {
+                let phase = std::f64::consts::TAU * j as f64 / 24.0;
+                for h in [0.005, 0.02, 0.05, 0.1] {
+                    let v = |t: f64| offset + amplitude * (omega * t + phase).sin();
+                    if !free_of_roots(v(0.0), v(h), h, amplitude * omega, amplitude * omega * omega) {
+                        continue;
+                    }
+                    accepted += 1;
+                    let sign = v(0.0).signum();
+                    assert!(
+                        (0..=10_000).all(|k| v(h * k as f64 / 1e4) * sign > 0.0),
+                        "offset {offset}, phase {phase}, h {h}"
+                    );
+                }
+            }
+        }
+        assert!(accepted > 1000, "{accepted}");
+    }
 }
