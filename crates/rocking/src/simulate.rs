@@ -980,17 +980,29 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     fn settle(&mut self) -> Result<(), Error> {
         while !self.finished {
             let (list, n) = conditions(&self.kernel, self.regime);
-            let acc = self.accelerations_now();
-            let w = watched(
-                &self.kernel,
-                self.regime,
-                &self.segment.piece,
-                &self.vsegment.piece,
-                &list[..n],
-                self.t,
-                &self.y,
-                Some(acc),
-            );
+            let w = if list[..n].iter().all(|c| c.of_theta()) {
+                // Conditions on θ alone (a rocking tower on a fixed base): the
+                // value is θ's and the derivative θ̇'s, with no ground motion,
+                // lean or acceleration to evaluate (one of these per impact).
+                let yj = state_jets(&self.y, 0.0, 0.0);
+                let mut w = Watched::default();
+                for (slot, c) in w.conditions.iter_mut().zip(&list[..n]) {
+                    *slot = c.value(&self.kernel, self.regime, Jet::from(0.0), Jet::from(self.kernel.g), &yj);
+                }
+                w
+            } else {
+                let acc = self.accelerations_now();
+                watched(
+                    &self.kernel,
+                    self.regime,
+                    &self.segment.piece,
+                    &self.vsegment.piece,
+                    &list[..n],
+                    self.t,
+                    &self.y,
+                    Some(acc),
+                )
+            };
             let holds = |j: Jet| j.v > 0.0 || (j.v == 0.0 && j.d > 0.0);
             let Some(i) = (0..n).find(|&i| holds(w.conditions[i])) else {
                 return Ok(());
