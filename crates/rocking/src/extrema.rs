@@ -57,10 +57,9 @@ fn hermite_monotone(q0: Jet, q1: Jet, h: f64) -> bool {
 /// The least and greatest Bernstein coefficients of the cubic Hermite
 /// interpolant of `q0`, `q1` (`v0`, `v0 + s0/3`, `v1 − s1/3`, `v1`): by the
 /// convex hull property, bounds of the interpolant on the step that cost no
-/// root. A screen that this hull keeps clear of its threshold is clear of it
-/// for [`hermite_range`] too.
+/// root.
 #[inline]
-pub(crate) fn hermite_hull(q0: Jet, q1: Jet, h: f64) -> (f64, f64) {
+fn hermite_hull(q0: Jet, q1: Jet, h: f64) -> (f64, f64) {
     let (b1, b2) = (q0.v + h * q0.d / 3.0, q1.v - h * q1.d / 3.0);
     (q0.v.min(q1.v).min(b1).min(b2), q0.v.max(q1.v).max(b1).max(b2))
 }
@@ -101,19 +100,27 @@ fn hermite_critical_points(q0: Jet, q1: Jet, h: f64) -> ([f64; 2], usize) {
     (out, n)
 }
 
+/// The critical points in `(0, 1)` of the cubic Hermite interpolant of the
+/// end values (as [`hermite_critical_points`]) if the end values leave room
+/// for an extremum inside the step: the interpolant is not strictly
+/// monotone, and it has a critical point inside or the end slopes differ in
+/// sign. `None` otherwise.
+#[inline]
+fn interior_critical_points(q0: Jet, q1: Jet, h: f64) -> Option<([f64; 2], usize)> {
+    if h <= 0.0 || hermite_monotone(q0, q1, h) {
+        return None;
+    }
+    let (critical, n) = hermite_critical_points(q0, q1, h);
+    (n > 0 || q0.d * q1.d < 0.0).then_some((critical, n))
+}
+
 /// If the end values leave room for an extremum inside the step (as
 /// [`may_have_extremum`]), the least and greatest values of the cubic Hermite
 /// interpolant of the end values on the step (at its ends and critical
 /// points): an estimate of the quantity's range over the step, accurate to
 /// `O(h⁴)`.
-pub(crate) fn hermite_range(q0: Jet, q1: Jet, h: f64) -> Option<(f64, f64)> {
-    if h <= 0.0 || hermite_monotone(q0, q1, h) {
-        return None;
-    }
-    let (critical, n) = hermite_critical_points(q0, q1, h);
-    if n == 0 && q0.d * q1.d >= 0.0 {
-        return None;
-    }
+fn hermite_range(q0: Jet, q1: Jet, h: f64) -> Option<(f64, f64)> {
+    let (critical, n) = interior_critical_points(q0, q1, h)?;
     let p = Cubic::hermite(q0, q1, h);
     let (mut lo, mut hi) = (q0.v.min(q1.v), q0.v.max(q1.v));
     for &x in &critical[..n] {
@@ -122,6 +129,15 @@ pub(crate) fn hermite_range(q0: Jet, q1: Jet, h: f64) -> Option<(f64, f64)> {
         hi = hi.max(v);
     }
     Some((lo, hi))
+}
+
+/// Whether the quantity's range over the step, as estimated by
+/// [`hermite_range`], passes `reaches`, a test that a wider interval passes
+/// whenever a narrower one does (a peak's threshold). The interpolant's
+/// Bernstein hull, which holds that range, is tried first: a step it keeps
+/// short of the test needs no root of the quadratic.
+pub(crate) fn hermite_range_reaches(q0: Jet, q1: Jet, h: f64, reaches: impl Fn((f64, f64)) -> bool) -> bool {
+    reaches(hermite_hull(q0, q1, h)) && hermite_range(q0, q1, h).is_some_and(reaches)
 }
 
 /// Relative accuracy of a located extremum's value.
@@ -187,23 +203,16 @@ fn locate(eval: &mut impl FnMut(f64) -> Jet, mut ta: f64, mut da: f64, mut tb: f
 /// Whether the end values leave room for an extremum inside the step (if
 /// not, [`interior_extrema`] finds none without evaluating anything).
 pub(crate) fn may_have_extremum(q0: Jet, q1: Jet, h: f64) -> bool {
-    h > 0.0 && !hermite_monotone(q0, q1, h) && (q0.d * q1.d < 0.0 || hermite_critical_points(q0, q1, h).1 > 0)
+    interior_critical_points(q0, q1, h).is_some()
 }
 
 /// Calls `found(t, q)` for each local extremum of `q` found inside
 /// `(t0, t1)`, in increasing time; `eval(t)` gives `q` and `q̇` at `t`.
 pub(crate) fn interior_extrema(t0: f64, q0: Jet, t1: f64, q1: Jet, eval: &mut impl FnMut(f64) -> Jet, found: &mut impl FnMut(f64, f64)) {
     let h = t1 - t0;
-    if h <= 0.0 {
+    let Some((critical, n)) = interior_critical_points(q0, q1, h) else {
         return;
-    }
-    if hermite_monotone(q0, q1, h) {
-        return;
-    }
-    let (critical, n) = hermite_critical_points(q0, q1, h);
-    if n == 0 && q0.d * q1.d >= 0.0 {
-        return;
-    }
+    };
     // Samples of the derivative: ends, critical points, and between two of them.
     let mut samples = [(0.0, 0.0); 5];
     let mut m = 0;

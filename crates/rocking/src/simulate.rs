@@ -32,7 +32,7 @@ use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDIT
 use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error, Parameter};
 use crate::event::{Event, EventKind};
-use crate::extrema::{hermite_hull, hermite_range, interior_extrema, may_have_extremum};
+use crate::extrema::{hermite_range_reaches, interior_extrema, may_have_extremum};
 use crate::ground::{GroundMotion, Piece, Segment};
 use crate::integrator::bernstein;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
@@ -686,7 +686,6 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         // Upper bounds of g + a_v and of its rate on the step.
         let g_e = g + vpiece.max_abs(t0, t1);
         let g_rate = vpiece.max_abs_rate();
-        let no_root = |v0: f64, v1: f64, rate_bound: f64, curvature_bound: f64| free_of_roots(v0, v1, h, rate_bound, curvature_bound);
         let theta_roots = rocking
             && match regime.building {
                 // (T) on a stuck building: |θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²), and
@@ -697,7 +696,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     let reach = (g_e * g_e + a_max * a_max).sqrt();
                     let rate_bound = kernel.k * reach;
                     let w_max = 0.5 * (y0[1].abs() + y1[1].abs() + rate_bound * h);
-                    !no_root(y0[1], y1[1], rate_bound, kernel.k * (libm::hypot(g_rate, a_rate) + w_max * reach))
+                    !free_of_roots(
+                        y0[1],
+                        y1[1],
+                        h,
+                        rate_bound,
+                        kernel.k * ((g_rate * g_rate + a_rate * a_rate).sqrt() + w_max * reach),
+                    )
                 }
                 BuildingRegime::Slip(_) => true,
             };
@@ -705,7 +710,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             && match (regime.tower, regime.building) {
                 // The complex slides as one body: ü = −μk σ g_e − a_g, so
                 // |ü| <= μk g_e + max|a_g| and |u⃛| <= μk max|ġ_e| + max|ȧ_g|.
-                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !no_root(y0[3], y1[3], kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], h, kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
                 (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
                 (_, BuildingRegime::Stick) => false,
             };
@@ -713,10 +718,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let crossing_at_end = w1.conditions[..n].iter().any(|c| c.v >= 0.0);
         // Summary peaks that the step may raise (see PEAK_MARGIN).
         let summary = &self.tracker.summary;
-        // The interpolant's Bernstein hull first: it holds the interpolant's
-        // range, so a step it keeps clear needs no root of the quadratic.
-        let reaches = |(lo, hi): (f64, f64), peak: f64| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak;
-        let near = |q0: Jet, q1: Jet, peak: f64| reaches(hermite_hull(q0, q1, h), peak) && hermite_range(q0, q1, h).is_some_and(|range| reaches(range, peak));
+        let near = |q0: Jet, q1: Jet, peak: f64| hermite_range_reaches(q0, q1, h, |(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
         let ratio = |w: &Watched| w.fx / w.fy;
         let top_inside = rocking && near(w0.top, w1.top, summary.max_top_abs_acceleration);
         // The demand |f_x| / f_y grows without bound as f_y falls towards zero (a
@@ -733,8 +735,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             } else {
                 near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand)
             });
-        let fy_inside =
-            reaction_open && hermite_hull(w0.fy, w1.fy, h).0 <= PEAK_MARGIN * g && hermite_range(w0.fy, w1.fy, h).is_some_and(|(lo, _)| lo <= PEAK_MARGIN * g);
+        let fy_inside = reaction_open && hermite_range_reaches(w0.fy, w1.fy, h, |(lo, _)| lo <= PEAK_MARGIN * g);
         let stick_inside = stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h));
         let watched_inside = top_inside || ratio_inside || fy_inside || stick_inside;
         let need_dense = theta_roots || slip_roots || crossing_at_end || watched_inside || self.observer.wants_steps();
