@@ -210,6 +210,8 @@ fn run<O: Observer, const N: usize>(
         switches: 0,
         switch_time: f64::NAN,
         finished: false,
+        deferring: false,
+        deferred: Deferred::default(),
     };
     run.enter_vertical();
     run.execute()
@@ -430,6 +432,36 @@ struct Run<'a, O: Observer, const N: usize> {
     switches: u32,
     switch_time: f64,
     finished: bool,
+    /// Inside an impact cascade jumped in closed form: instants go to
+    /// `deferred` instead of the tracker.
+    deferring: bool,
+    deferred: Deferred,
+}
+
+/// An instant for the tracker: regime, `a_g`, `g_e` and state.
+type Instant = (Regime, f64, f64, [f64; 4]);
+
+/// The last instants of a cascade jumped in closed form, waiting for the
+/// tracker: regime, `a_g`, `g_e` and state. Two flights leave at most seven
+/// (an apex, the arrival and the departure at each impact, and the rest after
+/// the last); the oldest are overwritten.
+#[derive(Default)]
+struct Deferred {
+    items: [Option<Instant>; 8],
+    next: usize,
+}
+
+impl Deferred {
+    fn push(&mut self, item: Instant) {
+        self.items[self.next] = Some(item);
+        self.next = (self.next + 1) % self.items.len();
+    }
+
+    /// The instants kept, emptied.
+    fn drain(&mut self) -> impl Iterator<Item = Instant> + '_ {
+        self.next = 0;
+        self.items.iter_mut().filter_map(Option::take)
+    }
 }
 
 /// `(θ, θ̇, u, u̇)` from the integrated components (the others are zero).
@@ -931,20 +963,67 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         Some(flight)
     }
 
-    /// A free flight jumped in closed form: the apex recorded, the observer
-    /// given the flight, and the impact at its end applied as any impact.
-    fn advance_free_flight(&mut self, flight: Flight) -> Result<(), Error> {
-        let t1 = flight.t0 + flight.duration;
-        self.emit_step(|| Interpolant::Flight(flight), t1)?;
-        let apex = [flight.s * flight.apex, 0.0, flight.slip, 0.0];
-        let acc = self.kernel.accelerations(self.regime, 0.0, self.kernel.g, apex[0], 0.0);
-        self.tracker.instant(&self.kernel, self.regime, 0.0, self.kernel.g, &apex, acc);
-        self.t = t1;
-        self.y = [0.0, -flight.s * flight.omega, flight.slip, 0.0];
-        self.restart = true;
-        self.record_instant();
-        self.switch(Condition::Impact)?;
-        self.next_instant()
+    /// The rest of an impact cascade, jumped in closed form flight after
+    /// flight for as long as [`Self::free_flight`] applies: each flight is
+    /// given to the observer, and the impact at its end applied as any
+    /// impact (its event, the count, the rest below the threshold).
+    ///
+    /// The peaks along the cascade are read at the first two flights (one on
+    /// each pivot) and at the last two, not at every flight in between: with
+    /// no ground motion, each quantity the tracker follows is, at an impact
+    /// (`θ = 0`), an affine function of `θ̇²` (or a ratio of two such, the
+    /// pivot's friction demand), and at an apex (`θ̇ = 0`) a smooth function
+    /// of the apex `ψm`. Both `θ̇²` and `ψm` fall monotonically from flight to
+    /// flight on each pivot, so the impacts' values are monotone along the
+    /// cascade and bounded by its ends, and the apexes' depart from
+    /// monotone by at most `max|q''| Δψm² / 8` (the bound the module docs of
+    /// `cascade.rs` give for the inside of one flight, `Δψm <= ψm`). The
+    /// instants of the flights in between are not evaluated: the tracker's
+    /// evaluations at two impacts and an apex were two thirds of the
+    /// cascade's cost.
+    fn advance_free_flight(&mut self, first: Flight) -> Result<(), Error> {
+        let mut flight = first;
+        let mut jumped = 0u32;
+        let result = loop {
+            // From the third flight on, instants wait in `deferred`; the
+            // last few are fed to the tracker when the cascade ends.
+            self.deferring = jumped >= 2;
+            let t1 = flight.t0 + flight.duration;
+            if let Err(e) = self.emit_step(|| Interpolant::Flight(flight), t1) {
+                break Err(e);
+            }
+            let apex = [flight.s * flight.apex, 0.0, flight.slip, 0.0];
+            self.note_instant(0.0, self.kernel.g, apex);
+            self.t = t1;
+            self.y = [0.0, -flight.s * flight.omega, flight.slip, 0.0];
+            self.restart = true;
+            self.note_instant(self.a_g(self.t), self.g_e(self.t), self.y);
+            if let Err(e) = self.switch(Condition::Impact).and_then(|()| self.next_instant()) {
+                break Err(e);
+            }
+            jumped += 1;
+            match self.free_flight() {
+                Some(next) if !self.finished => flight = next,
+                _ => break Ok(()),
+            }
+        };
+        self.deferring = false;
+        for (regime, a_g, g_e, y) in self.deferred.drain() {
+            let acc = self.kernel.accelerations(regime, a_g, g_e, y[0], y[1]);
+            self.tracker.instant(&self.kernel, regime, a_g, g_e, &y, acc);
+        }
+        result
+    }
+
+    /// Feeds the tracker the response at `y` in the current regime, or keeps
+    /// it among the last instants of a cascade (see [`Self::advance_free_flight`]).
+    fn note_instant(&mut self, a_g: f64, g_e: f64, y: [f64; 4]) {
+        if self.deferring {
+            self.deferred.push((self.regime, a_g, g_e, y));
+        } else {
+            let acc = self.kernel.accelerations(self.regime, a_g, g_e, y[0], y[1]);
+            self.tracker.instant(&self.kernel, self.regime, a_g, g_e, &y, acc);
+        }
     }
 
     /// Tells the observer about the stretch from the current time to `t1`, and
@@ -970,6 +1049,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Feeds the tracker the response at the current instant.
     fn record_instant(&mut self) {
+        if self.deferring {
+            self.note_instant(self.a_g(self.t), self.g_e(self.t), self.y);
+            return;
+        }
         let a_g = self.a_g(self.t);
         let acc = self.accelerations_now();
         let g_e = self.g_e(self.t);
