@@ -48,13 +48,19 @@ pub(crate) enum Piece {
     Ricker { amplitude: f64, pi_f: f64, t0: f64 },
 }
 
+/// `amplitude sin(omega t + phase)`: [`Piece::Sine`] at `t`.
+#[inline(always)]
+pub(crate) fn sine(amplitude: f64, omega: f64, phase: f64, t: f64) -> f64 {
+    amplitude * crate::trig::sin(omega * t + phase)
+}
+
 impl Piece {
     /// `a_g(t)` (m/s²).
     #[inline(always)]
     pub(crate) fn eval(&self, t: f64) -> f64 {
         match *self {
             Piece::Constant(a) => a,
-            Piece::Sine { amplitude, omega, phase } => amplitude * crate::trig::sin(omega * t + phase),
+            Piece::Sine { amplitude, omega, phase } => sine(amplitude, omega, phase, t),
             Piece::Linear { t0, a0, slope } => a0 + slope * (t - t0),
             Piece::Ricker { amplitude, pi_f, t0 } => {
                 let x = (pi_f * (t - t0)).powi(2);
