@@ -208,46 +208,78 @@ pub(crate) fn may_have_extremum(q0: Jet, q1: Jet, h: f64) -> bool {
     interior_critical_points(q0, q1, h).is_some()
 }
 
+/// Bounds `(lo, hi)` of the extremum's value between `a` and `b`, where the
+/// derivative has opposite signs and is monotone (the premise of every
+/// bracket here): the quantity is concave there (a maximum) or convex (a
+/// minimum), so it lies on one side of its tangents at both ends. The
+/// extremum is then at least the larger end value (a maximum) and at most
+/// where the two tangents meet, `T = q_a + q̇_a x` with `x = (q_b − q_a −
+/// q̇_b H) / (q̇_a − q̇_b)`, `H = t_b − t_a`; mirrored for a minimum. `x` is
+/// kept in `[0, H]`, where exact arithmetic puts it.
+fn extremum_bounds((ta, a): (f64, Jet), (tb, b): (f64, Jet)) -> (f64, f64) {
+    let span = tb - ta;
+    let x = ((b.v - a.v - b.d * span) / (a.d - b.d)).clamp(0.0, span);
+    let tangents = a.v + a.d * x;
+    let end = if a.d > 0.0 { a.v.max(b.v) } else { a.v.min(b.v) };
+    (tangents.min(end), tangents.max(end))
+}
+
 /// Calls `found(t, q)` for each local extremum of `q` found inside
 /// `(t0, t1)`, in increasing time; `eval(t)` gives `q` and `q̇` at `t`.
-pub(crate) fn interior_extrema(t0: f64, q0: Jet, t1: f64, q1: Jet, eval: &mut impl FnMut(f64) -> Jet, found: &mut impl FnMut(f64, f64)) {
+///
+/// `matters((lo, hi))` tells whether an extremum whose value lies in
+/// `[lo, hi]` could change what the caller keeps (a running maximum above
+/// `hi` cannot): once a bracket is found, [`extremum_bounds`] gives such an
+/// interval from the bracket's ends at no cost, and an extremum that cannot
+/// matter is not located. A harmonic response repeats its peaks every
+/// half-period a little below the running maximum, so most of them end
+/// here, after the one evaluation that found their bracket.
+pub(crate) fn interior_extrema(
+    t0: f64,
+    q0: Jet,
+    t1: f64,
+    q1: Jet,
+    eval: &mut impl FnMut(f64) -> Jet,
+    matters: impl Fn((f64, f64)) -> bool,
+    found: &mut impl FnMut(f64, f64),
+) {
     let h = t1 - t0;
     let Some((critical, n)) = interior_critical_points(q0, q1, h) else {
         return;
     };
-    // Samples of the derivative: ends, critical points, and between two of them.
-    let mut samples = [(0.0, 0.0); 5];
+    // Samples: ends, critical points, and between two of them.
+    let mut samples = [(0.0, Jet::from(0.0)); 5];
     let mut m = 0;
-    samples[m] = (t0, q0.d);
+    samples[m] = (t0, q0);
     m += 1;
     for (i, &x) in critical[..n].iter().enumerate() {
         if i == 1 {
             let mid = t0 + 0.5 * (critical[0] + x) * h;
-            samples[m] = (mid, eval(mid).d);
+            samples[m] = (mid, eval(mid));
             m += 1;
         }
         let t = t0 + x * h;
-        samples[m] = (t, eval(t).d);
+        samples[m] = (t, eval(t));
         m += 1;
     }
-    samples[m] = (t1, q1.d);
+    samples[m] = (t1, q1);
     m += 1;
     // Sign changes between consecutive nonzero samples; a sample exactly on
     // zero between them is the extremum itself.
     let mut last: Option<usize> = None;
     for k in 0..m {
-        let (tb, db) = samples[k];
-        if db == 0.0 {
+        let (tb, b) = samples[k];
+        if b.d == 0.0 {
             continue;
         }
         if let Some(j) = last {
-            let (ta, da) = samples[j];
-            if da * db < 0.0 {
-                if let Some(z) = (j + 1..k).find(|&z| samples[z].1 == 0.0) {
-                    let t = samples[z].0;
-                    found(t, eval(t).v);
-                } else {
-                    let (t, v) = locate(eval, ta, da, tb, db);
+            let (ta, a) = samples[j];
+            if a.d * b.d < 0.0 {
+                if let Some(z) = (j + 1..k).find(|&z| samples[z].1.d == 0.0) {
+                    let (t, q) = samples[z];
+                    found(t, q.v);
+                } else if matters(extremum_bounds((ta, a), (tb, b))) {
+                    let (t, v) = locate(eval, ta, a.d, tb, b.d);
                     found(t, v);
                 }
             }
@@ -274,7 +306,9 @@ mod tests {
     fn one_maximum_between_ends_of_opposite_slope() {
         let f = |t: f64| (t.sin(), t.cos());
         let mut got = Vec::new();
-        interior_extrema(1.0, jet_of(f, 1.0), 2.2, jet_of(f, 2.2), &mut |t| jet_of(f, t), &mut |t, v| got.push((t, v)));
+        interior_extrema(1.0, jet_of(f, 1.0), 2.2, jet_of(f, 2.2), &mut |t| jet_of(f, t), |_| true, &mut |t, v| {
+            got.push((t, v))
+        });
         assert_eq!(got.len(), 1);
         assert_relative_eq!(got[0].0, std::f64::consts::FRAC_PI_2, epsilon = 1.5e-6);
         assert_relative_eq!(got[0].1, 1.0, epsilon = 1e-15);
@@ -288,7 +322,9 @@ mod tests {
         let a: f64 = 0.1;
         let f = move |t: f64| (t * t * t - 3.0 * a * a * t, 3.0 * t * t - 3.0 * a * a);
         let mut got = Vec::new();
-        interior_extrema(-0.3, jet_of(f, -0.3), 0.3, jet_of(f, 0.3), &mut |t| jet_of(f, t), &mut |t, v| got.push((t, v)));
+        interior_extrema(-0.3, jet_of(f, -0.3), 0.3, jet_of(f, 0.3), &mut |t| jet_of(f, t), |_| true, &mut |t, v| {
+            got.push((t, v))
+        });
         assert_eq!(got.len(), 2, "{got:?}");
         assert_relative_eq!(got[0].0, -a, epsilon = 1e-12);
         assert_relative_eq!(got[0].1, 2.0 * a.powi(3), epsilon = 1e-15);
@@ -310,8 +346,58 @@ mod tests {
                 evaluations += 1;
                 jet_of(f, t)
             },
+            |_| true,
             &mut |_, _| panic!("no extremum"),
         );
         assert_eq!(evaluations, 0);
+    }
+
+    /// sin(t) on [1, 2.2] again: the maximum, 1, lies inside the bounds the
+    /// bracket's ends give (the tangents at both ends of a concave stretch
+    /// lie above it; the larger end value lies below it). The interpolant's
+    /// critical point falls `a` = 1.8e-3 from π/2 and the far end `b` = 0.63
+    /// beyond it, where the tangents of `1 − (t − π/2)²/2` would meet at
+    /// `1 + ab/2` = 1 + 5.7e-4: an extremum that only matters above 1.001 is
+    /// not located (one evaluation, the critical point that brackets it), and
+    /// one that matters above 1 − 1e-9 is, to the same 1e-15.
+    #[test]
+    fn an_extremum_that_cannot_matter_is_not_located() {
+        let f = |t: f64| (t.sin(), t.cos());
+        let (q0, q1) = (jet_of(f, 1.0), jet_of(f, 2.2));
+        let run = |threshold: f64| {
+            let (mut evaluations, mut got) = (0, Vec::new());
+            let mut eval = |t: f64| {
+                evaluations += 1;
+                jet_of(f, t)
+            };
+            interior_extrema(
+                1.0,
+                q0,
+                2.2,
+                q1,
+                &mut eval,
+                |(lo, hi): (f64, f64)| {
+                    assert!(lo <= 1.0 && hi >= 1.0, "bounds ({lo}, {hi}) miss the maximum");
+                    hi > threshold
+                },
+                &mut |_, v| got.push(v),
+            );
+            (evaluations, got)
+        };
+        assert_eq!(run(1.001), (1, vec![]));
+        let (evaluations, got) = run(1.0 - 1e-9);
+        assert!(evaluations > 1);
+        assert_eq!(got.len(), 1);
+        assert_relative_eq!(got[0], 1.0, epsilon = 1e-15);
+    }
+
+    /// The bounds of a minimum mirror those of a maximum: for q = t² − 1 on
+    /// a bracket [−0.5, 1] (q̇ = −1 and 2), the tangents meet at
+    /// x = (0 − (−0.75) − 2 · 1.5) / (−1 − 2) = 0.75, T = −0.75 − 0.75 = −1.5,
+    /// and the smaller end value is −0.75: the minimum −1 lies between.
+    #[test]
+    fn bounds_of_a_minimum_by_hand() {
+        let (lo, hi) = extremum_bounds((-0.5, Jet::new(-0.75, -1.0)), (1.0, Jet::new(0.0, 2.0)));
+        assert_eq!((lo, hi), (-1.5, -0.75));
     }
 }

@@ -624,7 +624,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 let jet = |t: f64| c.value(&kernel, regime, piece.eval_jet(t), Jet::from(kernel.g) + vpiece.eval_jet(t), &yj);
                 let mut points = Points::default();
                 points.push((self.t, v0));
-                interior_extrema(self.t, jet(self.t), t1, jet(t1), &mut |t| jet(t), &mut |t, v| points.push((t, v)));
+                interior_extrema(self.t, jet(self.t), t1, jet(t1), &mut |t| jet(t), |_| true, &mut |t, v| points.push((t, v)));
                 points.push((t1, v1));
                 let hit = first_crossing(
                     points.as_slice(),
@@ -864,7 +864,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 } else if stick_examined && !c.of_theta() {
                     if let Some(d) = &dense {
                         let mut eval = |t: f64| condition_on(&kernel, regime, (&piece, &vpiece), c, d, t);
-                        interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, &mut |t, v| points.push((t, v)));
+                        interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, |_| true, &mut |t, v| points.push((t, v)));
                     }
                 }
                 points.push((t1, v1));
@@ -891,23 +891,30 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if let Some(d) = &dense {
             // The peaks alone: no condition is evaluated (an empty list).
             let at = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), &[], d, t);
+            // An extremum matters if it can raise the maximum kept before the
+            // step (one kept during it is at least as high) or, for f_y, reach zero.
+            let (top_peak, demand_peak) = (self.tracker.summary.max_top_abs_acceleration, self.tracker.summary.max_pivot_friction_demand);
+            let above = |peak: f64| move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) > peak;
             let tracker = &mut self.tracker;
             if top_inside {
-                interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, &mut |t, v| {
+                interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, above(top_peak), &mut |t, v| {
                     if t <= t_stop {
                         tracker.top(v);
                     }
                 });
             }
             if fy_inside {
-                interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, &mut |t, v| {
+                interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, |(lo, _)| lo <= 0.0, &mut |t, v| {
                     if t <= t_stop && v <= 0.0 {
                         tracker.reaction_lost();
                     }
                 });
             }
             if ratio_inside {
-                interior_extrema(t0, ratio(&w0), t1, ratio(&w1), &mut |t| ratio(&at(t)), &mut |t, _| {
+                // Near f_y = 0 the ratio has a pole nearby and may not be
+                // concave between samples: every extremum is located there.
+                let matters = |range| low_fy || above(demand_peak)(range);
+                interior_extrema(t0, ratio(&w0), t1, ratio(&w1), &mut |t| ratio(&at(t)), matters, &mut |t, _| {
                     if t <= t_stop {
                         let w = at(t);
                         tracker.pivot(w.fx.v, w.fy.v);
