@@ -41,6 +41,7 @@ use crate::model::Model;
 use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
 use crate::response::{EndReason, Summary, Tracker};
+use arrayvec::ArrayVec;
 use std::f64::consts::FRAC_PI_2;
 use std::ops::ControlFlow;
 
@@ -368,32 +369,20 @@ const MAX_POINTS: usize = 2 * MAX_ROOTS + 2;
 
 /// Instants inside a step with a value each, in time order: a condition's
 /// ends and extrema, or the extremes of θ. Never more than [`MAX_POINTS`]
-/// can exist (one beyond would be dropped). On the stack: no allocation in
-/// the inner loop.
-struct Points {
-    items: [(f64, f64); MAX_POINTS],
-    len: usize,
-}
-
-impl Default for Points {
-    fn default() -> Self {
-        Self {
-            items: [(0.0, 0.0); MAX_POINTS],
-            len: 0,
-        }
-    }
-}
+/// can exist (one beyond would be dropped). On the stack and not zeroed when
+/// made: no allocation and no fill in the inner loop.
+#[derive(Default)]
+struct Points(ArrayVec<(f64, f64), MAX_POINTS>);
 
 impl Points {
+    #[inline]
     fn push(&mut self, p: (f64, f64)) {
-        if let Some(slot) = self.items.get_mut(self.len) {
-            *slot = p;
-            self.len += 1;
-        }
+        let _ = self.0.try_push(p);
     }
 
+    #[inline]
     fn as_slice(&self) -> &[(f64, f64)] {
-        &self.items[..self.len]
+        &self.0
     }
 }
 
