@@ -224,6 +224,24 @@ fn extremum_bounds((ta, a): (f64, Jet), (tb, b): (f64, Jet)) -> (f64, f64) {
     (tangents.min(end), tangents.max(end))
 }
 
+/// Whether an extremum inside the step may matter, told from the ends
+/// alone where the interpolant shows a single one with a monotone
+/// derivative (its derivative, a quadratic, changes sign between the ends
+/// and has its vertex outside the step): [`extremum_bounds`] over the whole
+/// step. Anywhere else, `true` (the samples inside will tell).
+pub(crate) fn matters_on_step(t0: f64, q0: Jet, t1: f64, q1: Jet, matters: impl Fn((f64, f64)) -> bool) -> bool {
+    if q0.d * q1.d >= 0.0 {
+        return true;
+    }
+    let p = Cubic::hermite(q0, q1, t1 - t0);
+    // p'(x) = s0 + 2 c2 x + 3 c3 x², vertex at −c2 / (3 c3).
+    let vertex = -p.c2 / (3.0 * p.c3);
+    if vertex > 0.0 && vertex < 1.0 {
+        return true;
+    }
+    matters(extremum_bounds((t0, q0), (t1, q1)))
+}
+
 /// Calls `found(t, q)` for each local extremum of `q` found inside
 /// `(t0, t1)`, in increasing time; `eval(t)` gives `q` and `q̇` at `t`.
 ///
@@ -247,6 +265,9 @@ pub(crate) fn interior_extrema(
     let Some((critical, n)) = interior_critical_points(q0, q1, h) else {
         return;
     };
+    if !matters_on_step(t0, q0, t1, q1, &matters) {
+        return;
+    }
     // Samples: ends, critical points, and between two of them.
     let mut samples = [(0.0, Jet::from(0.0)); 5];
     let mut m = 0;
@@ -399,5 +420,44 @@ mod tests {
     fn bounds_of_a_minimum_by_hand() {
         let (lo, hi) = extremum_bounds((-0.5, Jet::new(-0.75, -1.0)), (1.0, Jet::new(0.0, 2.0)));
         assert_eq!((lo, hi), (-1.5, -0.75));
+    }
+
+    /// sin(t) on [1, 2.2] once more, from the ends alone: the interpolant's
+    /// derivative has its vertex at x = 28 (outside the step), so the
+    /// tangents at t = 1 and t = 2.2 bound the one maximum: they meet at
+    /// x = (sin 2.2 − sin 1 − 1.2 cos 2.2) / (cos 1 − cos 2.2) = 0.5964,
+    /// T = sin 1 + 0.5964 cos 1 = 1.1637, above the true 1. An extremum that
+    /// only matters above 1.2 costs no evaluation at all; one that matters
+    /// above 1.1 is searched (and found at 1, below that threshold and so not
+    /// located, after the one evaluation that brackets it).
+    #[test]
+    fn the_ends_alone_can_rule_out_an_extremum() {
+        let f = |t: f64| (t.sin(), t.cos());
+        let (q0, q1) = (jet_of(f, 1.0), jet_of(f, 2.2));
+        assert!(!matters_on_step(1.0, q0, 2.2, q1, |(_, hi)| hi > 1.2));
+        assert!(matters_on_step(1.0, q0, 2.2, q1, |(lo, hi)| {
+            assert_relative_eq!(hi, 1.1637113, epsilon = 1e-7);
+            assert_relative_eq!(lo, 1.0f64.sin(), epsilon = 1e-15);
+            hi > 1.1
+        }));
+        let mut evaluations = 0;
+        let mut eval = |t: f64| {
+            evaluations += 1;
+            jet_of(f, t)
+        };
+        interior_extrema(1.0, q0, 2.2, q1, &mut eval, |(_, hi)| hi > 1.2, &mut |_, _| panic!("not located"));
+        assert_eq!(evaluations, 0);
+    }
+
+    /// Where the interpolant's derivative turns inside the step, the ends'
+    /// tangents bound nothing and the extremum is left to the samples
+    /// inside: t³ − 3a²t (a = 0.1, its own interpolant) on [−0.3, 0.05] has
+    /// slopes 0.24 and −0.0225 at the ends, a maximum at −0.1, and a
+    /// derivative that turns at t = 0 (x = 0.86 of the step).
+    #[test]
+    fn the_ends_say_nothing_about_a_hidden_pair() {
+        let a: f64 = 0.1;
+        let f = move |t: f64| (t * t * t - 3.0 * a * a * t, 3.0 * t * t - 3.0 * a * a);
+        assert!(matters_on_step(-0.3, jet_of(f, -0.3), 0.05, jet_of(f, 0.05), |_| false));
     }
 }

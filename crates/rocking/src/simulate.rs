@@ -32,7 +32,7 @@ use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDIT
 use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error, Parameter};
 use crate::event::{Event, EventKind};
-use crate::extrema::{hermite_range_reaches, interior_extrema, may_have_extremum};
+use crate::extrema::{hermite_range_reaches, interior_extrema, matters_on_step, may_have_extremum};
 use crate::ground::{sine, GroundMotion, Piece, Segment};
 use crate::integrator::bernstein;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
@@ -764,10 +764,19 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let summary = &self.tracker.summary;
         let near = |q0: Jet, q1: Jet, peak: f64| hermite_range_reaches(q0, q1, h, |(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
         let ratio = |w: &Watched| w.fx / w.fy;
-        let top_inside = rocking && near(w0.top, w1.top, summary.max_top_abs_acceleration);
         // The demand |f_x| / f_y grows without bound as f_y falls towards zero (a
         // tower about to fly or overturn): no pruning where f_y is below g / 2.
         let low_fy = w0.fy.v.min(w1.fy.v) < 0.5 * g;
+        // An extremum matters if it can raise the maximum kept before the step
+        // (one kept during it is at least as high) or, for f_y, reach zero. Near
+        // f_y = 0 the ratio has a pole close by and need not be concave between
+        // samples: every extremum of it matters there.
+        let above = |peak: f64| move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) > peak;
+        let top_matters = above(summary.max_top_abs_acceleration);
+        let demand_above = above(summary.max_pivot_friction_demand);
+        let demand_matters = move |range| low_fy || demand_above(range);
+        let fy_matters = |(lo, _): (f64, f64)| lo <= 0.0;
+        let top_inside = rocking && near(w0.top, w1.top, summary.max_top_abs_acceleration) && matters_on_step(t0, w0.top, t1, w1.top, top_matters);
         // Once f_y has reached zero the demand is unbounded and the uplift
         // known: neither can change any more.
         let reaction_open = rocking && !summary.tower_uplift_detected;
@@ -778,8 +787,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 may_have_extremum(ratio(&w0), ratio(&w1), h)
             } else {
                 near(ratio(&w0), ratio(&w1), summary.max_pivot_friction_demand)
-            });
-        let fy_inside = reaction_open && hermite_range_reaches(w0.fy, w1.fy, h, |(lo, _)| lo <= PEAK_MARGIN * g);
+            })
+            && matters_on_step(t0, ratio(&w0), t1, ratio(&w1), demand_matters);
+        let fy_inside =
+            reaction_open && hermite_range_reaches(w0.fy, w1.fy, h, |(lo, _)| lo <= PEAK_MARGIN * g) && matters_on_step(t0, w0.fy, t1, w1.fy, fy_matters);
         let stick_inside = stick_examined && (0..n).any(|i| !list[i].of_theta() && may_have_extremum(w0.conditions[i], w1.conditions[i], h));
         let watched_inside = top_inside || ratio_inside || fy_inside || stick_inside;
         let need_dense = theta_roots || slip_roots || crossing_at_end || watched_inside || self.observer.wants_steps();
@@ -880,30 +891,23 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if let Some(d) = &dense {
             // The peaks alone: no condition is evaluated (an empty list).
             let at = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), &[], d, t);
-            // An extremum matters if it can raise the maximum kept before the
-            // step (one kept during it is at least as high) or, for f_y, reach zero.
-            let (top_peak, demand_peak) = (self.tracker.summary.max_top_abs_acceleration, self.tracker.summary.max_pivot_friction_demand);
-            let above = |peak: f64| move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) > peak;
             let tracker = &mut self.tracker;
             if top_inside {
-                interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, above(top_peak), &mut |t, v| {
+                interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, top_matters, &mut |t, v| {
                     if t <= t_stop {
                         tracker.top(v);
                     }
                 });
             }
             if fy_inside {
-                interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, |(lo, _)| lo <= 0.0, &mut |t, v| {
+                interior_extrema(t0, w0.fy, t1, w1.fy, &mut |t| at(t).fy, fy_matters, &mut |t, v| {
                     if t <= t_stop && v <= 0.0 {
                         tracker.reaction_lost();
                     }
                 });
             }
             if ratio_inside {
-                // Near f_y = 0 the ratio has a pole nearby and may not be
-                // concave between samples: every extremum is located there.
-                let matters = |range| low_fy || above(demand_peak)(range);
-                interior_extrema(t0, ratio(&w0), t1, ratio(&w1), &mut |t| ratio(&at(t)), matters, &mut |t, _| {
+                interior_extrema(t0, ratio(&w0), t1, ratio(&w1), &mut |t| ratio(&at(t)), demand_matters, &mut |t, _| {
                     if t <= t_stop {
                         let w = at(t);
                         tracker.pivot(w.fx.v, w.fy.v);
