@@ -85,8 +85,8 @@ impl Condition {
                 let toward = if self == Condition::UpliftNegative { acc_pivot } else { -acc_pivot };
                 toward - kernel.uplift_threshold(g_e)
             }
-            Condition::Impact => -(y[0] * s),
-            Condition::Overturn => y[0] * s - FRAC_PI_2,
+            Condition::Impact => Self::impact_margin(s, y[0]),
+            Condition::Overturn => Self::overturn_margin(s, y[0]),
             Condition::SlipNegative | Condition::SlipPositive => {
                 let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y[0], y[1]);
                 self.slip_margin(force, normal, kernel.mu_s)
@@ -96,6 +96,18 @@ impl Condition {
                 BuildingRegime::Stick => T::from(-1.0),
             },
         }
+    }
+
+    /// [`Condition::Impact`] on pivot `s`: `−s θ`.
+    #[inline(always)]
+    pub(crate) fn impact_margin<T: Real>(s: f64, theta: T) -> T {
+        -(theta * s)
+    }
+
+    /// [`Condition::Overturn`] on pivot `s`: `s θ − π/2`.
+    #[inline(always)]
+    pub(crate) fn overturn_margin<T: Real>(s: f64, theta: T) -> T {
+        theta * s - FRAC_PI_2
     }
 
     /// The slip conditions from the stick demand: `±F_req − μs N`.

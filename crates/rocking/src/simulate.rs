@@ -247,7 +247,11 @@ fn watched(
     acc: Option<Accelerations<f64>>,
 ) -> Watched {
     let a_g = piece.eval_jet(t);
-    let g_e = Jet::from(kernel.g) + vpiece.eval_jet(t);
+    // No vertical input (a constant piece) spares a call per instant.
+    let g_e = match *vpiece {
+        Piece::Constant(a_v) => Jet::from(kernel.g + a_v),
+        _ => Jet::from(kernel.g) + vpiece.eval_jet(t),
+    };
     let mut w = Watched::default();
     let TowerRegime::Rocking(pivot) = regime.tower else {
         let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y[0], y[1]));
@@ -277,6 +281,8 @@ fn watched(
         .then(|| kernel.rocking_stick_demand(lean, yj[1], theta_ddot, a_g, g_e));
     for (slot, &c) in w.conditions.iter_mut().zip(list) {
         *slot = match (c, demand) {
+            (Condition::Impact, _) => Condition::impact_margin(s, yj[0]),
+            (Condition::Overturn, _) => Condition::overturn_margin(s, yj[0]),
             (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(force, normal, kernel.mu_s),
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
