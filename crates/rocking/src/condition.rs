@@ -85,8 +85,7 @@ impl Condition {
                 let toward = if self == Condition::UpliftNegative { acc_pivot } else { -acc_pivot };
                 toward - kernel.uplift_threshold(g_e)
             }
-            Condition::Impact => Self::impact_margin(s, y[0]),
-            Condition::Overturn => Self::overturn_margin(s, y[0]),
+            Condition::Impact | Condition::Overturn => self.theta_margin(s, y[0]),
             Condition::SlipNegative | Condition::SlipPositive => {
                 let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y[0], y[1]);
                 self.slip_margin(force, normal, kernel.mu_s)
@@ -95,6 +94,17 @@ impl Condition {
                 BuildingRegime::Slip(dir) => -(y[3] * dir.sign()),
                 BuildingRegime::Stick => T::from(-1.0),
             },
+        }
+    }
+
+    /// A condition of `θ` alone ([`Condition::of_theta`]) on pivot `s`: the
+    /// impact margin, or the overturn margin for any other condition.
+    #[inline(always)]
+    pub(crate) fn theta_margin<T: Real>(self, s: f64, theta: T) -> T {
+        if self == Condition::Impact {
+            Self::impact_margin(s, theta)
+        } else {
+            Self::overturn_margin(s, theta)
         }
     }
 

@@ -281,8 +281,7 @@ fn watched(
         .then(|| kernel.rocking_stick_demand(lean, yj[1], theta_ddot, a_g, g_e));
     for (slot, &c) in w.conditions.iter_mut().zip(list) {
         *slot = match (c, demand) {
-            (Condition::Impact, _) => Condition::impact_margin(s, yj[0]),
-            (Condition::Overturn, _) => Condition::overturn_margin(s, yj[0]),
+            (Condition::Impact | Condition::Overturn, _) => c.theta_margin(s, yj[0]),
             (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(force, normal, kernel.mu_s),
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
@@ -831,22 +830,22 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             points.push((t0, v0));
             let hit = if c.of_theta() {
                 for &(t, theta) in theta_points.as_slice() {
-                    points.push((t, c.value(&kernel, regime, 0.0, g, &[theta, 0.0, 0.0, 0.0])));
+                    points.push((t, c.theta_margin(s, theta)));
                 }
                 points.push((t1, v1));
-                // c = sgn θ + offset, with θ̇ from the same dense output for Newton.
-                let (sgn, offset) = if c == Condition::Impact { (-s, 0.0) } else { (s, -FRAC_PI_2) };
                 first_crossing(
                     points.as_slice(),
                     |ta, va, tb, vb| {
                         let Some(d) = &dense else { return tb };
+                        // With its derivative (θ̇ from the same dense output) for Newton.
                         let f = |t: f64| {
                             let y = d.state(t);
-                            (sgn * y[0] + offset, sgn * y[1])
+                            let m = c.theta_margin(s, Jet::new(y[0], y[1]));
+                            (m.v, m.d)
                         };
                         find_crossing_newton(f, ta, va, tb, vb).tb
                     },
-                    |ta, tb| dense.as_ref().and_then(|d| leaving_point(&|t| sgn * d.state(t)[0] + offset, ta, tb)),
+                    |ta, tb| dense.as_ref().and_then(|d| leaving_point(&|t| c.theta_margin(s, d.state(t)[0]), ta, tb)),
                 )
             } else {
                 let value = |t: f64| {
