@@ -316,18 +316,33 @@ fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
     Accelerations { theta: f[1], slip: f[3] }
 }
 
-/// Whether a velocity `v` (θ̇ or u̇) with end values `v0`, `v1` on a step of
-/// length `h`, `|v̇| <= rate_bound` and `|v̈| <= curvature_bound` on it, is
-/// proved to keep one sign inside: the ends have one sign and either
+/// Whether a velocity `v` (θ̇ or u̇) with end values and exact slopes `v0`,
+/// `v1` on a step of length `h`, `|v̇| <= rate_bound` and `|v̈| <=
+/// curvature_bound` on it, is proved to keep one sign inside: the ends have
+/// one sign and either
 /// - the rate cannot take it to zero from both ends: `|v0| + |v1| > max|v̇| h`; or
 /// - it stays off the chord between its end values by at most
 ///   `(t − t0)(t1 − t) max|v̈| / 2 <= h² max|v̈| / 8` (the linear
-///   interpolant's error), less than its smaller end value.
+///   interpolant's error), less than its smaller end value; or
+/// - it stays off the tangent at the nearer end by at most `τ² max|v̈| / 2`
+///   (Taylor's remainder, `τ <= h / 2` from that end), and each end's
+///   tangent, less that, stays of the ends' sign up to mid-step (a concave
+///   lower bound: its least value on `[0, h/2]` is at one of the two ends,
+///   `v0` itself or `v0 + v̇0 h/2 − max|v̈| h²/8`).
 ///
-/// The second is the sharper one on short steps; both are proofs (the factor
-/// `1 + 1e-9` covers the rounding of the bounds).
-fn free_of_roots(v0: f64, v1: f64, h: f64, rate_bound: f64, curvature_bound: f64) -> bool {
-    v0 * v1 > 0.0 && (v0.abs() + v1.abs() > rate_bound * h * (1.0 + 1e-9) || v0.abs().min(v1.abs()) > 0.125 * curvature_bound * h * h * (1.0 + 1e-9))
+/// The chord is the sharper on short steps, the tangents where `v` moves
+/// away from zero; all are proofs (the factor `1 + 1e-9` covers the rounding
+/// of the bounds, the `4 ε` that of the tangents' sums).
+fn free_of_roots(v0: Jet, v1: Jet, h: f64, rate_bound: f64, curvature_bound: f64) -> bool {
+    if v0.v * v1.v <= 0.0 {
+        return false;
+    }
+    let dip = 0.125 * curvature_bound * h * h * (1.0 + 1e-9);
+    let sign = v0.v.signum();
+    let tangent_clear = |v: f64, toward_middle: f64| sign * (v + toward_middle) > dip + 4.0 * f64::EPSILON * (v.abs() + toward_middle.abs());
+    v0.v.abs() + v1.v.abs() > rate_bound * h * (1.0 + 1e-9)
+        || v0.v.abs().min(v1.v.abs()) > dip
+        || (tangent_clear(v0.v, 0.5 * h * v0.d) && tangent_clear(v1.v, -0.5 * h * v1.d))
 }
 
 /// The first instant in `points` (ordered, the condition monotone between
@@ -724,6 +739,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.stepper.step(&mut rhs, bound).map_err(|e| step_error(e, kernel.dynamic))?;
         let (t0, t1) = (self.stepper.t_old, self.stepper.t);
         let (y0, y1) = (wide(&self.stepper.y_old), wide(&self.stepper.y));
+        // The right-hand side at both ends: the velocities' exact slopes.
+        let (f0, f1) = (wide(&self.stepper.f_old()), wide(&self.stepper.f));
         let h = t1 - t0;
         let w0 = self.watch;
         let w1 = watched(&kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
@@ -746,8 +763,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     let rate_bound = kernel.k * reach;
                     let w_max = 0.5 * (y0[1].abs() + y1[1].abs() + rate_bound * h);
                     !free_of_roots(
-                        y0[1],
-                        y1[1],
+                        Jet::new(y0[1], f0[1]),
+                        Jet::new(y1[1], f1[1]),
                         h,
                         rate_bound,
                         kernel.k * ((g_rate * g_rate + a_rate * a_rate).sqrt() + w_max * reach),
@@ -759,7 +776,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             && match (regime.tower, regime.building) {
                 // The complex slides as one body: ü = −μk σ g_e − a_g, so
                 // |ü| <= μk g_e + max|a_g| and |u⃛| <= μk max|ġ_e| + max|ȧ_g|.
-                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(y0[3], y1[3], h, kernel.mu_k * g_e + a_max, kernel.mu_k * g_rate + a_rate),
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(
+                    Jet::new(y0[3], f0[3]),
+                    Jet::new(y1[3], f1[3]),
+                    h,
+                    kernel.mu_k * g_e + a_max,
+                    kernel.mu_k * g_rate + a_rate,
+                ),
                 (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
                 (_, BuildingRegime::Stick) => false,
             };
@@ -1263,6 +1286,21 @@ fn leaving_point(value: &impl Fn(f64) -> f64, t0: f64, t1: f64) -> Option<(f64, 
 #[cfg(test)]
 mod tests {
     use super::free_of_roots;
+    use crate::jet::Jet;
+
+    /// A velocity moving away from zero, `v = 1 + 10 t` on a step of 0.1
+    /// with a curvature bound of 1000 (it has none: the bound is what the
+    /// model could allow): the rate bound (100: `|v0| + |v1|` = 3 against
+    /// 10) and the chord (`c h²/8` = 1.25 against the smaller end, 1)
+    /// prove nothing; the tangents do (1.5 at mid-step from either end,
+    /// above 1.25). With the slopes reversed (`v` falling towards zero from
+    /// both ends, 0.5 at mid-step) nothing is proved.
+    #[test]
+    fn the_tangents_prove_a_velocity_moving_away_from_zero() {
+        let (h, c) = (0.1, 1000.0);
+        assert!(free_of_roots(Jet::new(1.0, 10.0), Jet::new(2.0, 10.0), h, 100.0, c));
+        assert!(!free_of_roots(Jet::new(1.0, -10.0), Jet::new(2.0, 10.0), h, 100.0, c));
+    }
 
     /// A parabola with equal end values `m` that dips by exactly
     /// `c h² / 8` at mid-step, `c` its second derivative, has roots inside
@@ -1277,7 +1315,9 @@ mod tests {
             let v = |t: f64| m + 0.5 * c * t * (t - h);
             let has_root = v(0.5 * h) <= 0.0;
             assert_eq!(has_root, m < dip);
-            assert_eq!(free_of_roots(v(0.0), v(h), h, 0.5 * c * h, c), !has_root, "m / dip = {}", m / dip);
+            // Slopes ∓c h/2: the tangents fall by c h²/4 to mid-step and prove nothing either.
+            let (v0, v1) = (Jet::new(v(0.0), -0.5 * c * h), Jet::new(v(h), 0.5 * c * h));
+            assert_eq!(free_of_roots(v0, v1, h, 0.5 * c * h, c), !has_root, "m / dip = {}", m / dip);
         }
     }
 
@@ -1294,14 +1334,14 @@ mod tests {
             for j in 0..24 {
                 let phase = std::f64::consts::TAU * j as f64 / 24.0;
                 for h in [0.005, 0.02, 0.05, 0.1] {
-                    let v = |t: f64| offset + amplitude * (omega * t + phase).sin();
+                    let v = |t: f64| Jet::new(offset + amplitude * (omega * t + phase).sin(), amplitude * omega * (omega * t + phase).cos());
                     if !free_of_roots(v(0.0), v(h), h, amplitude * omega, amplitude * omega * omega) {
                         continue;
                     }
                     accepted += 1;
-                    let sign = v(0.0).signum();
+                    let sign = v(0.0).v.signum();
                     assert!(
-                        (0..=10_000).all(|k| v(h * k as f64 / 1e4) * sign > 0.0),
+                        (0..=10_000).all(|k| v(h * k as f64 / 1e4).v * sign > 0.0),
                         "offset {offset}, phase {phase}, h {h}"
                     );
                 }

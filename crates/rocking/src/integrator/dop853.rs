@@ -143,6 +143,11 @@ impl<const N: usize> Dop853<N> {
         }
     }
 
+    /// The right-hand side at the start of the last accepted step (its first stage).
+    pub(crate) fn f_old(&self) -> [f64; N] {
+        self.k[0]
+    }
+
     /// Starts (or restarts, after an event) at `(t, y)`. The previous step size is
     /// kept as the first guess; on the very first start one is estimated.
     pub(crate) fn restart(&mut self, rhs: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], t: f64, y: [f64; N], t_bound: f64) {
