@@ -844,10 +844,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             });
         }
 
-        // The first transition in the step.
+        // The first transition in the step. A step without its dense output
+        // has none to search: every condition ends it negative and none can
+        // have come back inside (or the dense output would have been built).
         let mut first: Option<(f64, Condition)> = None;
         let s = pivot_sign(regime);
-        for (i, &c) in list.iter().enumerate() {
+        let searched = if dense.is_some() { list } else { &[] };
+        for (i, &c) in searched.iter().enumerate() {
             let (v0, v1) = (w0.conditions[i].v, w1.conditions[i].v);
             let mut points = Points::default();
             points.push((t0, v0));
