@@ -171,14 +171,14 @@ pub fn simulate_with_vertical(
     // Without a building the slip stays zero: integrate (θ, θ̇) only, which
     // halves the linear algebra of every step.
     if kernel.has_building {
-        run::<_, 4>(kernel, ground, vertical, settings, tower, initial, observer)
+        run::<_, 4>(&kernel, ground, vertical, settings, tower, initial, observer)
     } else {
-        run::<_, 2>(kernel, ground, vertical, settings, tower, initial, observer)
+        run::<_, 2>(&kernel, ground, vertical, settings, tower, initial, observer)
     }
 }
 
 fn run<O: Observer, const N: usize>(
-    kernel: Kernel,
+    kernel: &Kernel,
     ground: &GroundMotion,
     vertical: Option<&GroundMotion>,
     settings: &Settings,
@@ -409,7 +409,9 @@ impl Points {
 /// The state of a run; the integrator carries the first `N` components of
 /// `(θ, θ̇, u, u̇)` (2 on a fixed base, 4 on a building).
 struct Run<'a, O: Observer, const N: usize> {
-    kernel: Kernel,
+    /// Borrowed, not owned: the step copies it out for its closures, and a
+    /// reference is one word where the kernel is two dozen.
+    kernel: &'a Kernel,
     ground: &'a GroundMotion,
     /// The vertical ground acceleration (`GroundMotion::None` without one).
     vertical: &'a GroundMotion,
