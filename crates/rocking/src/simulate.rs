@@ -533,7 +533,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             // A vertical input of `GroundMotion::None`: g throughout.
             self.tracker.summary.min_effective_gravity = Some(self.kernel.g);
         }
-        Ok(self.tracker.finish(&self.kernel, self.t, &self.y))
+        Ok(self.tracker.finish(self.kernel, self.t, &self.y))
     }
 
     /// The effective gravity `g + a_v` (m/s²) at `t` in the current vertical segment.
@@ -620,9 +620,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.segment = self.ground.segment(self.t);
         self.vsegment = self.vertical.segment(self.t);
         let t1 = self.segment.end.min(self.vsegment.end).min(self.free_fall).min(self.end);
-        let (list, n) = conditions(&self.kernel, self.regime);
+        let (list, n) = conditions(self.kernel, self.regime);
         let (kernel, regime, y, piece, vpiece) = (self.kernel, self.regime, self.y, self.segment.piece, self.vsegment.piece);
-        let value = |c: Condition, t: f64| c.value(&kernel, regime, piece.eval(t), kernel.g + vpiece.eval(t), &y);
+        let value = |c: Condition, t: f64| c.value(kernel, regime, piece.eval(t), kernel.g + vpiece.eval(t), &y);
         let mut first: Option<(f64, Condition)> = None;
         for &c in &list[..n] {
             let (v0, v1) = (value(c, self.t), value(c, t1));
@@ -632,7 +632,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // on the exact derivatives of both pieces, split it into
                 // monotone parts.
                 let yj = state_jets(&y, 0.0, 0.0);
-                let jet = |t: f64| c.value(&kernel, regime, piece.eval_jet(t), Jet::from(kernel.g) + vpiece.eval_jet(t), &yj);
+                let jet = |t: f64| c.value(kernel, regime, piece.eval_jet(t), Jet::from(kernel.g) + vpiece.eval_jet(t), &yj);
                 let mut points = Points::default();
                 points.push((self.t, v0));
                 interior_extrema(self.t, jet(self.t), t1, jet(t1), &mut |t| jet(t), |_| true, &mut |t, v| points.push((t, v)));
@@ -728,12 +728,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let acc = accelerations(t, y[0], y[1]);
             narrow([y[1], acc.theta, y[3], acc.slip])
         };
-        let (list, n) = conditions(&kernel, regime);
+        let (list, n) = conditions(kernel, regime);
         let list = &list[..n];
         if self.restart {
             self.stepper.restart(&mut rhs, self.t, narrow(self.y), self.end);
             let f = wide(&self.stepper.f);
-            self.watch = watched(&kernel, regime, &piece, &vpiece, list, self.t, &self.y, Some(accelerations_of(&f)));
+            self.watch = watched(kernel, regime, &piece, &vpiece, list, self.t, &self.y, Some(accelerations_of(&f)));
             self.restart = false;
         }
         // Steps land on kinks and jumps of both inputs, and where `g + a_v` reaches zero.
@@ -745,7 +745,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (f0, f1) = (wide(&self.stepper.f_old()), wide(&self.stepper.f));
         let h = t1 - t0;
         let w0 = self.watch;
-        let w1 = watched(&kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
+        let w1 = watched(kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
         let rocking = matches!(regime.tower, TowerRegime::Rocking(_));
 
         // What needs the inside of the step: see `free_of_roots`.
@@ -880,7 +880,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     dense.as_ref().map_or(v1, |d| {
                         let y = wide(&d.state(t));
                         let (a_g, g_e) = if c.uses_ground() { (piece.eval(t), g + vpiece.eval(t)) } else { (0.0, g) };
-                        c.value(&kernel, regime, a_g, g_e, &y)
+                        c.value(kernel, regime, a_g, g_e, &y)
                     })
                 };
                 if c == Condition::SlipStop && slip_roots {
@@ -896,7 +896,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     }
                 } else if stick_examined && !c.of_theta() {
                     if let Some(d) = &dense {
-                        let mut eval = |t: f64| condition_on(&kernel, regime, (&piece, &vpiece), c, d, t);
+                        let mut eval = |t: f64| condition_on(kernel, regime, (&piece, &vpiece), c, d, t);
                         interior_extrema(t0, w0.conditions[i], t1, w1.conditions[i], &mut eval, |_| true, &mut |t, v| points.push((t, v)));
                     }
                 }
@@ -923,7 +923,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         }
         if let Some(d) = &dense {
             // The peaks alone: no condition is evaluated (an empty list).
-            let at = |t: f64| watched_on(&kernel, regime, (&piece, &vpiece), &[], d, t);
+            let at = |t: f64| watched_on(kernel, regime, (&piece, &vpiece), &[], d, t);
             let tracker = &mut self.tracker;
             if top_inside {
                 interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, top_matters, &mut |t, v| {
@@ -1004,13 +1004,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             // equal) and at the apex, with a margin of 1e-6 μs M g: the
             // demand inside departs from these by a relative `ψm² / 8`.
             let margin = 1e-6 * self.kernel.mu_s * self.kernel.total * self.kernel.g;
-            let (list, n) = conditions(&self.kernel, self.regime);
+            let (list, n) = conditions(self.kernel, self.regime);
             let ends = [self.y, [s * flight.apex, 0.0, self.y[2], 0.0]];
             let holds = ends.iter().all(|y| {
                 list[..n]
                     .iter()
                     .filter(|c| !c.of_theta())
-                    .all(|c| c.value(&self.kernel, self.regime, 0.0, self.kernel.g, y) < -margin)
+                    .all(|c| c.value(self.kernel, self.regime, 0.0, self.kernel.g, y) < -margin)
             });
             if !holds {
                 return None;
@@ -1065,7 +1065,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         };
         self.deferring = false;
         for instant in self.deferred.drain() {
-            track(&mut self.tracker, &self.kernel, instant);
+            track(&mut self.tracker, self.kernel, instant);
         }
         result
     }
@@ -1077,7 +1077,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if self.deferring {
             self.deferred.push(instant);
         } else {
-            track(&mut self.tracker, &self.kernel, instant);
+            track(&mut self.tracker, self.kernel, instant);
         }
     }
 
@@ -1087,7 +1087,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.tracker.time(self.regime.motion(), t1 - self.t);
         if self.observer.wants_steps() {
             let step = Step {
-                kernel: &self.kernel,
+                kernel: self.kernel,
                 piece: self.segment.piece,
                 vpiece: self.vsegment.piece,
                 interpolant: interpolant(),
@@ -1111,7 +1111,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// that is zero and growing (its time derivative positive).
     fn settle(&mut self) -> Result<(), Error> {
         while !self.finished {
-            let (list, n) = conditions(&self.kernel, self.regime);
+            let (list, n) = conditions(self.kernel, self.regime);
             let w = if list[..n].iter().all(|c| c.of_theta()) {
                 // Conditions on θ alone (a rocking tower on a fixed base): the
                 // value is θ's and the derivative θ̇'s, with no ground motion,
@@ -1119,13 +1119,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 let yj = state_jets(&self.y, 0.0, 0.0);
                 let mut w = Watched::default();
                 for (slot, c) in w.conditions.iter_mut().zip(&list[..n]) {
-                    *slot = c.value(&self.kernel, self.regime, Jet::from(0.0), Jet::from(self.kernel.g), &yj);
+                    *slot = c.value(self.kernel, self.regime, Jet::from(0.0), Jet::from(self.kernel.g), &yj);
                 }
                 w
             } else {
                 let acc = self.accelerations_now();
                 watched(
-                    &self.kernel,
+                    self.kernel,
                     self.regime,
                     &self.segment.piece,
                     &self.vsegment.piece,
