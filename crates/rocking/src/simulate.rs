@@ -234,7 +234,7 @@ struct Watched {
 /// [`Watched`] at `(t, y)`; `acc`, the accelerations there, if known (a
 /// rocking tower on a stuck building does not need them: its `θ̈` does not
 /// depend on `θ̇`).
-#[inline]
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn watched(
     kernel: &Kernel,
