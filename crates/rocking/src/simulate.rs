@@ -520,7 +520,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         while !self.finished && self.t < self.end {
             if self.is_static() {
                 self.advance_static()?;
-            } else if let Some(flight) = self.free_flight() {
+            // A flight starts only at an event (an impact, the start), where
+            // the integrator restarts: other steps skip the test.
+            } else if let Some(flight) = if self.restart { self.free_flight() } else { None } {
                 self.advance_free_flight(flight)?;
             } else {
                 self.advance_dynamic()?;
