@@ -171,10 +171,10 @@ pub(crate) fn parse(s: &Section<'_>, cx: &Context<'_>) -> Result<(GroundSpec, Op
 /// Parses one motion table: `[ground]` (where `vertical` is a table of its
 /// own) or `[ground.vertical]` (where it is not a key).
 fn parse_motion(s: &Section<'_>, cx: &Context<'_>) -> Result<GroundSpec, Fault> {
-    let names: Vec<String> = KINDS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
-    let kind = s
-        .choice("type", KINDS)?
-        .ok_or_else(|| Fault::new(s.key("type"), ErrorKind::Missing(format!("required: one of {}", names.join(", ")))))?;
+    let kind = s.choice("type", KINDS)?.ok_or_else(|| {
+        let names: Vec<String> = KINDS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        Fault::new(s.key("type"), ErrorKind::Missing(format!("required: one of {}", names.join(", "))))
+    })?;
     let horizontal = s.name() == "ground";
     let mut valid = kind.keys().to_vec();
     if horizontal {

@@ -92,9 +92,12 @@ where
     I: IntoIterator,
     I::Item: AsRef<[u8]>,
 {
+    // A line's buffer, not the writer's default 8 KiB (zeroed at every line):
+    // a longer line is only flushed more often into the vector.
     let mut writer = csv::WriterBuilder::new()
         .terminator(csv::Terminator::Any(b'\n'))
-        .from_writer(Vec::with_capacity(256));
+        .buffer_capacity(1024)
+        .from_writer(Vec::with_capacity(1024));
     // Writing to memory cannot fail.
     let _ = writer.write_record(fields);
     let mut bytes = writer.into_inner().unwrap_or_default();
