@@ -1,6 +1,6 @@
 //! The summary of a run: peaks located on the dense output, counts and times.
 
-use crate::equations::{Accelerations, Kernel};
+use crate::equations::Kernel;
 use crate::regime::{Motion, Regime, TowerRegime};
 
 /// Why a run ended (diffsol's `OdeSolverStopReason`).
@@ -142,7 +142,7 @@ impl Tracker {
     /// The response at an instant (an event or the start): displacements, top
     /// acceleration and pivot reactions.
     #[inline]
-    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, g_e: f64, y: &[f64; 4], acc: Accelerations<f64>) {
+    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, g_e: f64, y: &[f64; 4]) {
         self.displacement(y[0], y[2]);
         if !kernel.has_tower {
             return;
@@ -151,8 +151,9 @@ impl Tracker {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p.sign()),
         };
-        let acc_pivot = a_g + acc.slip;
         let lean = s.map(|s| kernel.lean(s, y[0]));
+        let acc = kernel.accelerations_leaning(regime.building, lean, a_g, g_e, y[1]);
+        let acc_pivot = a_g + acc.slip;
         let rotation = lean.map_or((0.0, 1.0), |lean| kernel.rotation(lean));
         let top = kernel.point_kinematics(s, (0.0, kernel.height), rotation, y[1], acc.theta, acc_pivot).1;
         let (fx, fy) = kernel.pivot_reactions(lean, y[1], acc.theta, acc_pivot, g_e);

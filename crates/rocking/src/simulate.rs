@@ -326,7 +326,7 @@ fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
 ///   interpolant's error), less than its smaller end value; or
 /// - it stays off the tangent at the nearer end by at most `τ² max|v̈| / 2`
 ///   (Taylor's remainder, `τ <= h / 2` from that end), and each end's
-///   tangent, less that, stays of the ends' sign up to mid-step (a concave
+///   tangent, less that, keeps the ends' sign up to mid-step (a concave
 ///   lower bound: its least value on `[0, h/2]` is at one of the two ends,
 ///   `v0` itself or `v0 + v̇0 h/2 − max|v̈| h²/8`).
 ///
@@ -454,8 +454,7 @@ type Instant = (Regime, f64, f64, [f64; 4]);
 
 /// Feeds `tracker` the response at `instant`.
 fn track(tracker: &mut Tracker, kernel: &Kernel, (regime, a_g, g_e, y): Instant) {
-    let acc = kernel.accelerations(regime, a_g, g_e, y[0], y[1]);
-    tracker.instant(kernel, regime, a_g, g_e, &y, acc);
+    tracker.instant(kernel, regime, a_g, g_e, &y);
 }
 
 /// The last instants of a cascade jumped in closed form, waiting for the
@@ -747,7 +746,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (f0, f1) = (wide(&self.stepper.f_old()), wide(&self.stepper.f));
         let h = t1 - t0;
         let w0 = self.watch;
-        let w1 = watched(kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&wide(&self.stepper.f))));
+        let w1 = watched(kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&f1)));
         let rocking = matches!(regime.tower, TowerRegime::Rocking(_));
 
         // What needs the inside of the step: see `free_of_roots`.
