@@ -98,9 +98,10 @@ impl Condition {
     }
 
     /// A condition of `θ` alone ([`Condition::of_theta`]) on pivot `s`: the
-    /// impact margin, or the overturn margin for any other condition.
+    /// impact margin or the overturn margin.
     #[inline(always)]
     pub(crate) fn theta_margin<T: Real>(self, s: f64, theta: T) -> T {
+        debug_assert!(self.of_theta(), "{self:?} is not a condition of θ alone");
         if self == Condition::Impact {
             Self::impact_margin(s, theta)
         } else {
@@ -110,13 +111,13 @@ impl Condition {
 
     /// [`Condition::Impact`] on pivot `s`: `−s θ`.
     #[inline(always)]
-    pub(crate) fn impact_margin<T: Real>(s: f64, theta: T) -> T {
+    fn impact_margin<T: Real>(s: f64, theta: T) -> T {
         -(theta * s)
     }
 
     /// [`Condition::Overturn`] on pivot `s`: `s θ − π/2`.
     #[inline(always)]
-    pub(crate) fn overturn_margin<T: Real>(s: f64, theta: T) -> T {
+    fn overturn_margin<T: Real>(s: f64, theta: T) -> T {
         theta * s - FRAC_PI_2
     }
 
