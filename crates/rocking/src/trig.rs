@@ -83,23 +83,41 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     }
 }
 
-/// `sin x`.
+/// Minimax-grade odd polynomial for `sin` on `|x| <= π/2` (a Chebyshev fit of
+/// `(sin √z / √z − 1) / z` in `z = x²`, degree 7, computed at 50 digits; its
+/// error with the coefficients rounded to doubles is below 4e-17 there).
+#[inline(always)]
+fn kernel_sin_wide(x: f64) -> f64 {
+    const S1: f64 = -0.16666666666666666;
+    const S2: f64 = 0.008333333333333316;
+    const S3: f64 = -0.00019841269841254974;
+    const S4: f64 = 2.7557319219163234e-06;
+    const S5: f64 = -2.5052107616996182e-08;
+    const S6: f64 = 1.6058977312464087e-10;
+    const S7: f64 = -7.643970296798572e-13;
+    const S8: f64 = 2.7314447669863995e-15;
+    let z = x * x;
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let r = ((S2 + z * S3) + z2 * (S4 + z * S5)) + z4 * ((S6 + z * S7) + z2 * S8);
+    x + x * z * (S1 + z * r)
+}
+
+/// `sin x`, reduced by π rather than π/2: `sin(x − kπ) = (−1)ᵏ sin x`, so a
+/// single wider kernel serves every argument and the sign is a bit flip. The
+/// quadrant's four-way jump of a reduction by π/2 costs more than the two
+/// extra terms, and mispredicts where a step's stages straddle a quadrant.
 #[inline(always)]
 pub(crate) fn sin(x: f64) -> f64 {
-    if x.abs() <= std::f64::consts::FRAC_PI_4 {
-        return kernel_sin(x);
-    }
-    if x.abs() >= REDUCTION_LIMIT || x.is_nan() {
+    // Written so that NaN takes the fallback.
+    if !(x.abs() < REDUCTION_LIMIT) {
         return libm::sin(x);
     }
-    let k = (x * TWO_OVER_PI + ROUNDER) - ROUNDER;
-    let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
-    match (k as i64) & 3 {
-        0 => kernel_sin(r),
-        1 => kernel_cos(r),
-        2 => -kernel_sin(r),
-        _ => -kernel_cos(r),
-    }
+    let k = (x * std::f64::consts::FRAC_1_PI + ROUNDER) - ROUNDER;
+    // 2·PIO2_i: the same significant bits, so k · PI_1 and k · PI_2 stay exact.
+    let r = ((x - k * (2.0 * PIO2_1)) - k * (2.0 * PIO2_2)) - k * (2.0 * PIO2_3);
+    let odd = (k as i64 as u64 & 1) << 63;
+    f64::from_bits(kernel_sin_wide(r).to_bits() ^ odd)
 }
 
 #[cfg(test)]
