@@ -7,7 +7,7 @@ use rocking::{Building, NormalForce};
 /// The building. `mass` and `mu_static` are required; `mu_kinetic` defaults to
 /// `mu_static` (a single Coulomb coefficient), `normal_force` to "constant".
 pub(crate) fn parse(s: &Section<'_>) -> Result<Building, Fault> {
-    s.only(&crate::keys::section_keys("building"))?;
+    s.only_scenario_keys()?;
     let required = |key: &str, what: &str| -> Result<f64, Fault> {
         s.number(key)?
             .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))

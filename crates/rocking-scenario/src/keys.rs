@@ -447,6 +447,14 @@ pub(crate) fn section_keys(section: &str) -> Vec<&'static str> {
     SCENARIO_KEYS.iter().filter(|k| k.section() == Some(section)).map(KeyDoc::name).collect()
 }
 
+/// Whether `section.name` is a scenario key: what [`section_keys`] answers,
+/// without building the list (a sweep asks for every case).
+pub(crate) fn is_section_key(section: &str, name: &str) -> bool {
+    SCENARIO_KEYS
+        .iter()
+        .any(|k| k.key.strip_prefix(section).and_then(|rest| rest.strip_prefix('.')) == Some(name))
+}
+
 /// The ground types and the keys each takes, as the parser checks them.
 fn ground_types_of(name: &str) -> Vec<&'static str> {
     crate::ground::KINDS
@@ -588,6 +596,23 @@ mod tests {
         assert_eq!(sections, crate::SECTIONS);
         let top: Vec<&str> = SCENARIO_KEYS.iter().filter(|k| k.section().is_none()).map(|k| k.key).collect();
         assert_eq!(top, crate::TOP_LEVEL_KEYS);
+    }
+
+    /// The membership test a sweep asks per case gives what the list answers,
+    /// for every key of every section, for near misses (a prefix of a
+    /// section's name, a key of another section) and for a nested key.
+    #[test]
+    fn membership_agrees_with_the_list_of_a_section() {
+        let mut names: Vec<&str> = SCENARIO_KEYS.iter().map(KeyDoc::name).collect();
+        names.extend(["widt", "width.x", "", "vertical.type", "tower"]);
+        for section in crate::SECTIONS.iter().copied().chain(["towe", "ground.vertical", ""]) {
+            let list = section_keys(section);
+            for name in &names {
+                assert_eq!(is_section_key(section, name), list.contains(name), "{section}.{name}");
+            }
+        }
+        // Both sides are not trivially false: a known key is found.
+        assert!(is_section_key("tower", "width") && !is_section_key("towe", "r.width"));
     }
 
     /// Every key a ground type accepts is in the table: adding a key to a

@@ -70,6 +70,15 @@ impl<'a> Section<'a> {
         }
     }
 
+    /// Rejects every key that is not a scenario key of this section; the list
+    /// of valid keys is built only for the error.
+    pub(crate) fn only_scenario_keys(&self) -> Result<(), Fault> {
+        if self.table.keys().all(|k| crate::keys::is_section_key(self.name, k)) {
+            return Ok(());
+        }
+        self.only(&crate::keys::section_keys(self.name))
+    }
+
     /// The section's dotted name (`ground`, `ground.vertical`).
     pub(crate) fn name(&self) -> &'static str {
         self.name

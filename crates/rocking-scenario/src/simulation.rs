@@ -36,7 +36,7 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
             output_dt: DEFAULT_OUTPUT_DT,
         });
     };
-    s.only(&crate::keys::section_keys("simulation"))?;
+    s.only_scenario_keys()?;
     let value = |key: &str, default: f64| -> Result<f64, Fault> { Ok(s.number(key)?.unwrap_or(default)) };
     // Duration and tolerances are checked by the library (one set of rules and
     // messages); gravity by `Model::new`. Only the history spacing is this crate's.
@@ -65,7 +65,7 @@ pub(crate) fn parse(s: Option<&Section<'_>>) -> Result<SimulationSpec, Fault> {
 /// `[initial]`: `theta` (rad) or `theta_over_alpha`, and `theta_dot` (rad/s); default at rest.
 pub(crate) fn parse_initial(s: Option<&Section<'_>>, tower: Option<&Tower>) -> Result<Initial, Fault> {
     let Some(s) = s else { return Ok(Initial::default()) };
-    s.only(&crate::keys::section_keys("initial"))?;
+    s.only_scenario_keys()?;
     s.exclusive("theta", "theta_over_alpha")?;
     let (theta_key, theta) = match (s.number("theta")?, s.number("theta_over_alpha")?) {
         (Some(theta), _) => ("theta", finite(&s.key("theta"), theta)?),

@@ -17,7 +17,7 @@ enum SectionKind {
 
 /// The tower and the extra points (x, y) in m, tower coordinates, to report.
 pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> {
-    s.only(&crate::keys::section_keys("tower"))?;
+    s.only_scenario_keys()?;
     let required = |key: &str, what: &str| -> Result<f64, Fault> {
         s.number(key)?
             .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))
