@@ -109,8 +109,7 @@ fn kernel_sin_wide(x: f64) -> f64 {
 /// extra terms, and mispredicts where a step's stages straddle a quadrant.
 #[inline(always)]
 pub(crate) fn sin(x: f64) -> f64 {
-    // Written so that NaN takes the fallback.
-    if !(x.abs() < REDUCTION_LIMIT) {
+    if x.abs() >= REDUCTION_LIMIT || x.is_nan() {
         return libm::sin(x);
     }
     let k = (x * std::f64::consts::FRAC_1_PI + ROUNDER) - ROUNDER;
