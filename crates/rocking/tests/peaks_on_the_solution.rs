@@ -8,6 +8,10 @@
 //! reactions are computed here from docs/src/model.md's formulas, independently of
 //! the engine's: `f_x/m2 = Ẍ_p + R (cos φ θ̈ + s sin φ θ̇²)`,
 //! `f_y/m2 = g + R (s sin φ θ̈ − cos φ θ̇²)`.
+//!
+//! The extremes of θ are checked the same way: the engine skips locating a
+//! root of θ̇ when a bound of θ over the step shows it inside the range
+//! already kept, and the range it reports must still be that of the samples.
 #![allow(clippy::unwrap_used)]
 
 mod common;
@@ -21,6 +25,7 @@ struct Dense {
     per_step: usize,
     top: f64,
     demand: f64,
+    theta: (f64, f64),
 }
 
 impl Dense {
@@ -76,6 +81,9 @@ impl Observer for Dense {
             let demand = self.step_max(step, &|t| self.demand_at(step, &step.sample(t)));
             self.top = self.top.max(top);
             self.demand = self.demand.max(demand);
+            let high = self.step_max(step, &|t| step.sample(t).state.theta);
+            let low = -self.step_max(step, &|t| -step.sample(t).state.theta);
+            self.theta = (self.theta.0.min(low), self.theta.1.max(high));
         }
         ControlFlow::Continue(())
     }
@@ -93,11 +101,13 @@ fn check(tower: Tower, ground: GroundMotion, duration: f64) {
         per_step: 200,
         top: 0.0,
         demand: 0.0,
+        theta: (0.0, 0.0),
     };
     let watched = simulate(&model, &ground, Initial::default(), &settings, &mut dense).unwrap();
     assert!(!bare.tower_uplift_detected && bare.impacts > 0);
     // The same run whether observed or not.
     assert_eq!(bare.max_top_abs_acceleration.to_bits(), watched.max_top_abs_acceleration.to_bits());
+    assert_eq!(bare.theta_range, watched.theta_range);
     // Both locate the same maxima of the same dense output: agreement to the
     // refinement's accuracy (1e-12 of the engine's, a golden section to
     // rounding), well inside the 1e-7 asked.
@@ -113,6 +123,15 @@ fn check(tower: Tower, ground: GroundMotion, duration: f64) {
         "demand: {} vs {}",
         bare.max_pivot_friction_demand,
         dense.demand
+    );
+    // θ at its extremes is stationary, so both the engine's Newton solve and
+    // the golden section give its value to a few ulp: 1e-12 relative.
+    assert!(bare.theta_range.0 < 0.0 && bare.theta_range.1 > 0.0, "{:?}", bare.theta_range);
+    assert!(
+        rel(bare.theta_range.0, dense.theta.0) <= 1e-12 && rel(bare.theta_range.1, dense.theta.1) <= 1e-12,
+        "θ range: {:?} vs {:?}",
+        bare.theta_range,
+        dense.theta
     );
 }
 
