@@ -13,6 +13,10 @@
 //! brackets an extremum, located by root finding on the exact derivative.
 //! A step whose ends show no extremum and whose interpolant has no critical
 //! point inside costs nothing beyond the end values.
+//!
+//! [`taylor_enclosure`] bounds a quantity over a whole step from its first
+//! two derivatives at the ends and a bound on the third: a step that cannot
+//! hold a value that matters is not examined inside.
 
 use crate::jet::Jet;
 

@@ -768,7 +768,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // monotone in θ, so its ends tell), the root changes nothing
                 // and is not located (half the steps that hold one in the
                 // 100-case sweep, each a dense output, a Bernstein isolation
-                // and a Newton solve).
+                // and a Newton solve). The two ends are the step's solution,
+                // which the dense output also interpolates: the enclosure is
+                // that of the computed motion, to the step's local error.
                 BuildingRegime::Stick => {
                     let reach = (g_e * g_e + a_max * a_max).sqrt();
                     let rate_bound = kernel.k * reach;

