@@ -16,8 +16,11 @@
 
 mod common;
 use common::G;
+use proptest::prelude::*;
 use rocking::reference::solid_block;
-use rocking::{simulate, Flow, GroundMotion, Harmonic, Initial, Model, Observer, Pulse, PulseShape, Sample, Settings, Step, Tower, TowerRegime};
+use rocking::{
+    simulate, Building, Flow, GroundMotion, Harmonic, Initial, Model, NormalForce, Observer, Pulse, PulseShape, Sample, Settings, Step, Tower, TowerRegime,
+};
 use std::ops::ControlFlow;
 
 struct Dense {
@@ -148,4 +151,37 @@ fn housner_block_under_a_sine_pulse() {
 fn block_under_a_harmonic() {
     let tower = solid_block(0.5, 2.0);
     check(tower, GroundMotion::Harmonic(Harmonic::new(0.5 * G, 2.0, 8.0, 0.0).unwrap()), 10.0);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
+    /// θ's range over random blocks under a harmonic, on a fixed base or on a
+    /// building that stays stuck (μs = 10), against the dense sampling of the
+    /// same run: equal to 1e-12 of its size (both are located on the same
+    /// dense output, where θ is stationary). A run that overturns ends with
+    /// |θ| = π/2 on one side, beyond its last sample: there the sampled range
+    /// must lie inside the reported one.
+    #[test]
+    fn the_reported_theta_range_is_that_of_the_solution(
+        width in 0.3f64..1.5, slenderness in 3.0f64..8.0, amplitude in 1.05f64..2.5,
+        omega_over_p in 1.0f64..8.0, phase in 0.0f64..6.28, stuck in proptest::bool::ANY,
+    ) {
+        let tower = solid_block(width, slenderness * width);
+        let building = stuck.then(|| Building::new(2.0e3, 10.0, 8.0, NormalForce::Constant).unwrap());
+        let model = Model::new(Some(tower), building, G).unwrap();
+        let frequency = omega_over_p * tower.frequency_parameter(G) / (2.0 * std::f64::consts::PI);
+        let ground = GroundMotion::Harmonic(Harmonic::new(amplitude * tower.alpha().tan() * G, frequency, 4.0, phase).unwrap());
+        let settings = Settings { duration: 5.0, ..Settings::default() };
+        let bare = simulate(&model, &ground, Initial::default(), &settings, &mut ()).unwrap();
+        let mut dense = Dense { tower, per_step: 200, top: 0.0, demand: 0.0, theta: (0.0, 0.0) };
+        simulate(&model, &ground, Initial::default(), &settings, &mut dense).unwrap();
+        let (r, d) = (bare.theta_range, dense.theta);
+        let size = r.0.abs().max(r.1.abs());
+        prop_assert!(size > 0.0, "the block rocks: amplitude above g tan α");
+        if bare.overturned() {
+            prop_assert!(r.0 <= d.0 + 1e-12 * size && d.1 <= r.1 + 1e-12 * size, "{r:?} against {d:?}");
+        } else {
+            prop_assert!((r.0 - d.0).abs() <= 1e-12 * size && (r.1 - d.1).abs() <= 1e-12 * size, "{r:?} against {d:?}");
+        }
+    }
 }
