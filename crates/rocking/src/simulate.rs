@@ -780,11 +780,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                         let (lo, hi) = taylor_enclosure([y0[0], y0[1], f0[1]], [y1[0], y1[1], f1[1]], h, third_bound);
                         let (kept_lo, kept_hi) = self.tracker.summary.theta_range;
                         let s = pivot_sign(regime);
-                        lo < kept_lo
-                            || hi > kept_hi
-                            || list
-                                .iter()
-                                .any(|c| c.of_theta() && (c.theta_margin(s, lo) >= 0.0 || c.theta_margin(s, hi) >= 0.0))
+                        // Written as "proved inside", so that a NaN bound proves nothing.
+                        let negative = |c: &Condition| !c.of_theta() || (c.theta_margin(s, lo) < 0.0 && c.theta_margin(s, hi) < 0.0);
+                        let inside = lo >= kept_lo && hi <= kept_hi && list.iter().all(negative);
+                        !inside
                     }
                 }
                 BuildingRegime::Slip(_) => true,
