@@ -56,7 +56,7 @@
 #![allow(clippy::excessive_precision)]
 
 use crate::equations::Kernel;
-use crate::trig::sin_of_angle as sin;
+use crate::trig::sin;
 
 /// Gauss–Legendre nodes and weights on `[0, 1]`, six points (the classical
 /// values on `[−1, 1]` mapped by `x ↦ (x + 1) / 2`). Written out because six
