@@ -206,6 +206,7 @@ fn run<O: Observer, const N: usize>(
         rtol: settings.rtol,
         restart: true,
         watch: Watched::default(),
+        settled: None,
         tracker: Tracker::new(),
         observer,
         switches: 0,
@@ -437,6 +438,8 @@ struct Run<'a, O: Observer, const N: usize> {
     restart: bool,
     /// The watched quantities at `(t, y)`.
     watch: Watched,
+    /// Set when `settle` leaves `watch` computed at the current instant (see [`Settled`]).
+    settled: Option<Settled>,
     tracker: Tracker,
     observer: &'a mut O,
     /// Switches at `switch_time`, to stop chattering.
@@ -447,6 +450,19 @@ struct Run<'a, O: Observer, const N: usize> {
     /// `deferred` instead of the tracker.
     deferring: bool,
     deferred: Deferred,
+}
+
+/// What `settle` computed [`Run::watch`] from, with the accelerations there.
+/// The restart that follows at the same instant needs exactly these (the
+/// right-hand side at `(t, y)` and `watched` with the regime's conditions):
+/// at every kink of a recorded input both were computed twice.
+#[derive(Debug, Clone, Copy)]
+struct Settled {
+    t: f64,
+    y: [f64; 4],
+    regime: Regime,
+    pieces: (Piece, Piece),
+    acc: Accelerations<f64>,
 }
 
 /// An instant for the tracker: regime, `a_g`, `g_e` and state.
@@ -719,6 +735,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// [`Self::advance_dynamic`] with the accelerations `(θ̈, ü)` of the
     /// regime at `(t, θ, θ̇)`: the right-hand side.
+    #[inline(always)]
     fn advance_dynamic_with(&mut self, accelerations: impl Fn(f64, f64, f64) -> Accelerations<f64> + Copy) -> Result<(), Error> {
         let (kernel, regime, piece, vpiece) = (self.kernel, self.regime, self.segment.piece, self.vsegment.piece);
         let g = kernel.g;
@@ -730,9 +747,23 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (list, n) = conditions(kernel, regime);
         let list = &list[..n];
         if self.restart {
-            self.stepper.restart(&mut rhs, self.t, narrow(self.y), self.end);
-            let f = wide(&self.stepper.f);
-            self.watch = watched(kernel, regime, &piece, &vpiece, list, self.t, &self.y, Some(accelerations_of(&f)));
+            // Bit for bit what `settle` saw, or nothing is reused.
+            let same = |c: &Settled| {
+                c.t.to_bits() == self.t.to_bits() && c.y.map(f64::to_bits) == self.y.map(f64::to_bits) && c.regime == regime && c.pieces == (piece, vpiece)
+            };
+            match self.settled.take().filter(same) {
+                Some(c) => {
+                    // `settle` left `watch` computed there.
+                    let y = self.y;
+                    self.stepper
+                        .restart_with(&mut rhs, self.t, narrow(y), narrow([y[1], c.acc.theta, y[3], c.acc.slip]), self.end);
+                }
+                None => {
+                    self.stepper.restart(&mut rhs, self.t, narrow(self.y), self.end);
+                    let f = wide(&self.stepper.f);
+                    self.watch = watched(kernel, regime, &piece, &vpiece, list, self.t, &self.y, Some(accelerations_of(&f)));
+                }
+            }
             self.restart = false;
         }
         // Steps land on kinks and jumps of both inputs, and where `g + a_v` reaches zero.
@@ -1135,19 +1166,19 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     fn settle(&mut self) -> Result<(), Error> {
         while !self.finished {
             let (list, n) = conditions(self.kernel, self.regime);
-            let w = if list[..n].iter().all(|c| c.of_theta()) {
+            let conditions = if list[..n].iter().all(|c| c.of_theta()) {
                 // Conditions on θ alone (a rocking tower on a fixed base): the
                 // value is θ's and the derivative θ̇'s, with no ground motion,
                 // lean or acceleration to evaluate (one of these per impact).
                 let yj = state_jets(&self.y, 0.0, 0.0);
-                let mut w = Watched::default();
-                for (slot, c) in w.conditions.iter_mut().zip(&list[..n]) {
+                let mut conditions = [Jet::default(); MAX_CONDITIONS];
+                for (slot, c) in conditions.iter_mut().zip(&list[..n]) {
                     *slot = c.value(self.kernel, self.regime, Jet::from(0.0), Jet::from(self.kernel.g), &yj);
                 }
-                w
+                conditions
             } else {
                 let acc = self.accelerations_now();
-                watched(
+                self.watch = watched(
                     self.kernel,
                     self.regime,
                     &self.segment.piece,
@@ -1156,10 +1187,18 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     self.t,
                     &self.y,
                     Some(acc),
-                )
+                );
+                self.settled = Some(Settled {
+                    t: self.t,
+                    y: self.y,
+                    regime: self.regime,
+                    pieces: (self.segment.piece, self.vsegment.piece),
+                    acc,
+                });
+                self.watch.conditions
             };
             let holds = |j: Jet| j.v > 0.0 || (j.v == 0.0 && j.d > 0.0);
-            let Some(i) = (0..n).find(|&i| holds(w.conditions[i])) else {
+            let Some(i) = (0..n).find(|&i| holds(conditions[i])) else {
                 return Ok(());
             };
             self.switch(list[i])?;

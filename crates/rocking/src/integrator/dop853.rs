@@ -151,12 +151,19 @@ impl<const N: usize> Dop853<N> {
     /// Starts (or restarts, after an event) at `(t, y)`. The previous step size is
     /// kept as the first guess; on the very first start one is estimated.
     pub(crate) fn restart(&mut self, rhs: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], t: f64, y: [f64; N], t_bound: f64) {
+        let f = rhs(t, &y);
+        self.evaluations += 1;
+        self.restart_with(rhs, t, y, f, t_bound);
+    }
+
+    /// [`Self::restart`] with the right-hand side at `(t, y)` already known
+    /// (`rhs` is called only to estimate a first step).
+    pub(crate) fn restart_with(&mut self, rhs: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], t: f64, y: [f64; N], f: [f64; N], t_bound: f64) {
         self.t = t;
         self.y = y;
         self.t_old = t;
         self.y_old = y;
-        self.f = rhs(t, &y);
-        self.evaluations += 1;
+        self.f = f;
         self.dense = None;
         self.min_step_floor = 10.0 * ulp(t_bound.abs());
         if self.h <= 0.0 || !self.h.is_finite() {
