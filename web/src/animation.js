@@ -1,31 +1,93 @@
-// The tower rocking on the sliding church, to scale, driven by the history:
-// the church moves by the slip u, the tower turns about its pivot corner
-// (s b, 0) by θ (docs/src/model.md, "Points of the tower": Rot(θ) (x − s b, y)).
-// The church's outline is schematic (the model knows only its mass); the
-// tower's size, its rotation and the slip are true to scale.
+// The tower rocking on the sliding church, driven by the history: the church
+// moves by the slip u, the tower turns about its pivot corner (s b, 0) by θ
+// (docs/src/model.md, "Points of the tower": Rot(θ) (x − s b, y)). The
+// church's outline is schematic (the model knows only its mass); the tower's
+// size is to scale, its rotation and the slip are to scale times the
+// exaggeration factors written on the drawing. Dashed: the church where it
+// started and the tower at rest on it. Under the slider, the timeline: the
+// spans where the church slides shaded, the impacts as red ticks.
+
+/** The exaggeration factors offered; "auto" picks one of them. */
+export const FACTORS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
+
+/** The largest factor of FACTORS that keeps `peak × factor` within `target` (1 for a zero peak). */
+export function autoFactor(peak, target) {
+  if (!(peak > 0)) return 1;
+  return FACTORS.filter((f) => peak * f <= target).pop() || 1;
+}
 
 export class Animation {
-  constructor(canvas, slider, label, button) {
-    Object.assign(this, { canvas, slider, label, button });
+  /** `controls`: { slider, label, button, timeline, theta, slip, speed } (elements). */
+  constructor(canvas, controls) {
+    Object.assign(this, { canvas, ...controls });
     this.index = 0;
     this.playing = false;
-    slider.addEventListener("input", () => {
-      this.index = Number(slider.value);
+    this.slider.addEventListener("input", () => {
+      this.index = Number(this.slider.value);
       this.draw();
     });
-    button.addEventListener("click", () => (this.playing ? this.pause() : this.play()));
+    this.button.addEventListener("click", () => (this.playing ? this.pause() : this.play()));
+    for (const select of [this.theta, this.slip]) {
+      select.replaceChildren(new Option("auto", "auto"), ...FACTORS.map((f) => new Option(`${f}×`, String(f))));
+      select.addEventListener("change", () => this.draw());
+    }
+    for (const s of [0.25, 0.5, 1, 2, 4]) this.speed.append(new Option(`${s}×`, String(s), s === 1, s === 1));
+    this.timeline.addEventListener("click", (e) => {
+      const box = this.timeline.getBoundingClientRect();
+      this.seek(((e.clientX - box.left) / box.width) * this.end());
+    });
   }
 
   update(scenario, result) {
     const tower = scenario.tower || null;
-    const b = tower && typeof tower.width === "number" ? tower.width / 2 : Math.max(0.5, (result.summary.R_m || 1) * Math.sin(result.summary.alpha_rad || 0.3));
-    const h = tower && typeof tower.height === "number" ? tower.height : Math.max(1, (result.summary.R_m || 4) * Math.cos(result.summary.alpha_rad || 0.3) * 2);
+    const s = result.summary;
+    const b = tower && typeof tower.width === "number" ? tower.width / 2 : Math.max(0.5, (s.R_m || 1) * Math.sin(s.alpha_rad || 0.3));
+    const h = tower && typeof tower.height === "number" ? tower.height : Math.max(1, (s.R_m || 4) * Math.cos(s.alpha_rad || 0.3) * 2);
     this.shape = { tower: !!tower, building: !!scenario.building, b, h };
+    this.alpha = s.alpha_rad;
     this.history = result.history;
+    this.regimeNames = result.regimeNames;
+    this.events = result.events;
+    this.slips = result.slips;
+    // auto: a peak rotation drawn as about 15°, a peak slip as a quarter of the church's length (8 b).
+    this.auto = { theta: autoFactor(s.max_abs_theta_rad, (15 * Math.PI) / 180), slip: autoFactor(s.max_abs_slip_m, 2 * b) };
+    for (const [key, select] of [["theta", this.theta], ["slip", this.slip]]) select.options[0].text = `auto (${this.auto[key]}×)`;
     const n = this.history.t.length;
     this.slider.max = String(Math.max(0, n - 1));
     this.index = Math.min(this.index, n - 1);
     this.slider.value = String(this.index);
+    this.canvas.setAttribute(
+      "aria-label",
+      `The tower on the church, animated: peak θ/α ${fmt(s.max_theta_over_alpha)}, peak slip ${fmt(s.max_abs_slip_m)} m, ` +
+        `${s.impacts ?? 0} impacts${s.overturned ? `, overturned at ${fmt(s.overturn_time_s)} s` : ""}.`,
+    );
+    this.draw();
+  }
+
+  /** The exaggeration factor in use for "theta" or "slip". */
+  factor(key) {
+    const v = this[key].value;
+    return v === "auto" ? this.auto?.[key] || 1 : Number(v);
+  }
+
+  end() {
+    const t = this.history?.t;
+    return t ? t[t.length - 1] : 0;
+  }
+
+  /** Shows the last row at or before time `t`. */
+  seek(t) {
+    const times = this.history?.t;
+    if (!times) return;
+    let lo = 0;
+    let hi = times.length - 1;
+    while (lo < hi) {
+      const mid = (lo + hi + 1) >> 1;
+      if (times[mid] <= t) lo = mid;
+      else hi = mid - 1;
+    }
+    this.index = lo;
+    this.slider.value = String(lo);
     this.draw();
   }
 
@@ -33,13 +95,14 @@ export class Animation {
     if (!this.history) return;
     this.playing = true;
     this.button.textContent = "❚❚ pause";
+    this.button.setAttribute("aria-label", "pause the animation");
     const h = this.history;
     if (this.index >= h.t.length - 1) this.index = 0;
     let wall = performance.now();
     let t = h.t[this.index];
     const step = (now) => {
       if (!this.playing) return;
-      t += (now - wall) / 1000;
+      t += ((now - wall) / 1000) * Number(this.speed.value);
       wall = now;
       while (this.index < h.t.length - 1 && h.t[this.index + 1] <= t) this.index++;
       this.slider.value = String(this.index);
@@ -53,6 +116,7 @@ export class Animation {
   pause() {
     this.playing = false;
     this.button.textContent = "▶ play";
+    this.button.setAttribute("aria-label", "play the animation");
   }
 
   draw() {
@@ -60,25 +124,48 @@ export class Animation {
     if (!hist || !shape) return;
     const ctx = canvas.getContext("2d");
     const i = this.index;
-    const theta = hist.theta[i];
-    const u = hist.slip[i];
+    const fTheta = this.factor("theta");
+    const fSlip = this.factor("slip");
+    // Past a quarter turn the drawing would fold over: the drawn angle stops at 90°.
+    const theta = Math.max(-Math.PI / 2, Math.min(Math.PI / 2, hist.theta[i] * fTheta));
+    const u = hist.slip[i] * fSlip;
     const { b, h } = shape;
     // The church: schematic, 4 tower widths long and half the tower's height.
     const church = shape.building ? { w: 8 * b, h: 0.5 * h } : { w: 0, h: 0 };
     const worldW = Math.max(church.w, 2 * b) + 2 * h;
     const worldH = church.h + h * 1.15;
-    const scale = Math.min(canvas.width / worldW, (canvas.height - 30) / worldH);
+    const scale = Math.min(canvas.width / worldW, (canvas.height - 46) / worldH);
     const X = (x) => canvas.width / 2 + x * scale;
     const Y = (y) => canvas.height - 20 - y * scale;
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     // Ground.
     ctx.strokeStyle = "#555";
+    ctx.setLineDash([]);
     ctx.beginPath();
     ctx.moveTo(0, Y(0));
     ctx.lineTo(canvas.width, Y(0));
     ctx.stroke();
-    // Church, moved by the slip.
     const base = church.h;
+    const churchPath = (shift) => {
+      ctx.beginPath();
+      ctx.moveTo(X(shift - church.w / 2), Y(0));
+      ctx.lineTo(X(shift - church.w / 2), Y(church.h));
+      ctx.lineTo(X(shift), Y(church.h * 1.35));
+      ctx.lineTo(X(shift + church.w / 2), Y(church.h));
+      ctx.lineTo(X(shift + church.w / 2), Y(0));
+    };
+    const towerPath = (shift, angle) => {
+      const s = angle > 0 ? 1 : angle < 0 ? -1 : 0;
+      const c = Math.cos(angle);
+      const sn = Math.sin(angle);
+      ctx.beginPath();
+      for (const [x, y] of [[-b, 0], [b, 0], [b, h], [-b, h]]) {
+        const px = s * b + c * (x - s * b) + sn * y;
+        const py = -sn * (x - s * b) + c * y;
+        ctx.lineTo(X(shift + px), Y(base + py));
+      }
+      ctx.closePath();
+    };
     if (shape.building) {
       ctx.fillStyle = "#d9c8a9";
       ctx.fillRect(X(u - church.w / 2), Y(church.h), church.w * scale, church.h * scale);
@@ -91,28 +178,65 @@ export class Animation {
       ctx.fill();
     }
     if (shape.tower) {
-      const s = theta > 0 ? 1 : theta < 0 ? -1 : 0;
-      const c = Math.cos(theta);
-      const sn = Math.sin(theta);
-      const point = (x, y) => {
-        const px = s * b + c * (x - s * b) + sn * y;
-        const py = -sn * (x - s * b) + c * y;
-        return [X(u + px), Y(base + py)];
-      };
-      ctx.beginPath();
-      for (const [x, y] of [[-b, 0], [b, 0], [b, h], [-b, h]]) ctx.lineTo(...point(x, y));
-      ctx.closePath();
+      towerPath(u, theta);
       ctx.fillStyle = "#8c8c8c";
       ctx.fill();
       ctx.strokeStyle = "#333";
       ctx.stroke();
     }
-    // Scale bar.
+    // The ghosts: the church where it started, the tower at rest on it.
+    ctx.strokeStyle = "rgba(30, 60, 140, 0.8)";
+    ctx.setLineDash([5, 4]);
+    if (shape.building) {
+      churchPath(0);
+      ctx.stroke();
+    }
+    if (shape.tower) {
+      towerPath(0, 0);
+      ctx.stroke();
+    }
+    ctx.setLineDash([]);
+    // Scale bar (true lengths) and the factors.
     const bar = Math.pow(10, Math.floor(Math.log10(worldW / 4)));
     ctx.fillStyle = "#333";
     ctx.fillRect(10, canvas.height - 8, bar * scale, 3);
-    ctx.font = "11px sans-serif";
+    ctx.font = "12px sans-serif";
     ctx.fillText(`${bar} m`, 14 + bar * scale, canvas.height - 4);
-    this.label.textContent = `t = ${hist.t[i].toFixed(3)} s   θ = ${theta.toExponential(3)} rad   slip = ${u.toExponential(3)} m   ${hist.regime[i]}`;
+    ctx.fillText(`rotation ×${fTheta}, slip ×${fSlip}${fTheta > 1 || fSlip > 1 ? " (exaggerated)" : " (true scale)"}; dashed: at rest`, 10, 16);
+    // What the drawing shows, for tests and assistive technology.
+    canvas.dataset.pxPerM = String(scale);
+    canvas.dataset.churchShiftPx = String(u * scale);
+    canvas.dataset.drawnThetaRad = String(theta);
+    const regime = this.regimeNames[hist.regime[i]];
+    this.label.textContent = `t = ${hist.t[i].toFixed(3)} s   θ/α = ${fmt(hist.theta[i] / (this.alpha || 1))}   θ = ${hist.theta[i].toExponential(3)} rad   slip = ${hist.slip[i].toExponential(3)} m   ${regime}`;
+    this.slider.setAttribute("aria-valuetext", `t = ${hist.t[i].toFixed(3)} s`);
+    this.drawTimeline();
   }
+
+  drawTimeline() {
+    const c = this.timeline;
+    const ctx = c.getContext("2d");
+    const end = this.end() || 1;
+    const x = (t) => (t / end) * c.width;
+    ctx.clearRect(0, 0, c.width, c.height);
+    ctx.fillStyle = "#eee";
+    ctx.fillRect(0, 0, c.width, c.height);
+    ctx.fillStyle = "rgba(230, 140, 20, 0.6)";
+    for (const [a, b] of this.slips || []) ctx.fillRect(x(a), 0, Math.max(1, x(b) - x(a)), c.height);
+    ctx.strokeStyle = "#c00";
+    ctx.beginPath();
+    for (const e of this.events || []) {
+      if (e.kind !== "impact" && e.kind !== "overturn") continue;
+      const px = Math.round(x(e.t)) + 0.5;
+      ctx.moveTo(px, 0);
+      ctx.lineTo(px, c.height);
+    }
+    ctx.stroke();
+    ctx.fillStyle = "#1f4e99";
+    ctx.fillRect(x(this.history.t[this.index]) - 1, 0, 2, c.height);
+  }
+}
+
+function fmt(v) {
+  return typeof v === "number" ? String(Number(v.toPrecision(3))) : "—";
 }

@@ -5,7 +5,7 @@ import { rocking } from "./rocking.js";
 import { drawHeatmap } from "./heatmap.js";
 import { Animation } from "./animation.js";
 import { Charts } from "./charts.js";
-import examples from "../examples.js";
+import examples, { records } from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
 
@@ -92,16 +92,64 @@ const isMotion = (section) => section === "ground" || section === "ground.vertic
 let scenario = {};
 let result = null;
 let removed = {}; // sections switched off, kept to switch them back on
-let recordName = "";
+// The record of each motion section ("ground", "ground.vertical"): the name it
+// was given (a file's, or a bundled record's path), shown and put in links.
+let recordNames = {};
+// The motion sections whose record a link or a TOML file names but the page
+// does not hold: it asks for the file and runs once given.
+let missingRecords = {};
 let sweepCsv = "";
-const charts = new Charts($("charts"));
-const animation = new Animation($("tower-canvas"), $("time"), $("time-label"), $("play"));
+const charts = new Charts($("theta-chart"), $("charts"));
+const animation = new Animation($("tower-canvas"), {
+  slider: $("time"),
+  label: $("time-label"),
+  button: $("play"),
+  timeline: $("timeline"),
+  theta: $("exaggerate-theta"),
+  slip: $("exaggerate-slip"),
+  speed: $("speed"),
+});
 
+/** The dotted key an error line names (`scenario.toml: tower.width: must be …` → `tower.width`), or "". */
+function keyOf(message) {
+  const m = /^(?:[^:]*\.toml: )?([A-Za-z_][\w.]*): /.exec(message);
+  return m ? m[1] : "";
+}
+
+/**
+ * Shows an error line (or clears it with ""): in the banner (kept in view),
+ * and beside the field it names, which is marked invalid; the results of the
+ * last valid input stay, marked stale.
+ */
 function showError(message) {
   const box = $("error");
   box.textContent = message;
   box.hidden = !message;
-  $("results").classList.toggle("stale", !!message);
+  for (const el of document.querySelectorAll("[aria-invalid]")) {
+    el.removeAttribute("aria-invalid");
+    el.removeAttribute("aria-describedby");
+  }
+  for (const el of document.querySelectorAll(".field-error")) el.remove();
+  if (message) {
+    const key = keyOf(message);
+    const input = key && document.querySelector(`[name="${CSS.escape(key)}"]`);
+    if (input) {
+      input.setAttribute("aria-invalid", "true");
+      const note = document.createElement("div");
+      note.className = "field-error";
+      note.id = `error-${key}`;
+      note.textContent = message.slice(message.indexOf(key) + key.length + 2);
+      input.closest(".field").after(note);
+      input.setAttribute("aria-describedby", note.id);
+    }
+    markStale("Not computed: the input has an error (the results shown are of the last valid input).");
+  }
+}
+
+/** Marks the shown results as not those of the inputs, with why. */
+function markStale(why) {
+  $("results").classList.add("stale");
+  $("status").textContent = why;
 }
 
 /** A field's text as a value: a number if it reads as one, else the text (the engine names the key and the type). */
@@ -160,6 +208,7 @@ function field(section, f, value) {
     input.value = value === undefined ? "" : String(value);
   }
   input.name = `${section}.${f.k}`;
+  input.id = `field-${section}.${f.k}`;
   input.addEventListener(f.t === "select" ? "change" : "input", () => {
     const table = ensureTable(section);
     const v = f.t === "select" ? input.value || undefined : parseValue(input.value);
@@ -169,14 +218,42 @@ function field(section, f, value) {
       // The keys of another type go; the vertical table is not a key of [ground]'s type.
       for (const k of Object.keys(table)) if (!GROUND_KEYS[v].includes(k) && k !== "vertical") delete table[k];
       buildForm();
+      if (v === "record" && table.text === undefined) missingRecords[section] = "a record file";
+      else delete missingRecords[section];
     }
-    recompute();
+    // While a number is being typed its intermediate values ("0" on the way
+    // to "0.3") are not errors: an error waits until the typing pauses or the
+    // field is left.
+    recompute({ typing: f.t !== "select" });
   });
+  if (f.t !== "select") {
+    input.addEventListener("change", () => {
+      if (section === "building" && f.k === "mu_static") lowerKineticFriction();
+      recompute();
+    });
+  }
   const unit = document.createElement("span");
   unit.className = "unit";
   unit.textContent = f.u || "";
   label.append(name, input, unit);
   return label;
+}
+
+/**
+ * μk ≤ μs: a μs lowered below μk (once its field is left) lowers μk with it,
+ * said beside the μk field.
+ */
+function lowerKineticFriction() {
+  const b = scenario.building;
+  if (!b || typeof b.mu_static !== "number" || typeof b.mu_kinetic !== "number" || b.mu_kinetic <= b.mu_static) return;
+  b.mu_kinetic = b.mu_static;
+  const input = document.querySelector('[name="building.mu_kinetic"]');
+  input.value = String(b.mu_static);
+  const note = document.createElement("div");
+  note.className = "field-note";
+  note.textContent = "lowered to μs (μk ≤ μs)";
+  document.querySelector(".field-note")?.remove();
+  input.closest(".field").after(note);
 }
 
 function toggleSection(section, on) {
@@ -198,7 +275,22 @@ function toggleSection(section, on) {
 }
 
 let pending = false;
-function recompute() {
+let typing = false;
+let errorTimer = 0;
+// The cost of a run per history row (one per output_dt), which sets the
+// cost of a long run: measured in headless Chromium on this project's 2-core
+// machine with the default example at 20,000 s (4,000,001 rows): 5.5–6.9 s
+// in the worker (1.4–1.7 µs a row), and the browser's memory 1.86 GB above
+// its level before the run (465 bytes a row: the engine's samples and
+// columns, their copies in JavaScript, the regime's text).
+const COST = { row_s: 1.7e-6, bytes_per_row: 470 };
+/** The runs the user has confirmed despite their cost (their JSON text). */
+let confirmed = "";
+
+/** Recomputes at the next frame; `typing`: an error of this change waits (see field()). */
+function recompute({ typing: isTyping = false } = {}) {
+  typing = isTyping;
+  setState("computing");
   if (pending) return;
   pending = true;
   requestAnimationFrame(() => {
@@ -207,20 +299,85 @@ function recompute() {
   });
 }
 
-function computeNow() {
+/** The number of history rows, time and memory a run of the scenario would take, from COST. */
+function runEstimate(s) {
+  const sim = s.simulation || {};
+  const duration = typeof sim.duration === "number" ? sim.duration : 20;
+  const dt = typeof sim.output_dt === "number" ? sim.output_dt : 0.005;
+  const rows = dt > 0 ? Math.floor(duration / dt) + 1 : 0;
+  return { rows, seconds: rows * COST.row_s, bytes: rows * COST.bytes_per_row };
+}
+
+/** Asks before a run that would take over 2 s or 400 MB; true if it may go. */
+function mayRun(text) {
+  const e = runEstimate(scenario);
+  const box = $("run-warning");
+  if ((e.seconds <= 2 && e.bytes <= 4e8) || confirmed === text) {
+    box.hidden = true;
+    return true;
+  }
+  $("run-warning-text").textContent =
+    `This run writes ${e.rows.toLocaleString("en")} history rows (simulation.duration / output_dt): ` +
+    `about ${e.seconds.toFixed(0)} s and ${(e.bytes / 1e6).toFixed(0)} MB in this browser. A larger output_dt or a shorter duration is quicker.`;
+  box.hidden = false;
+  $("run-anyway").onclick = () => {
+    confirmed = text;
+    box.hidden = true;
+    computeNow();
+  };
+  markStale("Waiting: this run would take long (see above).");
+  setState("waiting");
+  return false;
+}
+
+/**
+ * The page's state, on <body data-state>: "computing", "done" (the results
+ * are those of the inputs), "error", or "waiting" (for a record file, or for
+ * a long run to be confirmed).
+ */
+function setState(state) {
+  document.body.dataset.state = state;
+}
+
+let shown = 0; // the number of the request whose results are shown
+let requested = 0;
+async function computeNow() {
   saveToUrl();
+  const wanted = Object.keys(missingRecords);
+  showRecordPrompt();
+  if (wanted.length) {
+    markStale("Waiting for the record file (see the box under the form).");
+    setState("waiting");
+    return;
+  }
+  const text = JSON.stringify(scenario);
+  if (!mayRun(text)) return;
+  const id = ++requested;
+  const wasTyping = typing;
+  setState("computing");
+  $("status").textContent = "Computing…";
   try {
-    result = rocking.run(scenario);
-    const derived = rocking.check(scenario);
+    const out = await rocking.runInWorker(scenario);
+    if (id < shown) return;
+    shown = id;
+    clearTimeout(errorTimer);
     showError("");
-    result.gravity = derived.g_m_s2;
+    result = out;
+    result.gravity = out.derived.g_m_s2;
     charts.update(result);
     animation.update(scenario, result);
     fillTable($("summary"), result.summary);
-    fillTable($("check"), derived);
+    fillTable($("check"), out.derived);
+    $("results").classList.remove("stale");
     $("status").textContent = `Computed in ${(result.summary.wall_time_s * 1000).toFixed(1)} ms.`;
+    if (id === requested) setState("done");
   } catch (e) {
-    showError(e.message);
+    if (e.superseded || id < shown) return;
+    shown = id;
+    clearTimeout(errorTimer);
+    if (id === requested) setState("error");
+    if (wasTyping) errorTimer = setTimeout(() => showError(e.message), 800);
+    else showError(e.message);
   }
 }
 
@@ -266,10 +423,22 @@ function fillTable(table, obj) {
 }
 
 // ---- the scenario in the URL ----
+/** The motion tables of a scenario, by section. */
+function motionTables(s) {
+  return [["ground", s.ground], ["ground.vertical", s.ground?.vertical]].filter(([, t]) => t && typeof t === "object");
+}
+
 function saveToUrl() {
   const shared = structuredClone(scenario);
-  // A record's content does not fit a link: the link carries the other keys.
-  if (shared.ground) delete shared.ground.text;
+  // A record's content does not fit a link: the link names its file instead
+  // (a bundled record's path, which the page finds again; else the file's
+  // name, which the page asks for).
+  for (const [section, t] of motionTables(shared)) {
+    if (t.text !== undefined) {
+      delete t.text;
+      t.file = recordNames[section] || "record";
+    } else if (missingRecords[section] && t.type === "record") t.file = missingRecords[section];
+  }
   history.replaceState(null, "", "#" + encodeURIComponent(JSON.stringify(shared)));
 }
 
@@ -277,14 +446,65 @@ function loadFromUrl() {
   if (location.hash.length < 2) return false;
   try {
     scenario = JSON.parse(decodeURIComponent(location.hash.slice(1)));
-    return true;
   } catch {
     showError("the link's scenario is not valid JSON");
     return false;
   }
+  attachRecords("");
+  selectExample(null);
+  return true;
+}
+
+/** `rel` taken from directory `dir` ("a/b" + "../c" → "a/c"). */
+function joinPath(dir, rel) {
+  const parts = dir ? dir.split("/") : [];
+  for (const p of rel.split("/")) {
+    if (p === "..") parts.pop();
+    else if (p !== "." && p !== "") parts.push(p);
+  }
+  return parts.join("/");
+}
+
+/**
+ * Puts each record a motion table names by `file` (relative to `dir`) in
+ * place as its text when the page holds it (the examples' records); the
+ * others are asked for (missingRecords).
+ */
+function attachRecords(dir) {
+  recordNames = {};
+  missingRecords = {};
+  for (const [section, t] of motionTables(scenario)) {
+    if (t.type !== "record" || t.text !== undefined) continue;
+    const file = typeof t.file === "string" ? t.file : "";
+    const path = [joinPath(dir, file), file].find((p) => p in records);
+    delete t.file;
+    if (path) {
+      t.text = records[path];
+      recordNames[section] = path;
+    } else missingRecords[section] = file || "a record file";
+  }
+}
+
+/** The box that asks for the record files a case needs, and names those it has. */
+function showRecordPrompt() {
+  const wanted = Object.entries(missingRecords);
+  const drop = $("drop");
+  drop.classList.toggle("needed", wanted.length > 0);
+  $("record-needed").textContent = wanted.length
+    ? `This case needs its record: ${wanted.map(([s, f]) => `${f} (${s})`).join(", ")}. Choose the file or drop it here; it runs once given.`
+    : "";
+  $("record-name").textContent = Object.entries(recordNames)
+    .map(([s, n]) => `${s}: record ${n}${tableOf(s)?.text ? ` (${tableOf(s).text.length} characters)` : ""}`)
+    .join("; ");
+}
+
+/** Shows example `index` (a number) as the one loaded, or none. */
+function selectExample(index) {
+  $("example").value = index === null ? "" : String(index);
 }
 
 // ---- examples, files, records ----
+/** Loads a TOML file's text; `path` names it in errors and resolves the record files it names. */
 function loadToml(text, path) {
   try {
     const table = rocking.fromToml(text);
@@ -292,6 +512,7 @@ function loadToml(text, path) {
     delete table.sweep;
     scenario = table;
     removed = {};
+    attachRecords(path.includes("/") ? path.slice(0, path.lastIndexOf("/")) : "");
     if (sweep) setAxes(sweep);
     buildForm();
     recompute();
@@ -300,14 +521,24 @@ function loadToml(text, path) {
   }
 }
 
+/**
+ * A record file's text given on the page: the record a case waits for (the
+ * horizontal one first), else the horizontal motion, which becomes this
+ * record (its format, scale, units and dt kept if it was one).
+ */
 function loadRecord(name, text) {
-  const ground = scenario.ground || {};
-  const keep = {};
-  for (const k of ["format", "scale", "units", "dt"]) if (ground.type === "record" && ground[k] !== undefined) keep[k] = ground[k];
-  // A vertical motion stays: the record is the horizontal one.
-  scenario.ground = { type: "record", text, ...keep, ...(ground.vertical ? { vertical: ground.vertical } : {}) };
-  recordName = name;
-  $("record-name").textContent = `record: ${name} (${text.length} characters)`;
+  const section = Object.keys(missingRecords)[0];
+  if (section) {
+    delete missingRecords[section];
+    ensureTable(section).text = text;
+  } else {
+    const ground = scenario.ground || {};
+    const keep = {};
+    for (const k of ["format", "scale", "units", "dt"]) if (ground.type === "record" && ground[k] !== undefined) keep[k] = ground[k];
+    // A vertical motion stays: the record is the horizontal one.
+    scenario.ground = { type: "record", text, ...keep, ...(ground.vertical ? { vertical: ground.vertical } : {}) };
+  }
+  recordNames[section || "ground"] = name;
   buildForm();
   recompute();
 }
@@ -321,7 +552,10 @@ function setupFiles() {
   });
   $("open-toml").addEventListener("change", async (ev) => {
     const file = ev.target.files[0];
-    if (file) loadToml(await file.text(), file.name);
+    if (file) {
+      selectExample(null);
+      loadToml(await file.text(), file.name);
+    }
   });
   $("record-file").addEventListener("change", async (ev) => {
     const file = ev.target.files[0];
@@ -346,23 +580,22 @@ function csv(columns, rows) {
   return [columns.join(","), ...rows.map((r) => r.map((v) => (v === null || v === undefined ? "" : String(v))).join(","))].join("\n") + "\n";
 }
 
-function download(name) {
+async function download(name) {
   let text;
   if (name === "scenario.toml") text = rocking.toToml(scenario);
   else if (name === "sweep.csv") text = sweepCsv;
   else if (!result) return;
   else if (name === "summary.json") text = JSON.stringify(result.summary, null, 2) + "\n";
   else if (name === "history.csv") {
-    const cols = Object.keys(result.history);
-    const n = result.history.t.length;
-    text = csv(cols, Array.from({ length: n }, (_, i) => cols.map((c) => result.history[c][i])));
+    // Written by the run's worker, which holds every row of a long history.
+    text = await rocking.historyCsv();
   } else if (name === "events.csv") {
     const cols = result.eventColumns;
     text = csv(cols, result.events.map((e) => cols.map((c) => e[c])));
   }
   if (!text) return;
   const a = document.createElement("a");
-  a.href = URL.createObjectURL(new Blob([text], { type: "text/plain" }));
+  a.href = URL.createObjectURL(text instanceof Blob ? text : new Blob([text], { type: "text/plain" }));
   a.download = name;
   a.click();
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
@@ -446,7 +679,7 @@ async function runSweep() {
 
 async function main() {
   setupFiles();
-  for (const b of document.querySelectorAll("[data-download]")) b.addEventListener("click", () => download(b.dataset.download));
+  for (const b of document.querySelectorAll("[data-download]")) b.addEventListener("click", () => download(b.dataset.download).catch((e) => ($("status").textContent = e.message)));
   $("copy-link").addEventListener("click", () => navigator.clipboard?.writeText(location.href));
   $("sweep-run").addEventListener("click", runSweep);
   $("sweep-cancel").addEventListener("click", () => controller?.abort());
@@ -464,8 +697,11 @@ async function main() {
     buildForm();
     computeNow();
   } else {
-    const first = examples.find((e) => e.path === "examples/tower-on-church.toml") || examples[0];
-    if (first) loadToml(first.toml, first.path);
+    const first = Math.max(0, examples.findIndex((e) => e.path === "examples/tower-on-church.toml"));
+    if (examples[first]) {
+      selectExample(first);
+      loadToml(examples[first].toml, examples[first].path);
+    }
   }
 }
 

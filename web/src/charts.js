@@ -3,22 +3,6 @@
 // intervals shaded. uPlot draws 10^4-point series in a few milliseconds.
 import uPlot from "../vendor/uPlot.esm.js";
 
-/** Contiguous [t0, t1] spans where the building slides (regime sliding or rocking_sliding). */
-function slipIntervals(h) {
-  const spans = [];
-  let start = null;
-  for (let i = 0; i < h.t.length; i++) {
-    const sliding = h.regime[i] === "sliding" || h.regime[i] === "rocking_sliding";
-    if (sliding && start === null) start = h.t[i];
-    if (!sliding && start !== null) {
-      spans.push([start, h.t[i]]);
-      start = null;
-    }
-  }
-  if (start !== null) spans.push([start, h.t[h.t.length - 1]]);
-  return spans;
-}
-
 function markers(state) {
   return {
     hooks: {
@@ -55,41 +39,86 @@ function markers(state) {
   };
 }
 
+/** A tick's text: 3 significant digits, in exponent form below 10⁻³ (no 0.0000012 over the axis label). */
+export function tickText(v) {
+  if (v === 0) return "0";
+  return Math.abs(v) < 1e-3 || Math.abs(v) >= 1e5 ? v.toExponential(1) : String(Number(v.toPrecision(3)));
+}
+
+/**
+ * A y scale's range: uPlot's own for a quantity that varies; around the
+ * value for a constant one (an all-zero slip gets −1 … 1, not 0 … 100).
+ */
+export function yRange(u, min, max) {
+  if (min === null || max === null || !Number.isFinite(min) || !Number.isFinite(max)) return [-1, 1];
+  if (min === max) {
+    const pad = Math.abs(min) * 0.1 || 1;
+    return [min - pad, max + pad];
+  }
+  return uPlot.rangeNum(min, max, 0.1, true);
+}
+
+/** A y axis labelled `label`, wide enough for its ticks' texts (so that the label never overlaps them). */
+function yAxis(label, extra = {}) {
+  return {
+    label,
+    values: (u, splits) => splits.map(tickText),
+    size: (u, values) => 18 + 7 * Math.max(3, ...(values || []).map((v) => String(v).length)),
+    ...extra,
+  };
+}
+
 export class Charts {
-  constructor(container) {
-    this.container = container;
+  /** The θ/α chart goes into `first`, the slip's and the top's into `rest`. */
+  constructor(first, rest) {
+    this.first = first;
+    this.container = rest;
     this.state = { impacts: [], slips: [] };
     this.plots = null;
+    new ResizeObserver(() => this.resize()).observe(rest);
   }
 
-  create(width) {
+  widths() {
+    return [this.first, this.container].map((c) => Math.max(240, Math.min(900, c.clientWidth || 700)));
+  }
+
+  resize() {
+    if (!this.plots) return;
+    const [w0, w1] = this.widths();
+    this.plots.forEach((p, k) => p.width !== (k ? w1 : w0) && p.setSize({ width: k ? w1 : w0, height: p.height }));
+  }
+
+  create() {
+    const [w0, w1] = this.widths();
     const plugin = [markers(this.state)];
-    const common = { width, height: 240, plugins: plugin, legend: { live: false }, cursor: { sync: { key: "t" } } };
+    const common = { height: 240, plugins: plugin, legend: { live: false }, cursor: { sync: { key: "t" } } };
     const axisX = { label: "t (s)" };
+    const y = { range: yRange };
     this.plots = [
       new uPlot(
         {
           ...common,
+          width: w0,
           title: "θ/α and ground acceleration (red lines: impacts; shaded: sliding)",
-          scales: { x: { time: false }, g: { auto: true } },
+          scales: { x: { time: false }, y, g: { range: yRange } },
           series: [
             {},
             { label: "θ/α", stroke: "#1f4e99", width: 1.5 },
             { label: "a_g (g)", stroke: "rgba(60, 160, 60, 0.7)", width: 1, scale: "g" },
             { label: "a_v (g)", stroke: "rgba(204, 121, 167, 0.8)", width: 1, scale: "g", show: false },
           ],
-          axes: [axisX, { label: "θ/α" }, { scale: "g", side: 1, label: "a_g (g)", grid: { show: false } }],
+          axes: [axisX, yAxis("θ/α"), yAxis("a_g (g)", { scale: "g", side: 1, grid: { show: false } })],
         },
         [[], [], [], []],
-        this.container,
+        this.first,
       ),
       new uPlot(
-        { ...common, title: "slip of the building", scales: { x: { time: false } }, series: [{}, { label: "slip (m)", stroke: "#c06010", width: 1.5 }], axes: [axisX, { label: "slip (m)" }] },
+        { ...common, width: w1, title: "slip of the building", scales: { x: { time: false }, y }, series: [{}, { label: "slip (m)", stroke: "#c06010", width: 1.5 }], axes: [axisX, yAxis("slip (m)")] },
         [[], []],
         this.container,
       ),
       new uPlot(
-        { ...common, title: "top displacement relative to the building", scales: { x: { time: false } }, series: [{}, { label: "top_dx (m)", stroke: "#2a7a2a", width: 1.5 }], axes: [axisX, { label: "top_dx (m)" }] },
+        { ...common, width: w1, title: "top displacement relative to the building", scales: { x: { time: false }, y }, series: [{}, { label: "top_dx (m)", stroke: "#2a7a2a", width: 1.5 }], axes: [axisX, yAxis("top_dx (m)")] },
         [[], []],
         this.container,
       ),
@@ -97,19 +126,33 @@ export class Charts {
   }
 
   update(result) {
-    if (!this.plots) this.create(Math.max(360, Math.min(900, this.container.clientWidth || 700)));
-    const h = result.history;
+    if (!this.plots) this.create();
+    // The series as the run's worker thinned them for drawing (rocking.runInWorker).
+    const h = result.chart;
     const alpha = result.summary.alpha_rad;
     this.state.impacts = result.events.filter((e) => e.kind === "impact").map((e) => e.t);
-    this.state.slips = slipIntervals(h);
+    this.state.slips = result.slips;
     // a_g in g: the scenario's g (from the derived quantities), set by the page.
     const gravity = result.gravity;
-    const ratio = alpha ? h.theta.map((x) => x / alpha) : h.theta.map(() => null);
+    const ratio = Array.from(h.theta, (x) => (alpha ? x / alpha : null));
     // The vertical acceleration (with [ground.vertical]) on the same axis as a_g.
-    const vertical = h.ground_acc_v ? h.ground_acc_v.map((a) => a / gravity) : h.t.map(() => null);
-    this.plots[0].setData([h.t, ratio, h.ground_acc.map((a) => a / gravity), vertical]);
+    const vertical = Array.from(h.ground_acc_v || h.t, (a) => (h.ground_acc_v ? a / gravity : null));
+    const t = Array.from(h.t);
+    this.plots[0].setData([t, ratio, Array.from(h.ground_acc, (a) => a / gravity), vertical]);
     this.plots[0].setSeries(3, { show: !!h.ground_acc_v });
-    this.plots[1].setData([h.t, h.slip]);
-    this.plots[2].setData([h.t, h.top_dx]);
+    this.plots[1].setData([t, Array.from(h.slip)]);
+    this.plots[2].setData([t, Array.from(h.top_dx)]);
+    // Each chart's text alternative: what it shows and its extremes.
+    const s = result.summary;
+    const text = [
+      `θ/α against time: peak ${tickText(s.max_theta_over_alpha ?? 0)}; ${this.state.impacts.length} impacts; ground acceleration in g.`,
+      `Slip of the building against time: peak ${tickText(s.max_abs_slip_m ?? 0)} m, final ${tickText(s.final_slip_m ?? 0)} m.`,
+      `Top displacement relative to the building against time: peak ${tickText(s.max_top_displacement_m ?? 0)} m.`,
+    ];
+    this.plots.forEach((p, k) => {
+      const canvas = p.root.querySelector("canvas");
+      canvas.setAttribute("role", "img");
+      canvas.setAttribute("aria-label", text[k]);
+    });
   }
 }

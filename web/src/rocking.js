@@ -93,9 +93,103 @@ function sweep(scenario, axes, options = {}) {
   });
 }
 
+/** The error of a run given up for a newer one (`superseded` is true). */
+function superseded() {
+  return Object.assign(new Error("superseded by a newer run"), { superseded: true });
+}
+
+/**
+ * Runs scenarios one at a time in a Web Worker, the newest first: a request
+ * made while another waits replaces it (the waiting one rejects, superseded);
+ * one made while a run has taken over LONG_MS ends that run (its worker is
+ * ended and a new one started) rather than wait for it. The page's main
+ * thread never runs the engine, whatever the duration.
+ */
+class Runner {
+  static LONG_MS = 250;
+
+  constructor() {
+    this.worker = null;
+    this.current = null;
+    this.queued = null;
+    this.id = 0;
+  }
+
+  run(scenario) {
+    return this.request({ scenario: JSON.stringify(scenario) });
+  }
+
+  /** history.csv of the last run (a Blob), made by the worker that holds its every row. */
+  historyCsv() {
+    if (this.busy) return Promise.reject(new Error("history.csv: the run is not over yet"));
+    return this.request({ csv: true });
+  }
+
+  request(message) {
+    return new Promise((resolve, reject) => {
+      if (this.queued) this.queued.reject(superseded());
+      this.queued = { id: ++this.id, message, resolve, reject, start: 0 };
+      if (this.current && performance.now() - this.current.start > Runner.LONG_MS) {
+        this.worker.terminate();
+        this.worker = null;
+        this.current.reject(superseded());
+        this.current = null;
+      }
+      this.pump();
+    });
+  }
+
+  /** Whether a run is under way or waiting. */
+  get busy() {
+    return !!(this.current || this.queued);
+  }
+
+  pump() {
+    if (this.current || !this.queued) return;
+    const job = (this.current = this.queued);
+    this.queued = null;
+    if (!this.worker) {
+      this.worker = new Worker(new URL("./run-worker.js", import.meta.url), { type: "module" });
+      this.worker.onmessage = ({ data }) => this.finish(data);
+      this.worker.onerror = (e) => this.finish({ id: this.current?.id, error: e.message || "the run's worker failed" });
+    }
+    job.start = performance.now();
+    this.worker.postMessage({ id: job.id, ...job.message });
+  }
+
+  finish(data) {
+    const job = this.current;
+    if (!job || job.id !== data.id) return;
+    this.current = null;
+    if (data.error !== undefined) job.reject(new Error(data.error));
+    else job.resolve(data.result);
+    this.pump();
+  }
+}
+
+const runner = new Runner();
+
+/**
+ * Runs a scenario in a Web Worker: a Promise of { summary, derived, history,
+ * rows, stride, regimeNames, events, eventColumns, chart, slips }: the
+ * history's columns as Float64Arrays (the regime as a Uint8Array of indices
+ * into regimeNames), every row of it, or for a history of over 200,000 rows
+ * every `stride`-th row and the last (all `rows` are in historyCsv()); the
+ * derived quantities of check(); the charts' series (thinned to about 4,000
+ * points for long runs: each span's extremes) and the sliding spans [t0, t1].
+ * The newest call wins: an older one still waiting or long under way rejects
+ * with an Error whose `superseded` is true.
+ */
+function runInWorker(scenario) {
+  return runner.run(scenario);
+}
+
 export const rocking = {
   ready,
   run,
+  runInWorker,
+  /** history.csv of the last runInWorker() (a Promise of a Blob). */
+  historyCsv: () => runner.historyCsv(),
   check,
   sweep,
   fromToml,

@@ -5,87 +5,19 @@ Run by scripts/web-tests.sh, which builds the page and the command and sets
 ROCKING_DIST (the built page), ROCKING_BIN (the command) and ROCKING_CHROMIUM.
 The scenario files are read with Python's own TOML reader (tomllib), so the
 page's objects are not made by the engine's parser they are compared with.
+The fixtures (the server, the browser, a loaded page) are in conftest.py.
 """
 
 import csv
-import http.server
 import io
 import json
 import math
-import os
 import subprocess
-import threading
 import tomllib
-from functools import partial
 from pathlib import Path
 
-import pytest
-from playwright.sync_api import expect, sync_playwright
-
-ROOT = Path(__file__).resolve().parents[2]
-DIST = Path(os.environ.get("ROCKING_DIST", ROOT / "web" / "dist"))
-BIN = os.environ.get("ROCKING_BIN", str(ROOT / "target" / "release" / "rocking"))
-CHROMIUM = os.environ.get("ROCKING_CHROMIUM", "/usr/bin/chromium")
-OUT = Path(os.environ.get("ROCKING_WEB_TEST_OUT", ROOT / "target" / "web-tests"))
-ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
-
-# A one-cycle sine pulse of 0.8 g at 2 Hz sampled every 0.01 s, as a CSV record
-# (time in s, acceleration in g): above tan α = 1/3 of the example's tower.
-RECORD = "time,acceleration\n" + "".join(
-    f"{k * 0.01:.2f},{0.8 * math.sin(2 * math.pi * 2.0 * k * 0.01):.6f}\n" for k in range(51)
-)
-
-
-@pytest.fixture(scope="session")
-def server():
-    class Quiet(http.server.SimpleHTTPRequestHandler):
-        def log_message(self, *args):
-            pass
-
-    handler = partial(Quiet, directory=str(DIST))
-    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
-    thread.start()
-    yield f"http://127.0.0.1:{httpd.server_address[1]}/"
-    httpd.shutdown()
-
-
-@pytest.fixture(scope="session")
-def browser(tmp_path_factory):
-    with sync_playwright() as p:
-        context = p.chromium.launch_persistent_context(
-            str(tmp_path_factory.mktemp("chromium-profile")),
-            executable_path=CHROMIUM,
-            args=ARGS,
-            headless=True,
-            viewport={"width": 1280, "height": 1400},
-        )
-        yield context
-        context.close()
-
-
-@pytest.fixture
-def page(browser, server):
-    page = browser.new_page()
-    errors = []
-    page.on("pageerror", lambda e: errors.append(str(e)))
-    page.goto(server)
-    page.wait_for_function("window.rocking !== undefined")
-    page.evaluate("window.rocking.ready")
-    # The default example has been computed and shown.
-    expect(page.locator('#summary tr[data-key="max_theta_over_alpha"]')).to_have_count(1)
-    yield page
-    assert errors == [], errors
-    page.close()
+from conftest import BIN, OUT, RECORD, ROOT
+from playwright.sync_api import expect
 
 
 def command_summary(scenario_file: Path, tmp: Path) -> dict:
@@ -196,7 +128,7 @@ def test_a_bad_value_shows_the_commands_line_not_a_blank_page(page):
     expect(error).to_be_visible()
     expect(error).to_have_text("scenario.toml: tower.width: must be a finite number > 0, got -4")
     # The last results stay on the page (dimmed), the controls work.
-    assert page.locator("#charts canvas").count() >= 3
+    assert page.locator("#theta-chart canvas, #charts canvas").count() >= 3
     page.fill('input[name="tower.width"]', "4")
     expect(error).to_be_hidden()
     # The API throws an Error with the same line.
