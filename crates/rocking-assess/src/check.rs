@@ -1,0 +1,108 @@
+//! The verdict of one check: its demand against its capacity at the site's
+//! `ag`, the least `ag` at which it stops holding and the ratio ζ_E.
+
+use crate::search::AgCapacity;
+use rocking_codes::LimitState;
+use std::fmt;
+
+/// The method of a check (Circolare 2019 §C8.7.1.2.1.5–C8.7.1.2.1.9).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// The activation of the mechanism (damage limit state).
+    Activation,
+    /// The linear kinematic analysis with the behaviour factor q (§C8.7.1.2.1.7).
+    LinearKinematic,
+    /// The non-linear kinematic analysis, the displacement spectrum (§C8.7.1.2.1.8).
+    NonlinearKinematic,
+    /// The non-linear dynamic analysis, records run through the model (§C8.7.1.2.1.9).
+    NonlinearDynamic,
+}
+
+impl Method {
+    /// Its name in the outputs: `activation`, `linear_kinematic`, `nonlinear_kinematic`, `nonlinear_dynamic`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Method::Activation => "activation",
+            Method::LinearKinematic => "linear_kinematic",
+            Method::NonlinearKinematic => "nonlinear_kinematic",
+            Method::NonlinearDynamic => "nonlinear_dynamic",
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// What a demand and a capacity are measured in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Unit {
+    /// A spectral acceleration (m/s²).
+    Acceleration,
+    /// A spectral displacement (m).
+    Displacement,
+}
+
+impl Unit {
+    /// `m/s2` or `m`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Unit::Acceleration => "m/s2",
+            Unit::Displacement => "m",
+        }
+    }
+}
+
+/// The ratio `ζ_E = a_g,capacity / a_g` of a limit state (Circolare 2019 §C8.7.1.2.1.5
+/// and the Civil Protection's ranking of buildings): the check holds when ζ_E ≥ 1.
+pub fn acceleration_ratio(ag_capacity: f64, ag: f64) -> f64 {
+    ag_capacity / ag
+}
+
+/// One check of one limit state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Check {
+    /// The limit state.
+    pub limit_state: LimitState,
+    /// The method.
+    pub method: Method,
+    /// The demand at the limit state's `ag`, in `unit`.
+    pub demand: f64,
+    /// The capacity, in `unit`.
+    pub capacity: f64,
+    /// The unit of demand and capacity.
+    pub unit: Unit,
+    /// The limit state's `ag` (g).
+    pub ag: f64,
+    /// The least `ag` (g) at which the check stops holding.
+    pub ag_capacity: AgCapacity,
+    /// `ζ_E = a_g,capacity / a_g` (a lower bound when `ag_capacity` is).
+    pub zeta_e: f64,
+    /// Whether it holds: ζ_E ≥ 1.
+    pub holds: bool,
+}
+
+impl Check {
+    /// A check from its demand and capacity at the site's `ag` and its `ag` capacity.
+    pub fn new(limit_state: LimitState, method: Method, unit: Unit, demand: f64, capacity: f64, ag: f64, ag_capacity: AgCapacity) -> Self {
+        let zeta_e = acceleration_ratio(ag_capacity.value(), ag);
+        Self {
+            limit_state,
+            method,
+            demand,
+            capacity,
+            unit,
+            ag,
+            ag_capacity,
+            zeta_e,
+            holds: zeta_e >= 1.0,
+        }
+    }
+}
+
+/// The governing check: the least ζ_E (the first such in order), `None` for no checks.
+pub fn governing(checks: &[Check]) -> Option<&Check> {
+    checks.iter().reduce(|best, c| if c.zeta_e < best.zeta_e { c } else { best })
+}
