@@ -21,7 +21,7 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent
-SCRIPTS = ["slammer"]
+SCRIPTS = ["slammer", "housner"]
 
 
 def environment():
