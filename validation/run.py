@@ -21,7 +21,7 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent
-SCRIPTS = ["slammer", "housner"]
+SCRIPTS = ["slammer", "housner", "mujoco_tower"]
 
 
 def environment():
