@@ -6,6 +6,8 @@
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
+//! rocking spectrum RECORD... [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]   # response spectra
+//! rocking spectrum --site ASSESS.toml [--out DIR] [--plot]   # code spectra, the record set fitted
 //! rocking sweep SWEEP.toml --shard K/N [--out DIR]  # one block of a sweep's cases
 //! rocking merge DIR1 DIR2 ... --out DIR             # the shards' rows in one sweep.csv
 //! rocking keys [--markdown]                        # every scenario key, unit, default, range
@@ -47,6 +49,8 @@ enum Command {
     Fragility(commands::fragility::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
+    /// Response spectra of records, or the code spectra of an assessment file's site and its record set fitted to them.
+    Spectrum(commands::spectrum::Args),
     /// List every scenario key with its unit, default and valid range (--markdown: the documentation's reference page).
     Keys(commands::keys::Args),
 }
@@ -67,6 +71,7 @@ fn main() -> ExitCode {
         Command::Merge(args) => commands::merge::execute(args),
         Command::Keys(args) => commands::keys::execute(args),
         Command::Fragility(args) => commands::fragility::execute(args),
+        Command::Spectrum(args) => commands::spectrum::execute(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

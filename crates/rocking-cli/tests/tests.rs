@@ -12,5 +12,6 @@ mod hardening;
 mod keys;
 mod run;
 mod shard;
+mod spectrum;
 mod sweep;
 mod vertical;

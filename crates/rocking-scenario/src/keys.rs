@@ -22,6 +22,8 @@ pub enum KeyKind {
     Points,
     /// A table of keys of its own (`ground.vertical`).
     Table,
+    /// A list of strings or numbers (`assessment.records`, `assessment.period_range`).
+    List,
 }
 
 impl KeyKind {
@@ -31,6 +33,7 @@ impl KeyKind {
             KeyKind::Text => "string",
             KeyKind::Points => "list of [x, y]",
             KeyKind::Table => "table",
+            KeyKind::List => "list",
         }
     }
 }
@@ -65,7 +68,7 @@ impl KeyDoc {
     }
 }
 
-const fn key(
+pub(crate) const fn key(
     key: &'static str,
     kind: KeyKind,
     unit: &'static str,
@@ -575,7 +578,38 @@ pub fn keys_markdown() -> String {
         "An axis on one of two alternatives ({}) replaces the other in the base scenario; two axes on the same pair are an error.",
         pairs.join(", ")
     );
+    assessment_keys_markdown(&mut out);
     out
+}
+
+/// The section of the reference page on `[site]` and `[assessment]`.
+fn assessment_keys_markdown(out: &mut String) {
+    let _ = writeln!(out);
+    let _ = writeln!(out, "## Assessment files: `[site]` and `[assessment]`");
+    let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "An assessment file (read by `rocking spectrum --site`) is a scenario without `[ground]`, plus `[site]`, \
+         with one table per limit state (`[site.SLV]`, `<LS>` below) or a hazard grid and the site's coordinates, \
+         and `[assessment]`. See the chapter on spectra and record sets."
+    );
+    let _ = writeln!(out);
+    let _ = writeln!(out, "| key | takes | unit | default | valid | meaning | example |");
+    let _ = writeln!(out, "|---|---|---|---|---|---|---|");
+    for doc in crate::assessment::ASSESSMENT_KEY_DOCS {
+        let unit = if doc.unit.is_empty() { "—" } else { doc.unit };
+        let _ = writeln!(
+            out,
+            "| `{}` | {} | {} | {} | {} | {} | `{}` |",
+            doc.key,
+            doc.kind.as_str(),
+            cell(unit),
+            cell(doc.default),
+            cell(doc.range),
+            cell(doc.meaning),
+            cell(doc.example)
+        );
+    }
 }
 
 #[cfg(test)]

@@ -82,6 +82,7 @@
 //! # Ok::<(), rocking_scenario::Error>(())
 //! ```
 
+mod assessment;
 mod building;
 pub mod columns;
 mod dotted;
@@ -101,6 +102,11 @@ mod tower;
 #[cfg(test)]
 mod tests;
 
+pub use assessment::{
+    dynamic_limit_states, kinematic_damping_pct, read_record, AssessmentFile, Capacity, Code, Site, SiteSource, ASSESSMENT_KEYS, ASSESSMENT_KEY_DOCS,
+    ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q, DEFAULT_USE_COEFFICIENT,
+    EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS,
+};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
 pub use error::{key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};

@@ -1,8 +1,8 @@
-//! `rocking keys [--markdown]`: every scenario key with its unit, default and
+//! `rocking keys [--markdown]`: every scenario key (and assessment-file key) with its unit, default and
 //! valid range, from the table the parser checks keys against. `--markdown`
 //! prints the reference page of the documentation (`docs/src/reference/keys.md`).
 
-use rocking_scenario::{keys_markdown, SCENARIO_KEYS};
+use rocking_scenario::{keys_markdown, ASSESSMENT_KEY_DOCS, SCENARIO_KEYS};
 use std::fmt::Write;
 
 /// Arguments of `rocking keys`.
@@ -18,9 +18,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     if args.markdown {
         return super::print(&keys_markdown());
     }
-    let width = SCENARIO_KEYS.iter().map(|k| k.key.chars().count()).max().unwrap_or(0);
+    // The scenario's keys, then those of an assessment file's [site] and [assessment].
+    let keys = || SCENARIO_KEYS.iter().chain(ASSESSMENT_KEY_DOCS);
+    let width = keys().map(|k| k.key.chars().count()).max().unwrap_or(0);
     let mut out = String::new();
-    for k in SCENARIO_KEYS {
+    for k in keys() {
         let unit = if k.unit.is_empty() { "-" } else { k.unit };
         // Writing to a String cannot fail.
         let _ = writeln!(out, "{:width$}  {unit:6} default: {}; valid: {}. {}", k.key, k.default, k.range, k.meaning);

@@ -6,6 +6,7 @@ pub mod keys;
 pub mod merge;
 pub mod rows;
 pub mod run;
+pub mod spectrum;
 pub mod sweep;
 
 use anyhow::Context;

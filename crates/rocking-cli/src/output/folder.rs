@@ -15,7 +15,7 @@ use anyhow::Context;
 use std::path::{Path, PathBuf};
 
 /// Every file name this tool writes into an output folder.
-pub const KNOWN: [&str; 20] = [
+pub const KNOWN: [&str; 35] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -36,6 +36,21 @@ pub const KNOWN: [&str; 20] = [
     "ida.png",
     "fragility.svg",
     "fragility.png",
+    "spectra.csv",
+    "fit.csv",
+    "fit.json",
+    "spectra.svg",
+    "spectra.png",
+    "code_spectra.svg",
+    "code_spectra.png",
+    "fit_SLV.svg",
+    "fit_SLV.png",
+    "fit_SLC.svg",
+    "fit_SLC.png",
+    "fit_SD.svg",
+    "fit_SD.png",
+    "fit_NC.svg",
+    "fit_NC.png",
 ];
 
 /// A folder being written: files go to [`Staging::path`]; [`Staging::commit`]

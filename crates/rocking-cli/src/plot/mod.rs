@@ -15,6 +15,7 @@ mod legend;
 mod raster;
 mod scale;
 mod slip;
+mod spectra;
 mod style;
 mod sweep_curves;
 mod sweep_map;
@@ -23,8 +24,14 @@ mod theta;
 mod timeline;
 
 use rocking_scenario::{Measure, Outcome, Stripe};
+pub use spectra::{Band, Curve, Ink, SpectraFigure};
 use std::path::{Path, PathBuf};
 pub use sweep_table::SweepTable;
+
+/// Draws a figure of spectra (log-log) into `dir/<stem>.svg` and `.png`, returning the files.
+pub fn spectra_figure(dir: &Path, stem: &str, figure: &SpectraFigure) -> anyhow::Result<Vec<PathBuf>> {
+    style::render(dir, stem, spectra::SIZE, figure)
+}
 
 /// The files `run_figures` writes.
 pub const RUN_FILES: [&str; 4] = ["theta.svg", "theta.png", "slip.svg", "slip.png"];

@@ -145,7 +145,7 @@ impl Study {
         let limit_states = limit::parse(study.get("limit_state"), &template).map_err(fail)?;
         let ground_keys = ground_keys(&study).map_err(fail)?;
         let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
-        let paths = glob_records(study.get("records"), &folder).map_err(fail)?;
+        let paths = glob_records("study", study.get("records"), &folder).map_err(fail)?;
         let name = match table.get("name") {
             Some(Value::String(s)) => s.clone(),
             _ => origin.file_stem().map_or_else(|| "study".to_string(), |s| s.to_string_lossy().into_owned()),
@@ -528,9 +528,10 @@ fn parse_levels(study: &Table) -> Result<Vec<f64>, Fault> {
 }
 
 /// The record files of `records` (glob patterns relative to `folder`), each
-/// pattern's matches sorted, a file matched twice kept once; paths relative to `folder`.
-fn glob_records(value: Option<&Value>, folder: &Path) -> Result<Vec<String>, Fault> {
-    let key = "study.records";
+/// pattern's matches sorted, a file matched twice kept once; paths relative to
+/// `folder`. `section` is the table of the key (`study`, `assessment`).
+pub(crate) fn glob_records(section: &str, value: Option<&Value>, folder: &Path) -> Result<Vec<String>, Fault> {
+    let key = &format!("{section}.records");
     let patterns: Vec<&str> = match value {
         None => {
             return Err(Fault::new(
@@ -591,7 +592,7 @@ fn glob_records(value: Option<&Value>, folder: &Path) -> Result<Vec<String>, Fau
         return Err(Fault::invalid(
             key,
             format!(
-                "no file matches {} (patterns are relative to the study file)",
+                "no file matches {} (patterns are relative to the {section} file)",
                 patterns.iter().map(|p| format!("\"{p}\"")).collect::<Vec<_>>().join(", ")
             ),
         ));

@@ -1,0 +1,269 @@
+//! The documentation of every key of `[site]` and `[assessment]`, printed by
+//! `rocking keys --markdown` after the scenario's keys; a test checks that it
+//! lists exactly the keys the parser takes.
+
+use crate::keys::{key, KeyDoc, KeyKind::*};
+
+/// Every key of `[site]` and `[assessment]`, in the order of the reference page.
+pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
+    key(
+        "site.code",
+        Text,
+        "",
+        "\"ntc2018\"",
+        "\"ntc2018\" or \"ec8\"",
+        "The code: NTC 2018 spectra and limit states SLO–SLC, or EN 1998-1 spectra with EN 1998-3's DL, SD, NC.",
+        "\"ntc2018\"",
+    ),
+    key(
+        "site.soil",
+        Text,
+        "",
+        "required",
+        "\"A\" to \"E\"",
+        "Subsoil category (NTC 2018 §3.2.2) or ground type (EN 1998-1 §3.1.2).",
+        "\"B\"",
+    ),
+    key(
+        "site.topography",
+        Text,
+        "",
+        "\"T1\"",
+        "\"T1\" to \"T4\"; NTC only; not with ST",
+        "Topographic category: ST = 1.0, 1.2, 1.2, 1.4 (NTC 2018 Tab. 3.2.V).",
+        "\"T2\"",
+    ),
+    key(
+        "site.ST",
+        Number,
+        "",
+        "from topography",
+        "[1.0, 1.4]; NTC only",
+        "A given topographic amplification ST instead of the category's.",
+        "1.1",
+    ),
+    key(
+        "site.spectrum_type",
+        Number,
+        "",
+        "1",
+        "1 or 2; EC8 only",
+        "EN 1998-1 spectrum type (1: Ms > 5.5, 2: smaller earthquakes).",
+        "1",
+    ),
+    key(
+        "site.grid",
+        Text,
+        "",
+        "none",
+        "a file in the layout of NTC Allegato B; NTC only; not with the limit states' tables",
+        "Hazard grid: the site parameters of SLD, SLV, SLC interpolated at lon, lat (NTC Allegato A). Relative to the assessment file.",
+        "\"hazard/grid.txt\"",
+    ),
+    key(
+        "site.lon",
+        Number,
+        "°",
+        "required with grid",
+        "inside the grid",
+        "Longitude of the site (degrees east).",
+        "14.43",
+    ),
+    key(
+        "site.lat",
+        Number,
+        "°",
+        "required with grid",
+        "inside the grid",
+        "Latitude of the site (degrees north).",
+        "41.04",
+    ),
+    key(
+        "site.VN",
+        Number,
+        "years",
+        "50",
+        "> 0; with grid",
+        "Nominal life VN (NTC 2018 §2.4.1); TR = −VN CU / ln(1 − P_VR).",
+        "50",
+    ),
+    key(
+        "site.CU",
+        Number,
+        "",
+        "1.0",
+        "> 0; with grid",
+        "Coefficient of use CU of the class of use (NTC 2018 §2.4.3).",
+        "1.5",
+    ),
+    key(
+        "site.SLO",
+        Table,
+        "",
+        "none",
+        "NTC only; not with grid",
+        "Site parameters of SLO: ag (g), F0, Tc_star (s).",
+        "{ ag = 0.05, F0 = 2.5, Tc_star = 0.28 }",
+    ),
+    key(
+        "site.SLD",
+        Table,
+        "",
+        "none",
+        "NTC only; not with grid",
+        "Site parameters of SLD: ag (g), F0, Tc_star (s).",
+        "{ ag = 0.062, F0 = 2.52, Tc_star = 0.30 }",
+    ),
+    key(
+        "site.SLV",
+        Table,
+        "",
+        "none",
+        "NTC only; not with grid",
+        "Site parameters of SLV: ag (g), F0, Tc_star (s).",
+        "{ ag = 0.155, F0 = 2.47, Tc_star = 0.36 }",
+    ),
+    key(
+        "site.SLC",
+        Table,
+        "",
+        "none",
+        "NTC only; not with grid",
+        "Site parameters of SLC: ag (g), F0, Tc_star (s).",
+        "{ ag = 0.196, F0 = 2.50, Tc_star = 0.37 }",
+    ),
+    key(
+        "site.DL",
+        Table,
+        "",
+        "none",
+        "EC8 only",
+        "Design ground acceleration of DL: ag = γI agR (g).",
+        "{ ag = 0.08 }",
+    ),
+    key(
+        "site.SD",
+        Table,
+        "",
+        "none",
+        "EC8 only",
+        "Design ground acceleration of SD: ag = γI agR (g).",
+        "{ ag = 0.20 }",
+    ),
+    key(
+        "site.NC",
+        Table,
+        "",
+        "none",
+        "EC8 only",
+        "Design ground acceleration of NC: ag = γI agR (g).",
+        "{ ag = 0.30 }",
+    ),
+    key(
+        "site.<LS>.ag",
+        Number,
+        "g",
+        "required",
+        "(0, 2]",
+        "Peak ground acceleration on rock of the limit state (EC8: γI agR).",
+        "0.155",
+    ),
+    key(
+        "site.<LS>.F0",
+        Number,
+        "",
+        "required (NTC)",
+        "> 0",
+        "Maximum spectral amplification on rock F0.",
+        "2.47",
+    ),
+    key(
+        "site.<LS>.Tc_star",
+        Number,
+        "s",
+        "required (NTC)",
+        "> 0",
+        "Tc*, the period that fixes TC = CC Tc*.",
+        "0.36",
+    ),
+    key(
+        "assessment.confidence_factor",
+        Number,
+        "",
+        "1.35",
+        "> 0",
+        "Confidence factor FC, dividing the capacity's accelerations (LC1: 1.35).",
+        "1.35",
+    ),
+    key(
+        "assessment.q",
+        Number,
+        "",
+        "2.0",
+        "> 0",
+        "Behaviour factor q of the linear kinematic check.",
+        "2.0",
+    ),
+    key(
+        "assessment.capacity",
+        Text,
+        "",
+        "\"linear\"",
+        "\"linear\" or \"exact\"",
+        "Capacity curve: the Circolare's linear a*(d), or the rigid block's exact one.",
+        "\"exact\"",
+    ),
+    key(
+        "assessment.records",
+        List,
+        "",
+        "none (no dynamic check)",
+        "glob patterns matching at least one file; 3 or more records to fit",
+        "The record set of the dynamic checks, relative to the assessment file; format guessed.",
+        "[\"records/*.AT2\"]",
+    ),
+    key(
+        "assessment.period_range",
+        List,
+        "s",
+        "[0.15, max(2.0, T_SLC)]",
+        "0 < from < to, inside the spectra's periods",
+        "Periods over which each record is fitted to the spectrum and the set's mean is checked (0.90–1.30).",
+        "[0.15, 4.0]",
+    ),
+    key(
+        "assessment.free_after",
+        Number,
+        "s",
+        "10.0",
+        ">= 0",
+        "Seconds run after the end of each record in the dynamic checks.",
+        "10.0",
+    ),
+    key(
+        "assessment.lambda",
+        Table,
+        "",
+        "{ from = 0.05, to = 3.0, step = 0.05 }",
+        "0 < from < to, step > 0",
+        "The scan of the record set's multiplier λ in the dynamic checks.",
+        "{ from = 0.1, to = 2.0, step = 0.1 }",
+    ),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::ASSESSMENT_KEY_DOCS;
+    use crate::assessment::{ASSESSMENT_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+
+    #[test]
+    fn documents_exactly_the_keys_the_parser_takes() {
+        let mut documented: Vec<String> = ASSESSMENT_KEY_DOCS.iter().map(|k| k.key.to_string()).collect();
+        let mut parsed: Vec<String> = SITE_KEYS.iter().map(|k| format!("site.{k}")).collect();
+        parsed.extend(NTC_STATE_KEYS.iter().map(|k| format!("site.<LS>.{k}")));
+        parsed.extend(ASSESSMENT_KEYS.iter().map(|k| format!("assessment.{k}")));
+        documented.sort();
+        parsed.sort();
+        assert_eq!(documented, parsed);
+    }
+}

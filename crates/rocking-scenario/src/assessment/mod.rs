@@ -1,0 +1,323 @@
+//! Assessment files: a scenario without `[ground]` (the tower, optionally the
+//! building, `[simulation]`), plus `[site]` (the code, the soil and the site
+//! parameters of each limit state) and `[assessment]` (the confidence factor,
+//! the behaviour factor, the capacity curve, the record set of the dynamic
+//! checks and its fitting range).
+//!
+//! This module reads `[site]` and `[assessment]`; the scenario's own sections
+//! are kept as a table ([`AssessmentFile::scenario`]) for the tower's capacity.
+
+mod keys;
+mod site;
+
+pub use keys::ASSESSMENT_KEY_DOCS;
+pub use site::{Code, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+
+use crate::error::{closest, ErrorKind, Fault};
+use crate::read::{as_number, non_negative, positive, with_article, Section};
+use crate::{Error, DEFAULT_G};
+use rocking::{CsvOptions, Record};
+use rocking_codes::LimitState;
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// The keys of `[assessment]`.
+pub const ASSESSMENT_KEYS: &[&str] = &["confidence_factor", "q", "capacity", "records", "period_range", "free_after", "lambda"];
+/// The sections of an assessment file besides a scenario's (less `[ground]`).
+pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment"];
+
+/// The confidence factor FC when not given (knowledge level LC1, Circolare §C8.5.4).
+pub const DEFAULT_CONFIDENCE_FACTOR: f64 = 1.35;
+/// The behaviour factor q of the linear kinematic check when not given (Circolare §C8.7.1.2.1.7).
+pub const DEFAULT_Q: f64 = 2.0;
+/// Seconds run after each record in the dynamic checks when not given.
+pub const DEFAULT_ASSESSMENT_FREE_AFTER: f64 = 10.0;
+/// The scan of the record set's multiplier λ when not given: from, to, step.
+pub const DEFAULT_LAMBDA: (f64, f64, f64) = (0.05, 3.0, 0.05);
+
+/// The capacity curve of the mechanism.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Capacity {
+    /// `a*(d) = a0* (1 − d/d0)`, the Circolare's worked cases (the default).
+    Linear,
+    /// The rigid block's exact curve.
+    Exact,
+}
+
+/// The `[site]` and `[assessment]` of an assessment file, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AssessmentFile {
+    origin: PathBuf,
+    /// The site and its limit states' spectra (5%).
+    pub site: Site,
+    /// FC, > 0.
+    pub confidence_factor: f64,
+    /// q, > 0.
+    pub q: f64,
+    /// The capacity curve.
+    pub capacity: Capacity,
+    /// The record files of the set, relative to the file's folder, in order; empty without a set.
+    pub records: Vec<String>,
+    /// The fitting range (s), if given.
+    pub period_range: Option<(f64, f64)>,
+    /// Seconds run after each record (≥ 0).
+    pub free_after: f64,
+    /// The multiplier scan (from, to, step).
+    pub lambda: (f64, f64, f64),
+    /// Gravity (m/s²): `simulation.g`, or 9.81.
+    pub g: f64,
+    /// The scenario's own sections (name, tower, building, simulation…), not validated here.
+    pub scenario: Table,
+}
+
+impl AssessmentFile {
+    /// Parses the TOML text of an assessment file; `origin` names the file in
+    /// errors and is the folder of the grid and the records.
+    pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
+        let table = crate::parse_toml(text, origin)?;
+        Self::parse(table, origin).map_err(|f| f.in_file(origin))
+    }
+
+    fn parse(mut table: Table, origin: &Path) -> Result<Self, Fault> {
+        let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
+        if table.contains_key("ground") {
+            return Err(Fault::new(
+                "ground",
+                ErrorKind::NotApplicable("an assessment file has no [ground]: the records of its dynamic checks are assessment.records".into()),
+            ));
+        }
+        let mut valid: Vec<&'static str> = crate::SECTIONS.iter().copied().filter(|s| *s != "ground").collect();
+        valid.extend(crate::TOP_LEVEL_KEYS.iter().copied());
+        valid.extend(ASSESSMENT_SECTIONS);
+        if let Some(k) = table.keys().find(|k| !valid.contains(&k.as_str())) {
+            return Err(Fault::new(
+                k.clone(),
+                ErrorKind::UnknownSection {
+                    suggestion: closest(k, &valid),
+                    valid,
+                },
+            ));
+        }
+        let site = match table.remove("site") {
+            Some(v) => site::parse(&v, &folder)?,
+            None => {
+                return Err(Fault::new(
+                    "site",
+                    ErrorKind::Missing("required: the [site] table (code, soil, the limit states' parameters)".into()),
+                ))
+            }
+        };
+        let empty = Value::Table(Table::new());
+        let assessment_value = table.remove("assessment");
+        let a = Section::new("assessment", assessment_value.as_ref().unwrap_or(&empty))?;
+        a.only(ASSESSMENT_KEYS)?;
+        let confidence_factor = positive(
+            "assessment.confidence_factor",
+            a.number("confidence_factor")?.unwrap_or(DEFAULT_CONFIDENCE_FACTOR),
+        )?;
+        let q = positive("assessment.q", a.number("q")?.unwrap_or(DEFAULT_Q))?;
+        let capacity = a
+            .choice("capacity", &[("linear", Capacity::Linear), ("exact", Capacity::Exact)])?
+            .unwrap_or(Capacity::Linear);
+        let records = match a.get("records") {
+            Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?,
+            None => Vec::new(),
+        };
+        let period_range = match a.get("period_range") {
+            None => None,
+            Some(v) => Some(pair("assessment.period_range", v)?),
+        };
+        if let Some((from, to)) = period_range {
+            if !(from > 0.0 && to > from) {
+                return Err(Fault::invalid("assessment.period_range", format!("need 0 < from < to (s), got [{from}, {to}]")));
+            }
+        }
+        let free_after = non_negative("assessment.free_after", a.number("free_after")?.unwrap_or(DEFAULT_ASSESSMENT_FREE_AFTER))?;
+        let lambda = match a.get("lambda") {
+            None => DEFAULT_LAMBDA,
+            Some(v) => lambda(v)?,
+        };
+        let g = match table.get("simulation").and_then(|s| s.get("g")) {
+            Some(v) => positive(
+                "simulation.g",
+                as_number(v).ok_or_else(|| {
+                    Fault::new(
+                        "simulation.g",
+                        ErrorKind::WrongType {
+                            expected: "a number",
+                            got: with_article(v),
+                        },
+                    )
+                })?,
+            )?,
+            None => DEFAULT_G,
+        };
+        Ok(Self {
+            origin: origin.to_path_buf(),
+            site,
+            confidence_factor,
+            q,
+            capacity,
+            records,
+            period_range,
+            free_after,
+            lambda,
+            g,
+            scenario: table,
+        })
+    }
+
+    /// The file.
+    pub fn origin(&self) -> &Path {
+        &self.origin
+    }
+
+    /// The folder the file's relative paths start from.
+    pub fn folder(&self) -> &Path {
+        self.origin.parent().unwrap_or(Path::new(""))
+    }
+
+    /// Reads the record set (m/s²), each record as `[ground]` would read it, format guessed.
+    pub fn read_records(&self) -> Result<Vec<(String, Record)>, Error> {
+        self.records
+            .iter()
+            .map(|path| {
+                read_record(&self.folder().join(path), self.g)
+                    .map(|r| (path.clone(), r))
+                    .map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))
+            })
+            .collect()
+    }
+}
+
+/// The limit states whose spectra the dynamic checks fit the record set to: SLV,
+/// SLC (NTC) or SD, NC (EC8).
+pub fn dynamic_limit_states(code: Code) -> [LimitState; 2] {
+    match code {
+        Code::Ntc2018 => [LimitState::Slv, LimitState::Slc],
+        Code::Ec8 => [LimitState::Sd, LimitState::Nc],
+    }
+}
+
+/// The damping (%) of the non-linear kinematic check of a limit state
+/// (Circolare §C8.7.1.2.1.8): 8% at SLV (SD), 10% at SLC (NC); `None` for the others.
+pub fn kinematic_damping_pct(state: LimitState) -> Option<f64> {
+    match state {
+        LimitState::Slv | LimitState::Sd => Some(8.0),
+        LimitState::Slc | LimitState::Nc => Some(10.0),
+        _ => None,
+    }
+}
+
+/// Reads a record file as `[ground]` does with `format` guessed and no CSV
+/// options (values in g, `g` in m/s²), or what is wrong with it.
+pub fn read_record(path: &Path, g: f64) -> Result<Record, ErrorKind> {
+    let text = std::fs::read_to_string(path).map_err(|e| ErrorKind::Read {
+        path: path.to_path_buf(),
+        reason: crate::error::io_reason(&e),
+        os_error: e.raw_os_error(),
+    })?;
+    let record = |source| ErrorKind::Record {
+        path: path.to_path_buf(),
+        source,
+    };
+    let format = Record::guess_format(&text).map_err(record)?;
+    Record::parse(&text, Some(format), &CsvOptions::default(), g).map_err(record)
+}
+
+/// A `[from, to]` pair of finite numbers.
+fn pair(key: &str, value: &Value) -> Result<(f64, f64), Fault> {
+    let wrong = || {
+        Fault::new(
+            key,
+            ErrorKind::WrongType {
+                expected: "a pair [from, to] of numbers",
+                got: with_article(value),
+            },
+        )
+    };
+    let Value::Array(items) = value else { return Err(wrong()) };
+    match items.iter().map(as_number).collect::<Option<Vec<f64>>>().as_deref() {
+        Some(&[a, b]) if a.is_finite() && b.is_finite() => Ok((a, b)),
+        _ => Err(wrong()),
+    }
+}
+
+/// `{ from, to, step }` of the multiplier scan: 0 < from < to, step > 0.
+fn lambda(value: &Value) -> Result<(f64, f64, f64), Fault> {
+    let t = Section::new("assessment.lambda", value)?;
+    t.only(&["from", "to", "step"])?;
+    let (d_from, d_to, d_step) = DEFAULT_LAMBDA;
+    let from = positive("assessment.lambda.from", t.number("from")?.unwrap_or(d_from))?;
+    let to = positive("assessment.lambda.to", t.number("to")?.unwrap_or(d_to))?;
+    let step = positive("assessment.lambda.step", t.number("step")?.unwrap_or(d_step))?;
+    if to <= from {
+        return Err(Fault::invalid("assessment.lambda.to", format!("must be > from ({from}), got {to}")));
+    }
+    Ok((from, to, step))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use rocking_codes::CodeSpectrum;
+
+    fn parse(text: &str) -> Result<AssessmentFile, Error> {
+        // The repository's data/ folder: the grid's path is relative to the file.
+        let origin = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/site.toml");
+        AssessmentFile::from_toml_str(text, &origin)
+    }
+
+    fn message(text: &str) -> String {
+        match parse(text) {
+            Ok(_) => panic!("expected an error for {text}"),
+            Err(e) => e.fault.to_string(),
+        }
+    }
+
+    #[test]
+    fn limit_states_from_tables() {
+        let a = parse("[site]\nsoil = \"B\"\n[site.SLV]\nag = 0.155\nF0 = 2.47\nTc_star = 0.36\n").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(a.site.code, Code::Ntc2018);
+        assert_eq!(a.site.spectra.len(), 1);
+        let Some(CodeSpectrum::Ntc(slv)) = a.site.spectrum(LimitState::Slv) else {
+            panic!("no SLV")
+        };
+        // SS = 1.40 − 0.40·2.47·0.155 = 1.24686, clamped to 1.20.
+        assert_relative_eq!(slv.ss(), 1.2, max_relative = 1e-15);
+        assert_relative_eq!(a.confidence_factor, 1.35, max_relative = 1e-15);
+        assert!(a.records.is_empty());
+    }
+
+    #[test]
+    fn limit_states_from_the_synthetic_grid() {
+        let a = parse("[site]\nsoil = \"C\"\ngrid = \"hazard/synthetic_grid.txt\"\nlon = 14.30\nlat = 40.95\nVN = 50\nCU = 1.0\n")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let states: Vec<LimitState> = a.site.spectra.iter().map(|(s, _)| *s).collect();
+        assert_eq!(states, [LimitState::Sld, LimitState::Slv, LimitState::Slc]);
+        // On node 40001, SLC with VN CU = 50: TR = 974.79 years, just under 975:
+        // ag = 0.2164 g there (the 975 column) to within the log-log step 1e-4.
+        let slc = a.site.spectrum(LimitState::Slc).map(CodeSpectrum::ag).unwrap_or_default();
+        assert_relative_eq!(slc, 0.2164, max_relative = 1e-4);
+    }
+
+    #[test]
+    fn refusals_name_the_key() {
+        assert!(message("[site]\nsoil = \"F\"\n[site.SLV]\nag = 0.1\nF0 = 2.5\nTc_star = 0.3\n").starts_with("site.soil: unknown category"));
+        assert!(message("[site]\nsoil = \"B\"\n").starts_with("site: give the site parameters"));
+        assert!(message("[site]\nsoil = \"B\"\n[site.SLV]\nag = 0.1\nF0 = 2.5\n").starts_with("site.SLV.Tc_star: required"));
+        assert!(message("[site]\nsoil = \"B\"\n[site.SLV]\nag = -0.1\nF0 = 2.5\nTc_star = 0.3\n").starts_with("site.SLV.ag: must be"));
+        assert!(message("[site]\nsoil = \"B\"\ngrid = \"hazard/synthetic_grid.txt\"\nlon = 9.0\nlat = 45.0\n")
+            .starts_with("site.lon: the site (lon 9, lat 45) is outside the hazard grid"));
+        assert!(message("[site]\nsoil = \"B\"\ncode = \"ec8\"\ntopography = \"T2\"\n[site.SD]\nag = 0.2\n").starts_with("site.topography: does not apply"));
+        assert!(
+            message("[site]\nsoil = \"B\"\n[site.SLV]\nag = 0.1\nF0 = 2.5\nTc_star = 0.3\n[assessment]\nrecord = []\n")
+                .starts_with("assessment.record: unknown key (did you mean `records`?)")
+        );
+        assert!(
+            message("[site]\nsoil = \"B\"\n[site.SLV]\nag = 0.1\nF0 = 2.5\nTc_star = 0.3\n[ground]\ntype = \"none\"\n")
+                .starts_with("ground: an assessment file has no [ground]")
+        );
+    }
+}

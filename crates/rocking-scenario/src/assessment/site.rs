@@ -1,0 +1,303 @@
+//! The `[site]` table of an assessment file: the code, the soil, the
+//! topography and the site parameters of each limit state, given per limit
+//! state (`[site.SLV]`) or from a hazard grid at the site's coordinates.
+
+use crate::error::{ErrorKind, Fault};
+use crate::read::{positive, Section};
+use rocking_codes::{CodeSpectrum, Ec8Spectrum, Ec8Type, HazardGrid, LimitState, NtcSite, NtcSpectrum, Soil, Topography, DEFAULT_DAMPING_PCT};
+use std::path::{Path, PathBuf};
+use toml::Value;
+
+/// The keys of `[site]`, its limit states' tables included.
+pub const SITE_KEYS: &[&str] = &[
+    "code",
+    "soil",
+    "topography",
+    "ST",
+    "spectrum_type",
+    "grid",
+    "lon",
+    "lat",
+    "VN",
+    "CU",
+    "SLO",
+    "SLD",
+    "SLV",
+    "SLC",
+    "DL",
+    "SD",
+    "NC",
+];
+/// The keys of an NTC limit state's table (`[site.SLV]`).
+pub const NTC_STATE_KEYS: &[&str] = &["ag", "F0", "Tc_star"];
+/// The keys of an EN 1998 limit state's table (`[site.SD]`).
+pub const EC8_STATE_KEYS: &[&str] = &["ag"];
+
+/// Nominal life `VN` (years) when not given: an ordinary building (NTC 2018 Tab. 2.4.I).
+pub const DEFAULT_NOMINAL_LIFE: f64 = 50.0;
+/// Coefficient of use `CU` when not given: class II (NTC 2018 Tab. 2.4.II).
+pub const DEFAULT_USE_COEFFICIENT: f64 = 1.0;
+
+/// The code an assessment follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Code {
+    /// NTC 2018 (Italy), limit states SLO, SLD, SLV, SLC.
+    Ntc2018,
+    /// EN 1998-1 spectra, EN 1998-3 limit states DL, SD, NC.
+    Ec8,
+}
+
+impl Code {
+    /// Its name in the file: `ntc2018`, `ec8`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Code::Ntc2018 => "ntc2018",
+            Code::Ec8 => "ec8",
+        }
+    }
+    /// The limit states it has tables for, in order.
+    pub fn limit_states(self) -> &'static [LimitState] {
+        match self {
+            Code::Ntc2018 => &LimitState::NTC,
+            Code::Ec8 => &LimitState::EC8,
+        }
+    }
+}
+
+/// Where the site parameters came from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SiteSource {
+    /// The limit states' tables of the file.
+    Tables,
+    /// A hazard grid at a site.
+    Grid {
+        /// The grid file, resolved against the assessment file's folder.
+        path: PathBuf,
+        /// Longitude of the site (degrees east).
+        lon: f64,
+        /// Latitude (degrees north).
+        lat: f64,
+        /// Nominal life `VN` (years).
+        nominal_life: f64,
+        /// Coefficient of use `CU`.
+        use_coefficient: f64,
+    },
+}
+
+/// A validated `[site]`: the code spectrum (at 5%) of each limit state given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Site {
+    /// The code.
+    pub code: Code,
+    /// The subsoil category (ground type).
+    pub soil: Soil,
+    /// Where the parameters came from.
+    pub source: SiteSource,
+    /// Each limit state's elastic spectrum at 5% damping, in the code's order.
+    pub spectra: Vec<(LimitState, CodeSpectrum)>,
+}
+
+impl Site {
+    /// The spectrum of `state`, if the site has it.
+    pub fn spectrum(&self, state: LimitState) -> Option<&CodeSpectrum> {
+        self.spectra.iter().find(|(s, _)| *s == state).map(|(_, c)| c)
+    }
+}
+
+/// The fault of a library error on `key`, the library naming the parameter.
+fn codes_fault(prefix: &str, e: rocking_codes::Error) -> Fault {
+    match e {
+        rocking_codes::Error::InvalidParameter { name, reason } => Fault::invalid(format!("{prefix}.{name}"), reason),
+        other => Fault::invalid(prefix, other.to_string()),
+    }
+}
+
+/// Parses `[site]`; `folder` resolves the grid's path.
+pub(crate) fn parse(value: &Value, folder: &Path) -> Result<Site, Fault> {
+    let site = Section::new("site", value)?;
+    site.only(SITE_KEYS)?;
+    let code = site.choice("code", &[("ntc2018", Code::Ntc2018), ("ec8", Code::Ec8)])?.unwrap_or(Code::Ntc2018);
+    let soil: Soil = match site.string("soil")? {
+        Some(s) => s.parse().map_err(|e| codes_fault("site", e))?,
+        None => {
+            return Err(Fault::new(
+                "site.soil",
+                ErrorKind::Missing("required: the subsoil category, \"A\" to \"E\"".into()),
+            ))
+        }
+    };
+    let other_code = |key: &str| -> Result<(), Fault> {
+        if site.has(key) {
+            return Err(Fault::new(
+                site.key(key),
+                ErrorKind::NotApplicable(format!("does not apply with code = \"{}\"", code.as_str())),
+            ));
+        }
+        Ok(())
+    };
+    for state in LimitState::NTC.iter().chain(&LimitState::EC8) {
+        if !code.limit_states().contains(state) {
+            other_code(state.as_str())?;
+        }
+    }
+    let tables: Vec<LimitState> = code.limit_states().iter().copied().filter(|s| site.has(s.as_str())).collect();
+    let grid = site.string("grid")?;
+    if grid.is_none() {
+        for key in ["lon", "lat", "VN", "CU"] {
+            if site.has(key) {
+                return Err(Fault::new(site.key(key), ErrorKind::NotApplicable("applies only with grid".into())));
+            }
+        }
+    }
+    let spectra = match code {
+        Code::Ntc2018 => {
+            other_code("spectrum_type")?;
+            site.exclusive("topography", "ST")?;
+            let topography = match (site.string("topography")?, site.number("ST")?) {
+                (Some(t), _) => t.parse().map_err(|e| codes_fault("site", e))?,
+                (None, Some(st)) => Topography::factor(st).map_err(|e| codes_fault("site", e))?,
+                (None, None) => Topography::T1,
+            };
+            let build = |state: LimitState, ntc: NtcSite, prefix: &str| {
+                NtcSpectrum::new(ntc, soil, topography, DEFAULT_DAMPING_PCT)
+                    .map(|s| (state, CodeSpectrum::Ntc(s)))
+                    .map_err(|e| codes_fault(prefix, e))
+            };
+            match grid {
+                Some(path) => {
+                    if let Some(state) = tables.first() {
+                        return Err(Fault::new(
+                            site.key(state.as_str()),
+                            ErrorKind::NotApplicable("give either the limit states' tables or grid, not both".into()),
+                        ));
+                    }
+                    let (hazard, nominal_life, use_coefficient, source) = grid_site(&site, path, folder)?;
+                    // The checks' limit states.
+                    [LimitState::Sld, LimitState::Slv, LimitState::Slc]
+                        .into_iter()
+                        .map(|state| {
+                            let ntc = hazard
+                                .for_limit_state(state, nominal_life, use_coefficient)
+                                .map_err(|e| codes_fault("site", e))?;
+                            build(state, ntc, "site.grid")
+                        })
+                        .collect::<Result<Vec<_>, Fault>>()
+                        .map(|spectra| (spectra, source))
+                }
+                None => tables
+                    .iter()
+                    .map(|&state| {
+                        let name = state.as_str();
+                        let table = Section::new(static_key(state), site.get(name).unwrap_or(&Value::Boolean(false)))?;
+                        table.only(NTC_STATE_KEYS)?;
+                        let mut values = [0.0; 3];
+                        for (v, key) in values.iter_mut().zip(NTC_STATE_KEYS) {
+                            *v = table
+                                .number(key)?
+                                .ok_or_else(|| Fault::new(table.key(key), ErrorKind::Missing("required".into())))?;
+                        }
+                        let ntc = NtcSite::new(values[0], values[1], values[2]).map_err(|e| codes_fault(table.name(), e))?;
+                        build(state, ntc, table.name())
+                    })
+                    .collect::<Result<Vec<_>, Fault>>()
+                    .map(|spectra| (spectra, SiteSource::Tables)),
+            }
+        }
+        Code::Ec8 => {
+            for key in ["topography", "ST", "grid"] {
+                other_code(key)?;
+            }
+            let kind = match site.number("spectrum_type")? {
+                Some(n) => Ec8Type::from_number(n).map_err(|e| codes_fault("site", e))?,
+                None => Ec8Type::Type1,
+            };
+            tables
+                .iter()
+                .map(|&state| {
+                    let table = Section::new(static_key(state), site.get(state.as_str()).unwrap_or(&Value::Boolean(false)))?;
+                    table.only(EC8_STATE_KEYS)?;
+                    let ag = table
+                        .number("ag")?
+                        .ok_or_else(|| Fault::new(table.key("ag"), ErrorKind::Missing("required: γI agR (g)".into())))?;
+                    Ec8Spectrum::new(ag, soil, kind, DEFAULT_DAMPING_PCT)
+                        .map(|s| (state, CodeSpectrum::Ec8(s)))
+                        .map_err(|e| codes_fault(table.name(), e))
+                })
+                .collect::<Result<Vec<_>, Fault>>()
+                .map(|spectra| (spectra, SiteSource::Tables))
+        }
+    };
+    let (spectra, source) = spectra?;
+    if spectra.is_empty() {
+        let names: Vec<String> = code.limit_states().iter().map(|s| format!("[site.{s}]")).collect();
+        let grid = if code == Code::Ntc2018 { " or grid, lon, lat" } else { "" };
+        return Err(Fault::new(
+            "site",
+            ErrorKind::Missing(format!("give the site parameters: {}{grid}", names.join(", "))),
+        ));
+    }
+    Ok(Site { code, soil, source, spectra })
+}
+
+/// The dotted name of a limit state's table.
+fn static_key(state: LimitState) -> &'static str {
+    match state {
+        LimitState::Slo => "site.SLO",
+        LimitState::Sld => "site.SLD",
+        LimitState::Slv => "site.SLV",
+        LimitState::Slc => "site.SLC",
+        LimitState::Dl => "site.DL",
+        LimitState::Sd => "site.SD",
+        LimitState::Nc => "site.NC",
+    }
+}
+
+/// Reads the grid and interpolates it at the site: the site's hazard, `VN`, `CU` and the source.
+fn grid_site(site: &Section<'_>, path: &str, folder: &Path) -> Result<(rocking_codes::SiteHazard, f64, f64, SiteSource), Fault> {
+    let required = |key: &str| -> Result<f64, Fault> {
+        site.number(key)?.ok_or_else(|| {
+            Fault::new(
+                site.key(key),
+                ErrorKind::Missing(format!(
+                    "required with grid: the site's {}",
+                    if key == "lon" {
+                        "longitude (degrees east)"
+                    } else {
+                        "latitude (degrees north)"
+                    }
+                )),
+            )
+        })
+    };
+    let (lon, lat) = (required("lon")?, required("lat")?);
+    let nominal_life = positive("site.VN", site.number("VN")?.unwrap_or(DEFAULT_NOMINAL_LIFE))?;
+    let use_coefficient = positive("site.CU", site.number("CU")?.unwrap_or(DEFAULT_USE_COEFFICIENT))?;
+    let file = folder.join(path);
+    let text = std::fs::read_to_string(&file).map_err(|e| {
+        Fault::new(
+            "site.grid",
+            ErrorKind::Read {
+                path: file.clone(),
+                reason: crate::error::io_reason(&e),
+                os_error: e.raw_os_error(),
+            },
+        )
+    })?;
+    let grid = HazardGrid::parse(&text).map_err(|e| Fault::invalid("site.grid", format!("{}: {e}", file.display())))?;
+    let hazard = grid.site(lon, lat).map_err(|e| match e {
+        rocking_codes::Error::OutsideGrid { .. } => Fault::invalid("site.lon", format!("{e} ({})", file.display())),
+        other => codes_fault("site", other),
+    })?;
+    Ok((
+        hazard,
+        nominal_life,
+        use_coefficient,
+        SiteSource::Grid {
+            path: file,
+            lon,
+            lat,
+            nominal_life,
+            use_coefficient,
+        },
+    ))
+}
