@@ -1207,13 +1207,43 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 });
                 self.watch.conditions
             };
-            let holds = |j: Jet| j.v > 0.0 || (j.v == 0.0 && j.d > 0.0);
-            let Some(i) = (0..n).find(|&i| holds(conditions[i])) else {
+            let holds = |i: usize| match (list[i], conditions[i].v) {
+                // At u̇ = 0 the relative acceleration does not decide (it is
+                // zero when μk = μs): Coulomb's law does.
+                (Condition::SlipStop, 0.0) => !self.slides_on(),
+                _ => holds_now(conditions[i]),
+            };
+            let Some(i) = (0..n).find(|&i| holds(i)) else {
                 return Ok(());
             };
             self.switch(list[i])?;
         }
         Ok(())
+    }
+
+    /// Coulomb's law at `u̇ = 0` for a building in `slip σ`: it slides on only
+    /// where the friction demand of the building held stuck exceeds `μs N`
+    /// towards its slip, or reaches it and grows. That is the condition that
+    /// starts the slip, evaluated as `settle` evaluates it on the stuck
+    /// building, so the two decisions cannot disagree at one instant (they
+    /// did when the relative acceleration decided: with `μk = μs` a slip
+    /// starts with `σ ü` zero to rounding, and its sign flipped the building
+    /// between stick and slip until the run gave up). With `μk = μs`, `σ ü`
+    /// and `σ u⃛` at `u̇ = 0` are the demand's margin over `μs N` and its
+    /// rate, divided by the building's effective mass: this is the decision
+    /// of the next derivative.
+    fn slides_on(&self) -> bool {
+        let BuildingRegime::Slip(dir) = self.regime.building else { return false };
+        let starts = match dir {
+            SlipDirection::Negative => Condition::SlipNegative,
+            SlipDirection::Positive => Condition::SlipPositive,
+        };
+        let stuck = Regime {
+            building: BuildingRegime::Stick,
+            ..self.regime
+        };
+        let w = watched(self.kernel, stuck, &self.segment.piece, &self.vsegment.piece, &[starts], self.t, &self.y, None);
+        holds_now(w.conditions[0])
     }
 
     /// Performs the transition of `condition` at the current instant.
@@ -1339,6 +1369,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.record_instant();
         Ok(())
     }
+}
+
+/// Whether a condition with its time derivative, at the current instant,
+/// switches at once: it already holds, or it is zero and growing.
+fn holds_now(j: Jet) -> bool {
+    j.v > 0.0 || (j.v == 0.0 && j.d > 0.0)
 }
 
 /// For a condition that is zero at `t0`: a point in `(t0, t1)` where it is
