@@ -513,6 +513,25 @@ pub const SUMMARY: &[Field] = &[
         },
     },
     Field {
+        name: "end_state",
+        kind: Kind::Text,
+        unit: "",
+        meaning: "the tower at the end: `rest`, `rocking` (within its stability limit), `beyond_stability_limit` (θ past ±α: its centre of mass beyond the pivot) or `overturned`",
+        present: always,
+        read: |o| match o.derived.alpha {
+            Some(_) => Cell::Text(o.summary.end_state.as_str().to_string()),
+            None => Cell::Empty,
+        },
+    },
+    Field {
+        name: "will_overturn",
+        kind: Kind::Flag,
+        unit: "",
+        meaning: "whether the tower's free motion from the end overturns it (closed form: its energy against the barrier at θ = ±α, its direction, the next impact's restitution); empty while ground motion remains after the end or the building slides",
+        present: always,
+        read: |o| o.summary.will_overturn.map_or(Cell::Empty, Cell::Bool),
+    },
+    Field {
         name: "min_theta_rad",
         kind: Kind::Number,
         unit: "rad",
@@ -742,9 +761,11 @@ mod tests {
         for o in outcomes {
             for f in SUMMARY {
                 let cell = (f.read)(&o);
+                // Text and flags of the tower are empty without one (end_state,
+                // will_overturn), and will_overturn while the end is undecided.
                 let ok = match f.kind {
-                    Kind::Text => matches!(cell, Cell::Text(_)),
-                    Kind::Flag => matches!(cell, Cell::Bool(_)),
+                    Kind::Text => matches!(cell, Cell::Text(_)) || (matches!(cell, Cell::Empty) && f.name == "end_state"),
+                    Kind::Flag => matches!(cell, Cell::Bool(_)) || (matches!(cell, Cell::Empty) && f.name == "will_overturn"),
                     Kind::Number => matches!(cell, Cell::Float(_) | Cell::Int(_) | Cell::Empty),
                 };
                 assert!(ok, "{}: {:?} is not a {:?}", f.name, cell, f.kind);

@@ -57,5 +57,5 @@ pub use history::{EventLog, History, Sampler};
 pub use model::{Derived, Model};
 pub use observer::{Flow, Halt, Observer, Sample, Step};
 pub use regime::{BuildingRegime, Motion, Pivot, Regime, SlipDirection, State, TowerRegime};
-pub use response::{EndReason, Summary};
+pub use response::{free_motion_overturns, EndReason, EndState, Summary};
 pub use simulate::{simulate, simulate_with_vertical, Initial, Settings, MAX_ATOL, MAX_RTOL, MIN_ATOL, MIN_RTOL, REST_ANGULAR_VELOCITY};

@@ -12,6 +12,61 @@ pub enum EndReason {
     Overturned,
 }
 
+/// The tower at the end of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EndState {
+    /// At rest on its base (`θ = 0`, `θ̇ = 0`), or no tower.
+    Rest,
+    /// Rocking within its stability limit (`|θ| <= α`).
+    Rocking,
+    /// Beyond its stability limit, `|θ| > α`: its centre of mass is past the pivot.
+    BeyondStabilityLimit,
+    /// Overturned (`|θ| = π/2`).
+    Overturned,
+}
+
+impl EndState {
+    /// The name in `summary.json`: `rest`, `rocking`, `beyond_stability_limit`, `overturned`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            EndState::Rest => "rest",
+            EndState::Rocking => "rocking",
+            EndState::BeyondStabilityLimit => "beyond_stability_limit",
+            EndState::Overturned => "overturned",
+        }
+    }
+}
+
+/// Whether a tower rocking freely from `θ`, `θ̇` (no ground motion, a base
+/// that stays put) overturns, in closed form from its energy.
+///
+/// With `e = θ̇² / (2p²) + cos(α − |θ|)` (the energy `½ I_O θ̇² + m g R cos(α − |θ|)`
+/// over `m g R`), the barrier is `e = 1`, at `|θ| = α`, and the motion between
+/// impacts conserves `e`:
+///
+/// - moving outward (`θ θ̇ > 0`) it passes the barrier, and falls, if `e > 1`
+///   (beyond it, `|θ| > α`, it falls whatever `e`);
+/// - moving inward from beyond the barrier (or still there) it falls back
+///   unless `e > 1`, and then goes on as below;
+/// - otherwise it reaches `θ = 0` with `θ̇² / (2p²) = e − cos α`; the impact
+///   multiplies `θ̇` by `r`, and the tower falls if the flight on the other
+///   side clears the barrier, `r² (e − cos α) > 1 − cos α`. Each later flight
+///   starts slower (`r < 1`), so it is the last chance.
+///
+/// A tower that rests (`θ = 0`, `θ̇ = 0`) stays.
+pub fn free_motion_overturns(alpha: f64, p: f64, restitution: f64, theta: f64, theta_dot: f64) -> bool {
+    let lean = theta.abs();
+    let outward = theta * theta_dot > 0.0;
+    let e = theta_dot * theta_dot / (2.0 * p * p) + (alpha - lean).cos();
+    if lean > alpha && (outward || e <= 1.0) {
+        return true;
+    }
+    if outward && lean <= alpha {
+        return e > 1.0;
+    }
+    restitution * restitution * (e - alpha.cos()) > 1.0 - alpha.cos()
+}
+
 /// What a run found. Angles in rad, lengths in m, times in s, accelerations in m/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Summary {
@@ -50,6 +105,11 @@ pub struct Summary {
     pub evaluations: u64,
     /// The least effective gravity `g + a_v` over the run (m/s²), with a vertical input.
     pub min_effective_gravity: Option<f64>,
+    /// The tower at the end of the run.
+    pub end_state: EndState,
+    /// What the free motion from the end does ([`free_motion_overturns`]):
+    /// `None` while ground motion remains after the end or the building slides.
+    pub will_overturn: Option<bool>,
 }
 
 impl Summary {
@@ -94,6 +154,8 @@ impl Tracker {
                 events: 0,
                 evaluations: 0,
                 min_effective_gravity: None,
+                end_state: EndState::Rest,
+                will_overturn: None,
             },
         }
     }

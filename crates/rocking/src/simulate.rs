@@ -40,6 +40,7 @@ use crate::jet::Jet;
 use crate::model::Model;
 use crate::observer::{Interpolant, Observer, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
+use crate::response::{free_motion_overturns, EndState};
 use crate::response::{EndReason, Summary, Tracker};
 use arrayvec::ArrayVec;
 use std::f64::consts::FRAC_PI_2;
@@ -554,6 +555,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             }
         }
         self.tracker.summary.evaluations = self.stepper.evaluations;
+        (self.tracker.summary.end_state, self.tracker.summary.will_overturn) = self.end_verdict();
         if self.has_vertical {
             self.tracker.summary.min_effective_gravity = Some(self.min_effective_gravity(self.t));
         } else if self.vertical_given {
@@ -561,6 +563,32 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             self.tracker.summary.min_effective_gravity = Some(self.kernel.g);
         }
         Ok(self.tracker.finish(self.kernel, self.t, &self.y))
+    }
+
+    /// The tower's state at the end and what its free motion will do
+    /// ([`free_motion_overturns`]; unknown while input remains or the building slides).
+    fn end_verdict(&self) -> (EndState, Option<bool>) {
+        let k = self.kernel;
+        let (theta, theta_dot) = (self.y[0], self.y[1]);
+        let state = match self.regime.tower {
+            _ if self.tracker.summary.end_reason == EndReason::Overturned => EndState::Overturned,
+            _ if !k.has_tower => EndState::Rest,
+            _ if theta.abs() > k.alpha => EndState::BeyondStabilityLimit,
+            TowerRegime::Rest => EndState::Rest,
+            TowerRegime::Rocking(_) => EndState::Rocking,
+        };
+        let over = |t: f64, ground: &GroundMotion| {
+            let segment = ground.segment(t);
+            segment.kink == f64::INFINITY && matches!(segment.piece, Piece::Constant(a) if a == 0.0)
+        };
+        let verdict = match state {
+            _ if !k.has_tower => None,
+            EndState::Overturned => Some(true),
+            _ if !over(self.t, self.ground) || !over(self.t, self.vertical) || self.regime.building != BuildingRegime::Stick => None,
+            EndState::Rest => Some(false),
+            _ => Some(free_motion_overturns(k.alpha, (k.k * k.g).sqrt(), k.restitution, theta, theta_dot)),
+        };
+        (state, verdict)
     }
 
     /// The effective gravity `g + a_v` (m/s²) at `t` in the current vertical segment.
