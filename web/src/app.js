@@ -343,6 +343,7 @@ let shown = 0; // the number of the request whose results are shown
 let requested = 0;
 async function computeNow() {
   saveToUrl();
+  markSweepStale();
   const wanted = Object.keys(missingRecords);
   showRecordPrompt();
   if (wanted.length) {
@@ -367,6 +368,11 @@ async function computeNow() {
     charts.update(result);
     animation.update(scenario, result);
     fillTable($("summary"), result.summary);
+    const verdict = verdictOf(result);
+    $("verdict").textContent = verdict;
+    $("verdict").hidden = !verdict;
+    $("verdict").dataset.endState = result.summary.end_state || "";
+    $("verdict").classList.toggle("danger", result.summary.end_state === "overturned" || result.summary.will_overturn === true || result.summary.end_state === "beyond_stability_limit");
     fillTable($("check"), out.derived);
     $("results").classList.remove("stale");
     $("status").textContent = `Computed in ${(result.summary.wall_time_s * 1000).toFixed(1)} ms.`;
@@ -407,18 +413,64 @@ function flatten(obj, prefix = "", out = []) {
   return out;
 }
 
+// The summary's fields as the outputs reference describes them (name → { unit, meaning }).
+let fieldInfo = new Map();
+
+/** A field's plain-language label: its meaning from the outputs reference, else its key. */
+function labelOf(key) {
+  const meaning = fieldInfo.get(key)?.meaning;
+  if (!meaning) return key;
+  // The reference's first clause, without its Markdown: "the tower at the end: `rest`, …" → "The tower at the end".
+  const plain = meaning.replace(/`/g, "").split(/[:;(]/)[0].trim();
+  return plain.charAt(0).toUpperCase() + plain.slice(1);
+}
+
 function fillTable(table, obj) {
   const body = table.tBodies[0];
   body.replaceChildren();
   for (const [key, v] of flatten(obj)) {
     const tr = body.insertRow();
     tr.dataset.key = key;
-    tr.insertCell().textContent = key;
+    const name = tr.insertCell();
+    name.className = "label";
+    name.textContent = labelOf(key);
+    const info = fieldInfo.get(key);
+    if (info) name.title = `${key}: ${info.meaning.replace(/`/g, "")}`;
+    const code = document.createElement("code");
+    code.textContent = key;
+    name.append(" ", code);
     const cell = tr.insertCell();
     cell.className = "num";
     cell.textContent = Array.isArray(v) ? JSON.stringify(v) : format(v);
     cell.dataset.value = JSON.stringify(v);
-    tr.insertCell().textContent = unitOf(key);
+    tr.insertCell().textContent = info ? info.unit.replace(/^–$/, "") : unitOf(key);
+  }
+}
+
+/**
+ * What the end of the run means for the tower, in words (end_state and
+ * will_overturn of the summary; docs/src/model.md, "The end of a run").
+ */
+function verdictOf(result) {
+  const s = result.summary;
+  if (!s.end_state) return "";
+  const theta = result.history.theta;
+  const ratio = s.alpha_rad ? theta[theta.length - 1] / s.alpha_rad : 0;
+  const at = `at t = ${format(s.end_time_s)} s`;
+  const next = {
+    true: " It will overturn: its free motion from there carries it over (no input remains).",
+    false: " It will come to rest: its free motion from there does not carry it over.",
+    null: " Ground motion remains after the run (or the church still slides): what follows is not decided here; run longer.",
+  }[String(s.will_overturn)];
+  switch (s.end_state) {
+    case "overturned":
+      return `The tower overturned at t = ${format(s.overturn_time_s)} s.`;
+    case "beyond_stability_limit":
+      return `The tower ends past its stability limit (θ/α = ${format(ratio)} ${at}), not yet overturned.${next}`;
+    case "rocking":
+      return `The tower is still rocking at the end (θ/α = ${format(ratio)} ${at}).${next}`;
+    default:
+      return `The tower is at rest at the end (${at}).${s.will_overturn === null ? next : ""}`;
   }
 }
 
@@ -644,16 +696,69 @@ function readAxes() {
   return axes;
 }
 
+// The cost of a sweep's case per simulated second, measured with
+// web/tests/bench.py (README, "The page in the browser": 1,000 cases of 20 s
+// in 0.993 s in one worker): 5e-5 s.
+const SWEEP_COST_S = 5e-5;
+let sweepShown = null; // { columns, keys, labels, scenario (JSON text) } of the map drawn
+let sweepConfirmed = "";
+
+/** The number of cases of the axes and their estimated time in the worker (s). */
+function sweepEstimate(axes) {
+  let cases = 1;
+  for (const v of Object.values(axes)) cases *= Array.isArray(v) ? v.length : Number(v.steps) || 1;
+  const duration = typeof scenario.simulation?.duration === "number" ? scenario.simulation.duration : 20;
+  return { cases, seconds: cases * duration * SWEEP_COST_S };
+}
+
+/** An axis's name with its unit (the form's), e.g. "ground.frequency (Hz)". */
+function axisLabel(key) {
+  const dot = key.lastIndexOf(".");
+  const f = FIELDS[key.slice(0, dot)]?.find((f) => f.k === key.slice(dot + 1));
+  return f?.u ? `${key} (${f.u})` : key;
+}
+
+function drawSweep() {
+  if (!sweepShown) return;
+  const { columns, keys, labels } = sweepShown;
+  const at = drawHeatmap($("heatmap"), columns, keys, labels, $("heatmap-log").checked);
+  sweepShown.at = at;
+}
+
+/** Marks the drawn map stale when the inputs are no longer those it was run with. */
+function markSweepStale() {
+  const stale = !!sweepShown && sweepShown.scenario !== JSON.stringify(scenario);
+  $("sweep-stale").hidden = !stale;
+  $("heatmap-box").classList.toggle("stale", stale);
+}
+
 let controller = null;
 async function runSweep() {
   const axes = readAxes();
+  const estimate = sweepEstimate(axes);
+  const text = JSON.stringify([scenario, axes]);
+  if ((estimate.cases > 1e4 || estimate.seconds > 30) && sweepConfirmed !== text) {
+    $("sweep-warning-text").textContent =
+      `This sweep has ${estimate.cases.toLocaleString("en")} cases: about ${Math.ceil(estimate.seconds).toLocaleString("en")} s in this browser (one worker). ` +
+      "The command runs it on every core (rocking sweep --threads N).";
+    $("sweep-warning").hidden = false;
+    $("sweep-anyway").onclick = () => {
+      sweepConfirmed = text;
+      $("sweep-warning").hidden = true;
+      runSweep();
+    };
+    return;
+  }
+  $("sweep-warning").hidden = true;
   controller = new AbortController();
   $("sweep-run").disabled = true;
   $("sweep-cancel").disabled = false;
   const progress = $("sweep-progress");
   const label = $("sweep-label");
   progress.value = 0;
+  delete label.dataset.done;
   const start = performance.now();
+  const ran = JSON.stringify(scenario);
   try {
     const columns = await rocking.sweep(scenario, axes, {
       signal: controller.signal,
@@ -667,7 +772,10 @@ async function runSweep() {
     const n = columns[Object.keys(columns)[0]].length;
     label.textContent = `${n} cases in ${((performance.now() - start) / 1000).toFixed(2)} s`;
     label.dataset.done = "true";
-    drawHeatmap($("heatmap"), columns, Object.keys(axes));
+    const keys = Object.keys(axes);
+    sweepShown = { columns, keys, labels: keys.map(axisLabel), scenario: ran };
+    drawSweep();
+    markSweepStale();
   } catch (e) {
     label.textContent = e.message;
     if (e.message !== "sweep cancelled") showError(e.message);
@@ -677,11 +785,24 @@ async function runSweep() {
   }
 }
 
+function setupHeatmap() {
+  const canvas = $("heatmap");
+  $("heatmap-log").addEventListener("change", drawSweep);
+  canvas.addEventListener("mousemove", (e) => {
+    const box = canvas.getBoundingClientRect();
+    const x = ((e.clientX - box.left) * canvas.width) / box.width;
+    const y = ((e.clientY - box.top) * canvas.height) / box.height;
+    $("heatmap-tip").textContent = sweepShown?.at?.(x, y) || "";
+  });
+  canvas.addEventListener("mouseleave", () => ($("heatmap-tip").textContent = ""));
+}
+
 async function main() {
   setupFiles();
   for (const b of document.querySelectorAll("[data-download]")) b.addEventListener("click", () => download(b.dataset.download).catch((e) => ($("status").textContent = e.message)));
   $("copy-link").addEventListener("click", () => navigator.clipboard?.writeText(location.href));
   $("sweep-run").addEventListener("click", runSweep);
+  setupHeatmap();
   $("sweep-cancel").addEventListener("click", () => controller?.abort());
   try {
     await rocking.ready;
@@ -691,6 +812,7 @@ async function main() {
   }
   const skip = ["name", "tower.section", "ground.type", "ground.file", "ground.text", "ground.format", "ground.units", "building.normal_force"];
   numericKeys = (await rocking.sweepableKeys()).filter((k) => !skip.includes(k));
+  fieldInfo = new Map((await rocking.summaryFields()).map((f) => [f.name, f]));
   setAxes({ "ground.frequency": { from: 3, to: 7, steps: 21 }, "ground.amplitude": { from: 0.5, to: 2, steps: 4 } });
   $("status").textContent = "Engine loaded.";
   if (loadFromUrl()) {

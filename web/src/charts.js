@@ -6,6 +6,12 @@ import uPlot from "../vendor/uPlot.esm.js";
 function markers(state) {
   return {
     hooks: {
+      // The y range in use, on the chart's element (what a reader sees on its axis).
+      setScale: [
+        (u, key) => {
+          if (key === "y") u.root.dataset.yRange = JSON.stringify([u.scales.y.min, u.scales.y.max]);
+        },
+      ],
       drawClear: [
         (u) => {
           const { ctx, bbox } = u;

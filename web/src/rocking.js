@@ -195,5 +195,7 @@ export const rocking = {
   fromToml,
   toToml,
   sweepableKeys: () => ready.then(() => JSON.parse(engine.sweepableKeys())),
+  /** The summary's fields as the outputs reference describes them: [{ name, unit, meaning }]. */
+  summaryFields: () => ready.then(() => JSON.parse(engine.summaryFields())),
 };
 window.rocking = rocking;

@@ -143,3 +143,36 @@ def test_a_long_run_asks_first_and_leaves_the_main_thread_free(page):
     expect(page.locator("#time-label")).to_contain_text("t = 20000.000 s")
     long_tasks = page.evaluate("window.longTasks")
     assert max(long_tasks, default=0) <= 100, long_tasks
+
+
+def test_a_tower_past_its_stability_limit_at_the_end_is_said_to_be(page, browser, server, tmp_path):
+    """A 2 m × 20 m tower (tan α = 0.1) under 0.5 g at 1 Hz for the whole
+    20 s run ends past its stability limit, still turning, not yet overturned:
+    the page says so in words and that it will overturn, as the command's
+    summary says (end_state, will_overturn); the last θ of the history is
+    beyond α."""
+    scenario = {
+        "tower": {"width": 2.0, "height": 20.0, "density": 2000.0},
+        "ground": {"type": "harmonic", "amplitude": 0.5, "frequency": 1.0},
+        "simulation": {"duration": 20.0},
+    }
+    file = tmp_path / "tall.toml"
+    file.write_text(
+        "[tower]\nwidth = 2.0\nheight = 20.0\ndensity = 2000.0\n"
+        '[ground]\ntype = "harmonic"\namplitude = 0.5\nfrequency = 1.0\n[simulation]\nduration = 20.0\n'
+    )
+    expected = command_summary(file, tmp_path / "out")
+    assert (expected["overturned"], expected["end_state"], expected["will_overturn"]) == (False, "beyond_stability_limit", True)
+    other = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(scenario)))
+    verdict = other.locator("#verdict")
+    expect(verdict).to_be_visible()
+    expect(verdict).to_contain_text("past its stability limit")
+    expect(verdict).to_contain_text("It will overturn")
+    assert shown(other, "end_state") == "beyond_stability_limit" and shown(other, "will_overturn") is True
+    ratio = float(verdict.text_content().split("θ/α = ")[1].split(" ")[0])
+    assert ratio > 1, ratio
+    # Labelled in words, the key beside.
+    label = other.locator('#summary tr[data-key="end_state"] td.label')
+    expect(label).to_contain_text("The tower at the end")
+    assert other.errors == [], other.errors
+    other.close()

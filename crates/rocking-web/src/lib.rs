@@ -148,6 +148,26 @@ pub fn sweepable_keys() -> String {
     json!(rocking_scenario::SWEEPABLE_KEYS).to_string()
 }
 
+/// The summary's fields as the outputs reference describes them: the JSON
+/// text of `[{ name, unit, meaning }, …]`, in the order of `summary.json`
+/// (dotted names for nested ones), `wall_time_s` last. The page labels its
+/// summary with them.
+pub fn summary_fields_json() -> String {
+    use rocking_scenario::columns::{SUMMARY, WALL_TIME};
+    let fields: Vec<Value> = SUMMARY
+        .iter()
+        .chain([&WALL_TIME])
+        .map(|f| json!({ "name": f.name, "unit": f.unit, "meaning": f.meaning }))
+        .collect();
+    Value::Array(fields).to_string()
+}
+
+/// See [`summary_fields_json`].
+#[wasm_bindgen(js_name = summaryFields)]
+pub fn summary_fields_js() -> String {
+    summary_fields_json()
+}
+
 /// A sweep, run a block of cases at a time by the page's Web Worker (which
 /// reports progress between blocks and is ended to cancel).
 #[wasm_bindgen]

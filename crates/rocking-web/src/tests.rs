@@ -105,3 +105,38 @@ fn the_typed_columns_hold_the_json_history() {
         assert_eq!(&json!(column), &full["history"][*name], "{name}");
     }
 }
+
+#[test]
+fn the_summary_fields_are_the_keys_of_a_summary_in_order() {
+    // An independent walk of a run's summary object: its keys, nested ones dotted.
+    let json = toml_to_json(TOWER).unwrap_or_else(|e| panic!("{e}"));
+    let summary = &parsed(&run_json(&json).unwrap_or_else(|e| panic!("{e}")))["summary"];
+    let mut keys = Vec::new();
+    for (k, v) in summary.as_object().into_iter().flatten() {
+        match v.as_object() {
+            Some(inner) => keys.extend(inner.keys().map(|i| format!("{k}.{i}"))),
+            None => keys.push(k.clone()),
+        }
+    }
+    let fields = parsed(&summary_fields_json());
+    let names: Vec<String> = fields
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|f| f["name"].as_str().map(String::from))
+        .collect();
+    // Every field, in order; the summary of this scenario (no vertical motion) lacks only the vertical's.
+    let present: Vec<String> = names.iter().filter(|n| keys.contains(n)).cloned().collect();
+    assert_eq!(present, keys);
+    let absent: Vec<&String> = names.iter().filter(|n| !keys.contains(n)).collect();
+    assert_eq!(absent, ["min_effective_gravity_m_s2"]);
+    // Each has a meaning to show; the end state is described as the reference does.
+    let end = fields
+        .as_array()
+        .into_iter()
+        .flatten()
+        .find(|f| f["name"] == "end_state")
+        .cloned()
+        .unwrap_or_default();
+    assert!(end["meaning"].as_str().is_some_and(|m| m.contains("beyond_stability_limit")), "{end}");
+}
