@@ -35,7 +35,9 @@
 mod capacity;
 mod check;
 mod error;
+mod input;
 mod kinematic;
+mod outputs;
 mod search;
 mod site;
 
@@ -45,9 +47,11 @@ pub use capacity::{
 };
 pub use check::{acceleration_ratio, governing, Check, Method, Unit};
 pub use error::Error;
+pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
 pub use kinematic::{
     activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_check, linear_kinematic_demand,
     nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
+pub use outputs::{assessment_json, capacity_csv, capacity_json, check_json, spectrum_json, CAPACITY_HEADER, CAPACITY_POINTS};
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};

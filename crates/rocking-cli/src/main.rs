@@ -5,6 +5,7 @@
 //! rocking run SCENARIO.toml [--out DIR] [--plot]   # one analysis
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
+//! rocking assess ASSESS.toml [--out DIR]           # the checks of the code (Circolare 2019, EC8)
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! rocking spectrum RECORD... [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]   # response spectra
 //! rocking spectrum --site ASSESS.toml [--out DIR] [--plot]   # code spectra, the record set fitted
@@ -47,6 +48,8 @@ enum Command {
     Merge(commands::merge::Args),
     /// Run a fragility study: a suite of records scaled to levels of an intensity measure; stripes, fitted fragility curves.
     Fragility(commands::fragility::Args),
+    /// Assess a tower to the code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998): capacity, checks, ζ_E; writes assessment.json and capacity.csv.
+    Assess(commands::assess::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
     /// Response spectra of records, or the code spectra of an assessment file's site and its record set fitted to them.
@@ -71,6 +74,7 @@ fn main() -> ExitCode {
         Command::Merge(args) => commands::merge::execute(args),
         Command::Keys(args) => commands::keys::execute(args),
         Command::Fragility(args) => commands::fragility::execute(args),
+        Command::Assess(args) => commands::assess::execute(args),
         Command::Spectrum(args) => commands::spectrum::execute(args),
     };
     match result {

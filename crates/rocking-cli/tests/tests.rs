@@ -3,6 +3,7 @@
 
 mod util;
 
+mod assess;
 mod check;
 mod errors;
 mod folder;

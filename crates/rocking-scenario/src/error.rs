@@ -45,15 +45,15 @@ impl fmt::Display for Fault {
 
 impl Fault {
     /// A fault of `key`.
-    pub(crate) fn new(key: impl Into<String>, kind: ErrorKind) -> Self {
+    pub fn new(key: impl Into<String>, kind: ErrorKind) -> Self {
         Self { key: Some(key.into()), kind }
     }
     /// `key` has a value out of its range.
-    pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
+    pub fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
         Self::new(key, ErrorKind::Invalid(reason.into()))
     }
     /// The error of this fault in `file`.
-    pub(crate) fn in_file(self, file: &Path) -> Error {
+    pub fn in_file(self, file: &Path) -> Error {
         Error {
             file: file.to_path_buf(),
             fault: self,

@@ -1,5 +1,6 @@
 //! One file per subcommand; each has its clap `Args` and an `execute`.
 
+pub mod assess;
 pub mod check;
 pub mod fragility;
 pub mod keys;

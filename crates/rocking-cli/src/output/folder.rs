@@ -15,7 +15,7 @@ use anyhow::Context;
 use std::path::{Path, PathBuf};
 
 /// Every file name this tool writes into an output folder.
-pub const KNOWN: [&str; 35] = [
+pub const KNOWN: [&str; 37] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -51,6 +51,8 @@ pub const KNOWN: [&str; 35] = [
     "fit_SD.png",
     "fit_NC.svg",
     "fit_NC.png",
+    "assessment.json",
+    "capacity.csv",
 ];
 
 /// A folder being written: files go to [`Staging::path`]; [`Staging::commit`]

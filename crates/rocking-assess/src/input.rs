@@ -1,0 +1,180 @@
+//! What an assessment needs from its file, validated: the file's `[site]` and
+//! `[assessment]` as the scenario crate reads them
+//! ([`rocking_scenario::AssessmentFile`], whose keys are in the key table),
+//! and what the checks add: the scenario's own sections valid, with a
+//! `[tower]` and without `simulation.duration`; the damage, life-safety and
+//! collapse limit states all given; FC ≥ 1; a record set of 0 or at least 3.
+
+use crate::capacity::{Capacity, CurveKind};
+use crate::check::Check;
+use crate::site::{Role, Site};
+use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario};
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// The scan of the factor λ on every record's fitted scale (the dynamic checks).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LambdaScan {
+    /// The first λ (> 0).
+    pub from: f64,
+    /// The last λ (> from).
+    pub to: f64,
+    /// The step (> 0).
+    pub step: f64,
+}
+
+impl LambdaScan {
+    /// The values of λ: from, from + step, … up to `to` (within a millionth of a step).
+    pub fn values(&self) -> Vec<f64> {
+        let n = ((self.to - self.from) / self.step + 1e-6).floor() as usize;
+        (0..=n).map(|k| self.from + k as f64 * self.step).collect()
+    }
+}
+
+/// The most values of λ a scan may have.
+pub const MAX_LAMBDA_VALUES: usize = 10_000;
+
+/// A validated assessment: the file, its scenario and its site.
+#[derive(Debug, Clone)]
+pub struct AssessmentInput {
+    /// The file as the scenario crate reads it.
+    pub file: AssessmentFile,
+    /// The scenario's sections, validated with no ground motion.
+    scenario: Scenario,
+    /// The three limit states' spectra (5%).
+    pub site: Site,
+    /// The λ scan.
+    pub lambda: LambdaScan,
+}
+
+impl AssessmentInput {
+    /// Parses and validates the TOML text of an assessment file; `origin` names
+    /// the file in errors and is the folder of the grid and the records.
+    pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
+        Self::new(AssessmentFile::from_toml_str(text, origin)?)
+    }
+
+    /// Validates what the checks need of a parsed file.
+    pub fn new(file: AssessmentFile) -> Result<Self, Error> {
+        let origin = file.origin().to_path_buf();
+        let fail = |f: Fault| f.in_file(&origin);
+        if matches!(file.scenario.get("simulation"), Some(Value::Table(s)) if s.contains_key("duration")) {
+            return Err(fail(Fault::new(
+                "simulation.duration",
+                ErrorKind::NotApplicable("a dynamic check runs each record plus assessment.free_after: remove simulation.duration".into()),
+            )));
+        }
+        let scenario = Scenario::from_table(with_ground(&file.scenario, none_ground(), 1.0), &origin)?;
+        if scenario.model().tower().is_none() {
+            return Err(fail(Fault::new(
+                "tower",
+                ErrorKind::Missing("an assessment needs a [tower]: the capacity is that of the tower rocking on its springing level".into()),
+            )));
+        }
+        if file.confidence_factor < 1.0 {
+            return Err(fail(Fault::invalid(
+                "assessment.confidence_factor",
+                format!("must be >= 1 (FC: 1.35, 1.2 or 1 for knowledge levels LC1–LC3), got {}", file.confidence_factor),
+            )));
+        }
+        if !file.records.is_empty() && file.records.len() < rocking_codes::MIN_RECORDS {
+            return Err(fail(Fault::invalid(
+                "assessment.records",
+                format!(
+                    "a record set needs at least {} records (7 for the mean response to be used), got {}",
+                    rocking_codes::MIN_RECORDS,
+                    file.records.len()
+                ),
+            )));
+        }
+        let ntc = file.site.code == rocking_scenario::Code::Ntc2018;
+        let spectra = Role::ALL
+            .map(|role| {
+                let state = role.limit_state(ntc);
+                file.site.spectrum(state).copied().ok_or_else(|| {
+                    fail(Fault::new(
+                        format!("site.{state}"),
+                        ErrorKind::Missing(format!(
+                            "missing [site.{state}]: an assessment checks {} (give each its table, or a hazard grid)",
+                            Role::ALL.map(|r| r.limit_state(ntc).as_str()).join(", ")
+                        )),
+                    ))
+                })
+            })
+            .into_iter()
+            .collect::<Result<Vec<_>, Error>>()?;
+        let site = Site::new(spectra[0], spectra[1], spectra[2]).map_err(|e| fail(Fault::invalid("site", e.to_string())))?;
+        let (from, to, step) = file.lambda;
+        let lambda = LambdaScan { from, to, step };
+        if lambda.values().len() > MAX_LAMBDA_VALUES {
+            return Err(fail(Fault::invalid(
+                "assessment.lambda",
+                format!("more than {MAX_LAMBDA_VALUES} values of λ: widen the step"),
+            )));
+        }
+        Ok(Self { file, scenario, site, lambda })
+    }
+
+    /// The file.
+    pub fn origin(&self) -> &Path {
+        self.file.origin()
+    }
+    /// The scenario's name (default: the file stem).
+    pub fn name(&self) -> &str {
+        self.scenario.name()
+    }
+    /// The tower, the building and gravity.
+    pub fn model(&self) -> &rocking::Model {
+        self.scenario.model()
+    }
+    /// The capacity curve chosen.
+    pub fn curve(&self) -> CurveKind {
+        match self.file.capacity {
+            rocking_scenario::Capacity::Linear => CurveKind::Linear,
+            rocking_scenario::Capacity::Exact => CurveKind::Exact,
+        }
+    }
+    /// The input files besides the assessment file: the grid and the records.
+    pub fn inputs(&self) -> Vec<PathBuf> {
+        let mut inputs: Vec<PathBuf> = self.file.records.iter().map(|r| self.file.folder().join(r)).collect();
+        if let rocking_scenario::SiteSource::Grid { path, .. } = &self.file.site.source {
+            inputs.push(path.clone());
+        }
+        inputs
+    }
+    /// The scenario table of one record's run: the file's scenario with
+    /// `[ground]` the record file `record` (relative to the file's folder)
+    /// and `simulation.duration` the given one.
+    pub fn record_table(&self, record: &str, duration: f64) -> Table {
+        let mut ground = Table::new();
+        ground.insert("type".into(), Value::String("record".into()));
+        ground.insert("file".into(), Value::String(record.into()));
+        with_ground(&self.file.scenario, ground, duration)
+    }
+
+    /// The tower's capacity with the file's FC and curve.
+    pub fn capacity(&self) -> Result<Capacity, Error> {
+        Capacity::of_model(self.model(), self.file.confidence_factor, self.curve()).map_err(|e| Fault::invalid("tower", e.to_string()).in_file(self.origin()))
+    }
+
+    /// The kinematic checks ([`crate::kinematic_checks`]): activation, linear, non-linear (two).
+    pub fn kinematic_checks(&self, capacity: &Capacity) -> Result<Vec<Check>, Error> {
+        crate::kinematic_checks(capacity, &self.site, self.file.q).map_err(|e| Fault::invalid("assessment.q", e.to_string()).in_file(self.origin()))
+    }
+}
+
+fn none_ground() -> Table {
+    let mut ground = Table::new();
+    ground.insert("type".into(), Value::String("none".into()));
+    ground
+}
+
+/// The scenario table `base` with `[ground]` and `simulation.duration` set.
+fn with_ground(base: &Table, ground: Table, duration: f64) -> Table {
+    let mut table = base.clone();
+    table.insert("ground".into(), Value::Table(ground));
+    if let Value::Table(s) = table.entry("simulation").or_insert_with(|| Value::Table(Table::new())) {
+        s.insert("duration".into(), Value::Float(duration));
+    }
+    table
+}

@@ -1,0 +1,84 @@
+//! `rocking assess ASSESS.toml [--out DIR]`: the assessment of a tower to the
+//! code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998). The file, the
+//! capacity and the checks are `rocking_assess`'s; this file writes
+//! `assessment.json` and `capacity.csv` in a staging folder moved into place at
+//! the end, and prints one line per check.
+
+use crate::format::sig;
+use crate::output;
+use anyhow::Context;
+use rocking_assess::{assessment_json, capacity_csv, governing, AssessmentInput, Check};
+use std::path::PathBuf;
+
+/// The verdict: capacity, sites, checks, governing check.
+pub const ASSESSMENT_JSON: &str = "assessment.json";
+/// The capacity curve d*, a*.
+pub const CAPACITY_CSV: &str = "capacity.csv";
+
+/// Arguments of `rocking assess`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The assessment file: a scenario without [ground] plus [site] and [assessment].
+    pub assessment: PathBuf,
+    /// Output folder, created if needed [default: out/<file stem>]. The files
+    /// of an earlier run of this tool there are replaced once the assessment
+    /// ends; other files and inputs never are.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+/// One line of a check for the terminal.
+fn check_line(c: &Check) -> String {
+    format!(
+        "  {:4} {:20} demand {} {} / capacity {} {}: ag capacity {}{} g, ζ_E {}{} {}",
+        c.limit_state.as_str(),
+        c.method.as_str(),
+        sig(c.demand, 4),
+        c.unit.as_str(),
+        sig(c.capacity, 4),
+        c.unit.as_str(),
+        if c.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+        sig(c.ag_capacity.value(), 4),
+        if c.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+        sig(c.zeta_e, 3),
+        if c.holds { "holds" } else { "FAILS" }
+    )
+}
+
+/// Assesses the tower and writes the files.
+pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(&args.assessment).with_context(|| format!("cannot read {}", args.assessment.display()))?;
+    // The file's errors already name the file, the key and the cause.
+    let file = AssessmentInput::from_toml_str(&text, &args.assessment)?;
+    let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.assessment));
+    let outputs: Vec<PathBuf> = [ASSESSMENT_JSON, CAPACITY_CSV].iter().map(|f| dir.join(f)).collect();
+    let mut inputs = vec![args.assessment.clone()];
+    inputs.extend(file.inputs());
+    output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
+    let staging = output::Staging::new(&dir, &inputs)?;
+
+    let capacity = file.capacity()?;
+    let checks = file.kinematic_checks(&capacity)?;
+    let json = assessment_json(file.name(), &capacity, &file.site, &checks, serde_json::Map::new());
+    output::write_summary(&staging.path(ASSESSMENT_JSON), &dir.join(ASSESSMENT_JSON), &json)?;
+    std::fs::write(staging.path(CAPACITY_CSV), capacity_csv(&capacity)).with_context(|| format!("cannot write {}", dir.join(CAPACITY_CSV).display()))?;
+    staging.commit()?;
+
+    let mut lines = vec![format!(
+        "{}: α0 = {}, a0* = {} m/s², d0 = {} m, T_SLV = {} s, T_SLC = {} s (FC {}, {} curve)",
+        file.name(),
+        sig(capacity.alpha0, 4),
+        sig(capacity.a0_star, 4),
+        sig(capacity.d0, 4),
+        sig(capacity.t_slv, 4),
+        sig(capacity.t_slc, 4),
+        capacity.confidence_factor,
+        capacity.curve
+    )];
+    lines.extend(checks.iter().map(check_line));
+    if let Some(g) = governing(&checks) {
+        lines.push(format!("governing: {} {}, ζ_E = {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
+    }
+    lines.push(format!("wrote {ASSESSMENT_JSON}, {CAPACITY_CSV} in {}", dir.display()));
+    super::print(&(lines.join("\n") + "\n"))
+}
