@@ -3,7 +3,8 @@
 // any static file host, or none), and the text of every record file they name
 // (`file = "…"`, relative to the example), by its path from the repository's
 // root, which the page puts in place of the file. Fragility studies (a
-// [study] table) are the command's alone: the page does not offer them.
+// [study] table) and the sites of `rocking spectrum --site` (a [site] table)
+// are the command's alone: the page does not offer them.
 import { readdirSync, readFileSync, writeFileSync, statSync } from "node:fs";
 import { dirname, join, relative, resolve } from "node:path";
 
@@ -17,7 +18,7 @@ const records = {};
     if (statSync(path).isDirectory()) walk(path);
     else if (name.endsWith(".toml")) {
       const toml = readFileSync(path, "utf8");
-      if (/^\[study\]/m.test(toml)) continue;
+      if (/^\[(study|site)[\].]/m.test(toml)) continue;
       found.push({ path: relative(top, path), toml });
       for (const [, file] of toml.matchAll(/^\s*file\s*=\s*"([^"]+)"/gm)) {
         const record = resolve(dirname(path), file);

@@ -173,7 +173,10 @@ function buildForm() {
       box.checked = present;
       box.id = `has-${section}`;
       box.addEventListener("change", () => toggleSection(section, box.checked));
-      legend.append(box, ` [${section}]`);
+      const label = document.createElement("label");
+      label.append(box, ` [${section}]`);
+      box.setAttribute("aria-label", `include the [${section}] table`);
+      legend.append(label);
     } else {
       legend.textContent = `[${section}]`;
     }
@@ -602,6 +605,8 @@ function setupFiles() {
     const e = examples[Number(select.value)];
     if (e) loadToml(e.toml, e.path);
   });
+  $("open-toml-button").addEventListener("click", () => $("open-toml").click());
+  $("record-button").addEventListener("click", () => $("record-file").click());
   $("open-toml").addEventListener("change", async (ev) => {
     const file = ev.target.files[0];
     if (file) {
@@ -660,6 +665,7 @@ function axisEditor(i, spec) {
   box.className = "axis";
   const key = document.createElement("select");
   key.id = `axis${i}-key`;
+  key.setAttribute("aria-label", `axis ${i + 1}: the swept key`);
   if (i === 1) key.append(new Option("(none)", ""));
   for (const k of numericKeys) key.append(new Option(k, k));
   key.value = spec.key;

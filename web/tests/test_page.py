@@ -43,9 +43,9 @@ def without_wall_time(summary: dict) -> dict:
 
 
 def scenario_files():
-    # Scenarios only: not sweeps, not fragility studies (the command's alone).
+    # Scenarios only: not sweeps, not fragility studies nor spectrum sites (the command's alone).
     return sorted(
-        p for p in (ROOT / "examples").rglob("*.toml") if not {"sweep", "study"} & tomllib.loads(p.read_text()).keys()
+        p for p in (ROOT / "examples").rglob("*.toml") if not {"sweep", "study", "site"} & tomllib.loads(p.read_text()).keys()
     )
 
 
@@ -210,8 +210,13 @@ def test_a_sweep_can_be_cancelled(page):
 
 
 def test_screenshot(page):
-    page.click("#play")
-    page.wait_for_timeout(1500)
+    """The page as a desktop (1280 × 800) and a phone (390 × 844) show it on
+    opening, the animation half played: target/web-tests/page.png and
+    page-phone.png (the screenshots of docs/src/guide/page.md)."""
     OUT.mkdir(parents=True, exist_ok=True)
-    page.screenshot(path=str(OUT / "page.png"), full_page=True)
-    assert (OUT / "page.png").stat().st_size > 10_000
+    for name, size in [("page.png", {"width": 1280, "height": 800}), ("page-phone.png", {"width": 390, "height": 844})]:
+        page.set_viewport_size(size)
+        page.eval_on_selector("#time", "s => { s.value = Math.round(s.max * 0.3); s.dispatchEvent(new Event('input')) }")
+        page.wait_for_timeout(300)
+        page.screenshot(path=str(OUT / name))
+        assert (OUT / name).stat().st_size > 10_000
