@@ -24,10 +24,11 @@ pub struct LambdaScan {
 }
 
 impl LambdaScan {
-    /// The values of λ: from, from + step, … up to `to` (within a millionth of a step).
+    /// The values of λ: from, from + step, … up to `to` (within a millionth of a
+    /// step), each rounded to 12 decimals (0.15, not 0.15000000000000002).
     pub fn values(&self) -> Vec<f64> {
         let n = ((self.to - self.from) / self.step + 1e-6).floor() as usize;
-        (0..=n).map(|k| self.from + k as f64 * self.step).collect()
+        (0..=n).map(|k| ((self.from + k as f64 * self.step) * 1e12).round() / 1e12).collect()
     }
 }
 

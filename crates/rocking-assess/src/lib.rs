@@ -34,6 +34,7 @@
 
 mod capacity;
 mod check;
+mod dynamic;
 mod error;
 mod input;
 mod kinematic;
@@ -46,12 +47,16 @@ pub use capacity::{
     secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind, DEFAULT_CONFIDENCE_FACTOR,
 };
 pub use check::{acceleration_ratio, governing, Check, Method, Unit};
+pub use dynamic::{combined_response, dynamic_check, DynamicCheck, LambdaPoint, RecordResponse, RecordSet, SetRecord, LAMBDA_TOLERANCE};
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
 pub use kinematic::{
     activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_check, linear_kinematic_demand,
     nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
-pub use outputs::{assessment_json, capacity_csv, capacity_json, check_json, spectrum_json, CAPACITY_HEADER, CAPACITY_POINTS};
+pub use outputs::{
+    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, CAPACITY_HEADER,
+    CAPACITY_POINTS, RECORDS_HEADER,
+};
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};

@@ -2,9 +2,11 @@
 //! `capacity.csv` as text. The names of the fields are written here once.
 
 use crate::capacity::Capacity;
-use crate::check::{governing, Check};
+use crate::check::{governing, Check, Method};
+use crate::dynamic::{DynamicCheck, RecordSet};
 use crate::site::{Role, Site};
 use rocking_codes::CodeSpectrum;
+use rocking_codes::SetRule;
 use serde_json::{json, Map, Value};
 
 /// The points of the capacity curve in `capacity.csv`.
@@ -70,9 +72,11 @@ pub fn check_json(c: &Check) -> Value {
     })
 }
 
-/// `assessment.json`: `{"name", "code", "capacity", "sites", "checks", "governing"}`;
-/// `extra` adds top-level fields (the dynamic checks' details).
-pub fn assessment_json(name: &str, capacity: &Capacity, site: &Site, checks: &[Check], extra: Map<String, Value>) -> Value {
+/// `assessment.json`: `{"name", "code", "capacity", "sites", "checks", "governing", "dynamic"}`:
+/// the kinematic checks, then the dynamic ones (`dynamic`: the set and its
+/// checks, if the file has a record set); the governing check is the least ζ_E
+/// of the completed checks.
+pub fn assessment_json(name: &str, capacity: &Capacity, site: &Site, checks: &[Check], dynamic: Option<(&RecordSet, &[DynamicCheck])>) -> Value {
     let mut sites = Map::new();
     for role in Role::ALL {
         sites.insert(site.limit_state(role).as_str().to_string(), spectrum_json(&site.spectrum(role)));
@@ -82,9 +86,18 @@ pub fn assessment_json(name: &str, capacity: &Capacity, site: &Site, checks: &[C
     out.insert("code".into(), json!(if site.is_ntc() { "ntc2018" } else { "ec8" }));
     out.insert("capacity".into(), capacity_json(capacity));
     out.insert("sites".into(), Value::Object(sites));
-    out.insert("checks".into(), Value::Array(checks.iter().map(check_json).collect()));
-    out.insert("governing".into(), governing(checks).map_or(Value::Null, check_json));
-    out.extend(extra);
+    let mut all: Vec<Value> = checks.iter().map(check_json).collect();
+    let mut completed: Vec<Check> = checks.to_vec();
+    if let Some((_, dynamic)) = dynamic {
+        all.extend(dynamic.iter().map(dynamic_check_json));
+        completed.extend(dynamic.iter().filter_map(|d| d.check));
+    }
+    out.insert("checks".into(), Value::Array(all));
+    out.insert("governing".into(), governing(&completed).map_or(Value::Null, check_json));
+    out.insert(
+        "dynamic".into(),
+        dynamic.map_or(Value::Null, |(set, d)| Value::Array(d.iter().map(|c| dynamic_json(set, c)).collect())),
+    );
     Value::Object(out)
 }
 
@@ -99,4 +112,117 @@ pub fn capacity_csv(capacity: &Capacity) -> String {
         out.push('\n');
     }
     out
+}
+
+/// The header of `records.csv`.
+pub const RECORDS_HEADER: [&str; 7] = [
+    "limit_state",
+    "record",
+    "scale",
+    "max_control_displacement_m",
+    "overturned",
+    "max_building_slip_m",
+    "error",
+];
+
+/// A CSV field: quoted when it holds a comma, a quote or a line break.
+fn field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+fn number(x: f64) -> String {
+    ryu::Buffer::new().format(x).to_string()
+}
+
+/// `records.csv`: one row per limit state and record at λ = 1 (the fitted scales):
+/// the displacement empty when the tower overturned, the slip empty without a
+/// building, `error` the one line of a record that failed to run.
+pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
+    let mut out = RECORDS_HEADER.join(",") + "\n";
+    for c in checks {
+        for ((record, scale), response) in set.records.iter().zip(&c.fitted.scales).zip(&c.at_one.responses) {
+            let mut row = vec![c.limit_state.as_str().to_string(), field(&record.path), number(*scale)];
+            match response {
+                Ok(r) => {
+                    row.push(r.max_displacement.map(number).unwrap_or_default());
+                    row.push(r.overturned.to_string());
+                    row.push(r.max_slip.map(number).unwrap_or_default());
+                    row.push(String::new());
+                }
+                Err(e) => {
+                    row.extend([String::new(), String::new(), String::new()]);
+                    row.push(field(e));
+                }
+            }
+            out.push_str(&row.join(","));
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// `spectra.csv`: `period_s`, then for each limit state its code spectrum
+/// (`Se_<LS>_g`, 5%), each fitted record's scaled spectrum
+/// (`PSA_<LS>_<record>_g`) and their mean (`PSA_<LS>_mean_g`).
+pub fn spectra_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
+    let mut header = vec!["period_s".to_string()];
+    let mut columns: Vec<Vec<f64>> = vec![set.periods.clone()];
+    for c in checks {
+        header.push(format!("Se_{}_g", c.limit_state));
+        columns.push(c.target_g.clone());
+        for (record, scale) in set.records.iter().zip(&c.fitted.scales) {
+            header.push(field(&format!("PSA_{}_{}_g", c.limit_state, record.name)));
+            columns.push(record.psa_g.iter().map(|a| scale * a).collect());
+        }
+        header.push(format!("PSA_{}_mean_g", c.limit_state));
+        columns.push(c.fitted.mean.clone());
+    }
+    let mut out = header.join(",") + "\n";
+    for k in 0..set.periods.len() {
+        let row: Vec<String> = columns.iter().map(|c| number(c[k])).collect();
+        out.push_str(&row.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// The details of one dynamic check in `assessment.json` (`"dynamic"`): the
+/// fit (scales, compatibility, rule, range), the λ bracket, the scan, and the
+/// error when it could not be completed.
+pub fn dynamic_json(set: &RecordSet, c: &DynamicCheck) -> Value {
+    json!({
+        "limit_state": c.limit_state.as_str(),
+        "records": set.records.iter().map(|r| r.path.as_str()).collect::<Vec<_>>(),
+        "scales": c.fitted.scales,
+        "period_range_s": [set.range.0, set.range.1],
+        "compatibility": {
+            "least_ratio": c.fitted.compatibility.least_ratio,
+            "greatest_ratio": c.fitted.compatibility.greatest_ratio,
+            "holds": c.fitted.compatibility.holds,
+        },
+        "response_rule": match c.fitted.rule { SetRule::Mean => "mean", SetRule::Largest => "largest" },
+        "lambda_holds": c.bracket.map(|b| b.0),
+        "lambda_fails": c.bracket.map(|b| b.1),
+        "scan": c.scan.iter().map(|p| json!({"lambda": p.lambda, "response_m": p.combined, "holds": p.holds})).collect::<Vec<_>>(),
+        "completed": c.check.is_some(),
+        "error": c.error,
+    })
+}
+
+/// The object of a dynamic check in `assessment.json`'s `"checks"`: the check's,
+/// or, when a record failed, the limit state and method with `"completed": false` and the error.
+pub fn dynamic_check_json(c: &DynamicCheck) -> Value {
+    match &c.check {
+        Some(check) => check_json(check),
+        None => json!({
+            "limit_state": c.limit_state.as_str(),
+            "method": Method::NonlinearDynamic.as_str(),
+            "completed": false,
+            "error": c.error,
+        }),
+    }
 }

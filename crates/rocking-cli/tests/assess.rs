@@ -170,3 +170,53 @@ fn bad_input_is_one_line_naming_the_key() {
         assert!(!dir.path().join("out/assessment.json").exists(), "{what}: wrote outputs");
     }
 }
+
+/// With a record set: records.csv has one row per limit state and record, spectra.csv
+/// the code spectrum, each scaled record and the mean per limit state; a record
+/// that cannot be read is named.
+#[test]
+fn the_dynamic_checks_write_their_tables() {
+    let dir = tempdir();
+    std::fs::create_dir_all(dir.path().join("records")).unwrap_or_else(|e| panic!("{e}"));
+    for k in 1..=3 {
+        let text = read(&root().join(format!("data/records/synthetic/kt_0{k}.AT2")));
+        write(dir.path(), &format!("records/kt_0{k}.AT2"), &text);
+    }
+    let text = ASSESS.replace(
+        "q = 2.0",
+        "q = 2.0\nrecords = [\"records/*.AT2\"]\nfree_after = 2.0\nlambda = { from = 0.5, to = 2.0, step = 0.5 }",
+    );
+    let file = write(dir.path(), "assess.toml", &text);
+    let out = dir.path().join("out");
+    let r = rocking(&["assess", arg(&file), "--out", arg(&out), "--threads", "1"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let records = read(&out.join("records.csv"));
+    let lines: Vec<&str> = records.lines().collect();
+    assert_eq!(
+        lines[0],
+        "limit_state,record,scale,max_control_displacement_m,overturned,max_building_slip_m,error"
+    );
+    assert_eq!(lines.len(), 1 + 2 * 3);
+    assert!(
+        lines[1].starts_with("SLV,records/kt_01.AT2,") && lines[4].starts_with("SLC,records/kt_01.AT2,"),
+        "{records}"
+    );
+    let spectra = read(&out.join("spectra.csv"));
+    let header = spectra.lines().next().unwrap_or_default();
+    assert_eq!(
+        header,
+        "period_s,Se_SLV_g,PSA_SLV_kt_01.AT2_g,PSA_SLV_kt_02.AT2_g,PSA_SLV_kt_03.AT2_g,PSA_SLV_mean_g,Se_SLC_g,PSA_SLC_kt_01.AT2_g,PSA_SLC_kt_02.AT2_g,PSA_SLC_kt_03.AT2_g,PSA_SLC_mean_g"
+    );
+    let json: Value = serde_json::from_str(&read(&out.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
+    let methods: Vec<&str> = json["checks"]
+        .as_array()
+        .map(|c| c.iter().filter_map(|c| c["method"].as_str()).collect())
+        .unwrap_or_default();
+    assert_eq!(methods.iter().filter(|m| **m == "nonlinear_dynamic").count(), 2);
+
+    write(dir.path(), "records/kt_04.AT2", "not a record\n");
+    let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(1));
+    assert!(r.stderr.contains("assessment.records") && r.stderr.contains("kt_04.AT2"), "{}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+}

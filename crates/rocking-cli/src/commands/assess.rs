@@ -7,13 +7,17 @@
 use crate::format::sig;
 use crate::output;
 use anyhow::Context;
-use rocking_assess::{assessment_json, capacity_csv, governing, AssessmentInput, Check};
+use rocking_assess::{assessment_json, capacity_csv, dynamic_check, governing, records_csv, spectra_csv, AssessmentInput, Check, RecordSet, Role};
 use std::path::PathBuf;
 
 /// The verdict: capacity, sites, checks, governing check.
 pub const ASSESSMENT_JSON: &str = "assessment.json";
 /// The capacity curve d*, a*.
 pub const CAPACITY_CSV: &str = "capacity.csv";
+/// One row per limit state and record of the dynamic checks.
+pub const RECORDS_CSV: &str = "records.csv";
+/// The code spectra and the fitted records' spectra.
+pub const SPECTRA_CSV: &str = "spectra.csv";
 
 /// Arguments of `rocking assess`.
 #[derive(Debug, clap::Args)]
@@ -25,6 +29,9 @@ pub struct Args {
     /// ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    /// Worker threads of the dynamic checks [default: one per core].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub threads: Option<u32>,
 }
 
 /// One line of a check for the terminal.
@@ -47,11 +54,25 @@ fn check_line(c: &Check) -> String {
 
 /// Assesses the tower and writes the files.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.map_or(0, |n| n as usize))
+        .build()
+        .context("starting the worker threads")?;
+    pool.install(|| assess(args))
+}
+
+fn assess(args: &Args) -> anyhow::Result<()> {
+    let started = std::time::Instant::now();
     let text = std::fs::read_to_string(&args.assessment).with_context(|| format!("cannot read {}", args.assessment.display()))?;
     // The file's errors already name the file, the key and the cause.
     let file = AssessmentInput::from_toml_str(&text, &args.assessment)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.assessment));
-    let outputs: Vec<PathBuf> = [ASSESSMENT_JSON, CAPACITY_CSV].iter().map(|f| dir.join(f)).collect();
+    let dynamic = !file.file.records.is_empty();
+    let mut names = vec![ASSESSMENT_JSON, CAPACITY_CSV];
+    if dynamic {
+        names.extend([RECORDS_CSV, SPECTRA_CSV]);
+    }
+    let outputs: Vec<PathBuf> = names.iter().map(|f| dir.join(f)).collect();
     let mut inputs = vec![args.assessment.clone()];
     inputs.extend(file.inputs());
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
@@ -59,9 +80,30 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
 
     let capacity = file.capacity()?;
     let checks = file.kinematic_checks(&capacity)?;
-    let json = assessment_json(file.name(), &capacity, &file.site, &checks, serde_json::Map::new());
+    let (set, dynamic_checks) = if dynamic {
+        let set = RecordSet::read(&file, capacity.t_slc)?;
+        let d = [Role::LifeSafety, Role::Collapse]
+            .into_iter()
+            .map(|role| dynamic_check(&file, &set, &capacity, role))
+            .collect::<Result<Vec<_>, _>>()?;
+        (Some(set), d)
+    } else {
+        (None, Vec::new())
+    };
+    let json = assessment_json(
+        file.name(),
+        &capacity,
+        &file.site,
+        &checks,
+        set.as_ref().map(|s| (s, dynamic_checks.as_slice())),
+    );
+    let write = |name: &str, text: String| std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()));
     output::write_summary(&staging.path(ASSESSMENT_JSON), &dir.join(ASSESSMENT_JSON), &json)?;
-    std::fs::write(staging.path(CAPACITY_CSV), capacity_csv(&capacity)).with_context(|| format!("cannot write {}", dir.join(CAPACITY_CSV).display()))?;
+    write(CAPACITY_CSV, capacity_csv(&capacity))?;
+    if let Some(set) = &set {
+        write(RECORDS_CSV, records_csv(set, &dynamic_checks))?;
+        write(SPECTRA_CSV, spectra_csv(set, &dynamic_checks))?;
+    }
     staging.commit()?;
 
     let mut lines = vec![format!(
@@ -76,9 +118,29 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         capacity.curve
     )];
     lines.extend(checks.iter().map(check_line));
-    if let Some(g) = governing(&checks) {
+    let mut all = checks.clone();
+    for d in &dynamic_checks {
+        match &d.check {
+            Some(c) => {
+                lines.push(check_line(c));
+                all.push(*c);
+            }
+            None => lines.push(format!(
+                "  {:4} {:20} could not be completed: {}",
+                d.limit_state.as_str(),
+                "nonlinear_dynamic",
+                d.error.as_deref().unwrap_or("a record failed")
+            )),
+        }
+    }
+    if let Some(g) = governing(&all) {
         lines.push(format!("governing: {} {}, ζ_E = {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
     }
-    lines.push(format!("wrote {ASSESSMENT_JSON}, {CAPACITY_CSV} in {}", dir.display()));
+    lines.push(format!(
+        "wrote {} in {} ({} s)",
+        names.join(", "),
+        dir.display(),
+        sig(started.elapsed().as_secs_f64(), 3)
+    ));
     super::print(&(lines.join("\n") + "\n"))
 }

@@ -15,7 +15,7 @@ use anyhow::Context;
 use std::path::{Path, PathBuf};
 
 /// Every file name this tool writes into an output folder.
-pub const KNOWN: [&str; 37] = [
+pub const KNOWN: [&str; 38] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -53,6 +53,7 @@ pub const KNOWN: [&str; 37] = [
     "fit_NC.png",
     "assessment.json",
     "capacity.csv",
+    "records.csv",
 ];
 
 /// A folder being written: files go to [`Staging::path`]; [`Staging::commit`]

@@ -1,0 +1,307 @@
+//! The non-linear dynamic checks (Circolare 2019 §C8.7.1.2.1.9): the record
+//! set fitted to the life-safety and collapse spectra (5%, each record its own
+//! scale, NTC 2018 §3.2.3.6), every record run through the full model (the
+//! tower, and the building sliding if the scenario has one) for its duration
+//! plus `free_after`; the response of a record is the largest control-point
+//! displacement `d*(θ) = R (sin α − sin(α − |θ|))` over the run, overturning
+//! counting as beyond d0. The check holds at a factor λ on every scale when no
+//! record reaches d0 and the mean of the responses (the largest, with fewer
+//! than 7 records) is at most d_LS. Its capacity is `λ ag` for the largest λ
+//! at which it holds below the first failure: λ scanned, the first change
+//! bisected to [`LAMBDA_TOLERANCE`]; the response need not grow with λ, so the
+//! scan's first failure is the one reported, and the whole scan is kept for the
+//! report (the mean response against λ).
+
+use crate::capacity::Capacity;
+use crate::check::{Check, Method, Unit};
+use crate::input::AssessmentInput;
+use crate::search::AgCapacity;
+use crate::site::Role;
+use rayon::prelude::*;
+use rocking::{GroundMotion, Record};
+use rocking_codes::{default_period_range, fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT};
+use rocking_scenario::{Case, Error, Fault, RunOptions, Scenario};
+
+/// The bisection of λ stops when the bracket is this narrow.
+pub const LAMBDA_TOLERANCE: f64 = 1e-3;
+
+/// The periods of the response spectra: 100, log-spaced from 0.02 s to the
+/// larger of 4 s and the fitting range's end.
+fn periods(range_to: f64) -> Result<Vec<f64>, rocking_codes::Error> {
+    PeriodGrid {
+        from: 0.02,
+        to: range_to.max(4.0),
+        count: 100,
+    }
+    .periods()
+}
+
+/// One record of the set, ready to run: its case with the record at scale 1 (m/s²).
+#[derive(Debug, Clone)]
+pub struct SetRecord {
+    /// The file, relative to the assessment file's folder.
+    pub path: String,
+    /// Its file name, the column names of the outputs.
+    pub name: String,
+    /// The case of the record at scale 1.
+    case: Case,
+    /// The record (m/s²).
+    record: Record,
+    /// Its pseudo-acceleration spectrum at 5% (g) at [`RecordSet::periods`].
+    pub psa_g: Vec<f64>,
+}
+
+/// The record set of an assessment, read once, with its spectra.
+#[derive(Debug, Clone)]
+pub struct RecordSet {
+    /// The periods of the spectra (s).
+    pub periods: Vec<f64>,
+    /// The fitting range (s).
+    pub range: (f64, f64),
+    /// The records, in the file's order.
+    pub records: Vec<SetRecord>,
+}
+
+/// The response of one record at one scale.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RecordResponse {
+    /// The largest control-point displacement d* (m); `None` when the tower overturned.
+    pub max_displacement: Option<f64>,
+    /// Whether the tower overturned.
+    pub overturned: bool,
+    /// The building's largest slip (m); `None` without a building.
+    pub max_slip: Option<f64>,
+}
+
+impl RecordResponse {
+    /// The response as the check reads it: d*, or d0 and beyond when it overturned.
+    pub fn displacement_or(&self, d0: f64) -> f64 {
+        self.max_displacement.unwrap_or(d0).max(if self.overturned { d0 } else { 0.0 })
+    }
+}
+
+/// The responses of the set at one λ and the check's verdict there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LambdaPoint {
+    /// λ.
+    pub lambda: f64,
+    /// Each record's response, or the one line of its failure.
+    pub responses: Vec<Result<RecordResponse, String>>,
+    /// The mean (7 records or more) or the largest response (m), overturning counted as d0.
+    pub combined: f64,
+    /// Whether the check holds: every record ran, none reached d0, the combined response at most d_LS.
+    pub holds: bool,
+    /// Whether every record ran.
+    pub complete: bool,
+}
+
+/// The non-linear dynamic check of one limit state.
+#[derive(Debug, Clone)]
+pub struct DynamicCheck {
+    /// The limit state (SLV or SLC; SD or NC).
+    pub limit_state: LimitState,
+    /// The target spectrum (5%, g) at the set's periods.
+    pub target_g: Vec<f64>,
+    /// The set fitted to it.
+    pub fitted: FittedSet,
+    /// The responses at λ = 1 (the fitted scales).
+    pub at_one: LambdaPoint,
+    /// The scan, then the bisection's points, in the order run.
+    pub scan: Vec<LambdaPoint>,
+    /// The bracket `(holds, fails)` of λ found, `None` when it held over the whole scan.
+    pub bracket: Option<(f64, f64)>,
+    /// The verdict; `None` when a record failed to run (the check could not be completed).
+    pub check: Option<Check>,
+    /// Why it could not be completed.
+    pub error: Option<String>,
+}
+
+/// The combined response of a set (m): the mean of the responses with at least 7
+/// records, the largest with 3 to 6 (NTC 2018 §7.3.5), overturning counted as d0.
+pub fn combined_response(responses: &[f64], rule: SetRule) -> f64 {
+    match rule {
+        SetRule::Mean => responses.iter().sum::<f64>() / responses.len() as f64,
+        SetRule::Largest => responses.iter().copied().fold(0.0, f64::max),
+    }
+}
+
+impl RecordSet {
+    /// Reads the records of the assessment (each as `[ground]` reads a record,
+    /// format guessed) and computes their spectra. `t_slc` (s) stretches the
+    /// default fitting range.
+    pub fn read(input: &AssessmentInput, t_slc: f64) -> Result<Self, Error> {
+        let origin = input.origin();
+        let range = input.file.period_range.unwrap_or_else(|| default_period_range(Some(t_slc)));
+        let periods = periods(range.1).map_err(|e| Fault::invalid("assessment.period_range", e.to_string()).in_file(origin))?;
+        let g = input.model().gravity();
+        let records = input
+            .file
+            .records
+            .par_iter()
+            .map(|path| {
+                // The record's duration is not known before it is read: a first case reads it.
+                let read = |duration: f64| {
+                    Scenario::from_table(input.record_table(path, duration), origin)
+                        .and_then(|s| s.build())
+                        .map_err(|mut e| {
+                            e.fault.key = Some("assessment.records".into());
+                            e
+                        })
+                };
+                let first = read(1.0)?;
+                let GroundMotion::Record(record) = &first.ground else {
+                    return Err(Fault::invalid("assessment.records", format!("{path} is not a record")).in_file(origin));
+                };
+                let record = record.clone();
+                let case = read(record.duration() + input.file.free_after)?;
+                let psa_g = response_spectrum(&record, &periods, DEFAULT_DAMPING_PCT)
+                    .map_err(|e| Fault::invalid("assessment.records", format!("{path}: {e}")).in_file(origin))?
+                    .into_iter()
+                    .map(|a| a / g)
+                    .collect();
+                let name = path.rsplit('/').next().unwrap_or(path).to_string();
+                Ok(SetRecord {
+                    path: path.clone(),
+                    name,
+                    case,
+                    record,
+                    psa_g,
+                })
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
+        Ok(Self { periods, range, records })
+    }
+
+    /// Runs record `i` at `scale` on its fitted record: its response, or the one line of its failure.
+    pub fn run(&self, i: usize, scale: f64, capacity: &Capacity) -> Result<RecordResponse, String> {
+        let r = &self.records[i];
+        let mut case = r.case.clone();
+        case.ground = GroundMotion::Record(r.record.scaled(scale));
+        let outcome = case.run(RunOptions::SUMMARY).map_err(|e| e.fault.to_string())?;
+        let s = &outcome.summary;
+        let overturned = s.overturned();
+        Ok(RecordResponse {
+            max_displacement: (!overturned).then(|| capacity.displacement_at_rotation(s.max_abs_theta())),
+            overturned,
+            max_slip: case.model.building().map(|_| s.max_abs_slip),
+        })
+    }
+}
+
+/// The set's responses at λ (each record at λ times its scale) and the verdict there.
+fn at_lambda(set: &RecordSet, scales: &[f64], lambda: f64, rule: SetRule, capacity: &Capacity, d_ls: f64) -> LambdaPoint {
+    let responses: Vec<Result<RecordResponse, String>> = (0..scales.len()).into_par_iter().map(|i| set.run(i, lambda * scales[i], capacity)).collect();
+    point(lambda, responses, rule, capacity, d_ls)
+}
+
+fn point(lambda: f64, responses: Vec<Result<RecordResponse, String>>, rule: SetRule, capacity: &Capacity, d_ls: f64) -> LambdaPoint {
+    let complete = responses.iter().all(Result::is_ok);
+    let d: Vec<f64> = responses
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .map(|r| r.displacement_or(capacity.d0))
+        .collect();
+    let combined = combined_response(&d, rule);
+    let beyond = d.iter().any(|&x| x >= capacity.d0);
+    LambdaPoint {
+        lambda,
+        responses,
+        combined,
+        holds: complete && !beyond && combined <= d_ls,
+        complete,
+    }
+}
+
+/// The non-linear dynamic check of the life-safety or collapse state `role`.
+pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capacity, role: Role) -> Result<DynamicCheck, Error> {
+    let origin = input.origin();
+    let spectrum = input.site.spectrum(role);
+    let limit_state = input.site.limit_state(role);
+    let d_ls = match role {
+        Role::LifeSafety => capacity.d_slv,
+        Role::Collapse => capacity.d_slc,
+        Role::Damage => return Err(Fault::invalid("site", "the dynamic checks are of the life-safety and collapse states").in_file(origin)),
+    };
+    let target_g: Vec<f64> = set.periods.iter().map(|&t| spectrum.se(t)).collect();
+    let spectra: Vec<Vec<f64>> = set.records.iter().map(|r| r.psa_g.clone()).collect();
+    let fitted =
+        fit_record_set(&set.periods, &spectra, &target_g, set.range).map_err(|e| Fault::invalid("assessment.records", e.to_string()).in_file(origin))?;
+    let rule = fitted.rule;
+    let scales = fitted.scales.clone();
+    let at_one = at_lambda(set, &scales, 1.0, rule, capacity, d_ls);
+    // The scan: every (λ, record) pair in parallel; the whole curve is kept.
+    let lambdas = input.lambda.values();
+    let n = scales.len();
+    let runs: Vec<Result<RecordResponse, String>> = (0..lambdas.len() * n)
+        .into_par_iter()
+        .map(|k| set.run(k % n, lambdas[k / n] * scales[k % n], capacity))
+        .collect();
+    let mut scan: Vec<LambdaPoint> = runs
+        .chunks(n)
+        .zip(&lambdas)
+        .map(|(r, &lambda)| point(lambda, r.to_vec(), rule, capacity, d_ls))
+        .collect();
+    let incomplete = |p: &LambdaPoint| {
+        p.responses
+            .iter()
+            .zip(&set.records)
+            .find_map(|(r, rec)| r.as_ref().err().map(|e| format!("record {} at λ = {}: {e}", rec.path, p.lambda)))
+    };
+    let mut error = incomplete(&at_one);
+    let mut bracket = None;
+    let mut holds_at = 0.0;
+    for p in &scan {
+        if !p.complete {
+            error = error.or_else(|| incomplete(p));
+            break;
+        }
+        if !p.holds {
+            bracket = Some((holds_at, p.lambda));
+            break;
+        }
+        holds_at = p.lambda;
+    }
+    if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
+        while hi - lo > LAMBDA_TOLERANCE {
+            let mid = 0.5 * (lo + hi);
+            let p = at_lambda(set, &scales, mid, rule, capacity, d_ls);
+            if !p.complete {
+                error = incomplete(&p);
+                break;
+            }
+            if p.holds {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            scan.push(p);
+        }
+        bracket = Some((lo, hi));
+    }
+    let ag = spectrum.ag();
+    let check = error.is_none().then(|| {
+        let ag_capacity = match bracket {
+            Some((lo, _)) => AgCapacity::At(lo * ag),
+            None => AgCapacity::AtLeast(input.lambda.to * ag),
+        };
+        Check::new(
+            limit_state,
+            Method::NonlinearDynamic,
+            Unit::Displacement,
+            at_one.combined,
+            d_ls,
+            ag,
+            ag_capacity,
+        )
+    });
+    Ok(DynamicCheck {
+        limit_state,
+        target_g,
+        fitted,
+        at_one,
+        scan,
+        bracket,
+        check,
+        error,
+    })
+}
