@@ -30,7 +30,9 @@ from ._rocking import HISTORY_COLUMNS as _HISTORY_COLUMNS
 from ._rocking import Scenario, __version__
 from ._rocking import derived as _derived
 from ._rocking import fragility_raw as _fragility_raw
+from ._rocking import code_spectrum_raw as _code_spectrum_raw
 from ._rocking import run_raw as _run_raw
+from ._rocking import spectrum_raw as _spectrum_raw
 from ._rocking import sweep_file_len_raw as _sweep_file_len_raw
 from ._rocking import sweep_file_raw as _sweep_file_raw
 from ._rocking import sweep_len_raw as _sweep_len_raw
@@ -42,7 +44,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["Fragility", "Result", "Scenario", "ScenarioLike", "derived", "fragility", "run", "sweep", "__version__"]
+__all__ = ["Fragility", "Result", "Scenario", "ScenarioLike", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
@@ -259,3 +261,64 @@ def fragility(study: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threa
     """
     raw = _fragility_raw(study, threads)
     return Fragility(raw["stripes"], raw["fragility"], raw["fractions"])
+
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def spectrum(
+    records: Union[PathLike, Sequence[PathLike]],
+    *,
+    damping: float = 5.0,
+    periods: "tuple[float, float, int]" = (0.02, 4.0, 100),
+) -> Dict[str, "np.ndarray"]:
+    """Response spectra of record files, as ``rocking spectrum RECORD...`` writes them.
+
+    The pseudo-acceleration ``PSA(T, ξ) = ω² max|x|`` of the linear oscillator,
+    exact for the piecewise-linear record (Nigam & Jennings 1969), the maximum
+    over the sample instants of the record and of a free tail of two periods.
+
+    Args:
+        records: A record file or a list of them (AT2, ESM ASCII, or CSV with a
+            time column in g; the format is guessed, as for ``[ground]``).
+        damping: Damping ratio, % of critical, in [0, 100).
+        periods: ``(from, to, count)``: ``count`` log-spaced periods (s).
+
+    Returns:
+        ``{"period_s": array, <file name>: array, ...}``: the periods and each
+        record's spectrum in g (float64 NumPy arrays), the columns of ``spectra.csv``.
+
+    Raises:
+        FileNotFoundError: A record file does not exist (``OSError`` for other read failures).
+        ValueError: A record is malformed, or the damping or the periods are out of range.
+    """
+    paths = [records] if isinstance(records, (str, os.PathLike)) else list(records)
+    return dict(_spectrum_raw([os.fspath(p) for p in paths], float(damping), (float(periods[0]), float(periods[1]), int(periods[2]))))
+
+
+def code_spectrum(
+    site: Union[PathLike, Mapping[str, Any]],
+    *,
+    periods: "tuple[float, float, int]" = (0.02, 4.0, 100),
+) -> Dict[str, "np.ndarray"]:
+    """The code spectra of an assessment file's site, as ``rocking spectrum --site`` writes them.
+
+    Args:
+        site: The path of an assessment file, or a dict with its keys (at least
+            ``{"site": {...}}``: ``code``, ``soil``, ``topography``, and a table per
+            limit state, ``{"SLV": {"ag": 0.155, "F0": 2.47, "Tc_star": 0.36}}``, or
+            ``grid``, ``lon``, ``lat``, ``VN``, ``CU``; paths of a dict are relative
+            to the current directory).
+        periods: ``(from, to, count)``: ``count`` log-spaced periods (s).
+
+    Returns:
+        ``{"period_s": array, "Se_SLV_g": array, "SDe_SLV_m": array, "Se_SLV_8pct_g": array, ...}``:
+        for each limit state its elastic spectrum (g) and displacement spectrum (m)
+        at 5%, and at the damping of its non-linear kinematic check (8% at SLV, 10% at SLC).
+
+    Raises:
+        FileNotFoundError: The file (or its hazard grid) does not exist.
+        ValueError: A key is wrong (``file: site.key: what is wrong``).
+    """
+    raw = site if isinstance(site, Mapping) else os.fspath(site)
+    return dict(_code_spectrum_raw(raw, (float(periods[0]), float(periods[1]), int(periods[2]))))

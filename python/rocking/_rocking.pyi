@@ -100,3 +100,17 @@ def fragility_raw(
     Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
     """
     ...
+
+def spectrum_raw(records: List[str], damping: float, periods: Tuple[float, float, int]) -> Dict[str, "np.ndarray"]:
+    """Response spectra (g) of record files: ``{"period_s", <file name>...}``; see ``rocking.spectrum``.
+
+    Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
+    """
+    ...
+
+def code_spectrum_raw(site: Union[str, Mapping[str, Any]], periods: Tuple[float, float, int]) -> Dict[str, "np.ndarray"]:
+    """Code spectra of an assessment file's site: ``{"period_s", "Se_SLV_g", ...}``; see ``rocking.code_spectrum``.
+
+    Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
+    """
+    ...

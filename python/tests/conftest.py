@@ -36,18 +36,28 @@ def is_sweep_file(path: Path) -> bool:
     return any(line.strip().startswith("[sweep]") for line in text.splitlines())
 
 
-def is_study_file(path: Path) -> bool:
-    """Whether a TOML file is a fragility study (has a top-level ``[study]`` table)."""
+def has_table(path: Path, name: str) -> bool:
+    """Whether a TOML file has a top-level table ``[name]``."""
     text = path.read_text(encoding="utf-8")
     if tomllib is not None:
-        return "study" in tomllib.loads(text)
-    return any(line.strip().startswith("[study]") for line in text.splitlines())
+        return name in tomllib.loads(text)
+    return any(line.strip().startswith(f"[{name}]") for line in text.splitlines())
+
+
+def is_study_file(path: Path) -> bool:
+    """Whether a TOML file is a fragility study (has a top-level ``[study]`` table)."""
+    return has_table(path, "study")
+
+
+def is_assessment_file(path: Path) -> bool:
+    """Whether a TOML file is an assessment file (has a top-level ``[site]`` table)."""
+    return has_table(path, "site")
 
 
 def example_files(sweeps: bool) -> List[Path]:
-    """``examples/*.toml`` and ``examples/*/*.toml``: the scenarios, or the sweep files (fragility studies are neither)."""
+    """``examples/*.toml`` and ``examples/*/*.toml``: the scenarios, or the sweep files (fragility studies and assessment files are neither)."""
     files = sorted(EXAMPLES.glob("*.toml")) + sorted(EXAMPLES.glob("*/*.toml"))
-    return [f for f in files if is_sweep_file(f) == sweeps and not is_study_file(f)]
+    return [f for f in files if is_sweep_file(f) == sweeps and not is_study_file(f) and not is_assessment_file(f)]
 
 
 def _find_cli() -> Optional[Path]:

@@ -140,6 +140,15 @@ fn refused(dir: &Path, args: &[&str]) -> String {
     o.stderr
 }
 
+/// `count` copies of El Centro in `dir/rec/`: `r0.AT2`, `r1.AT2`, …
+fn el_centro_copies(dir: &Path, count: usize) {
+    let elcentro = crate::util::root().join("data/records/elcentro_1940_ns.AT2");
+    std::fs::create_dir_all(dir.join("rec")).unwrap_or_else(|e| panic!("{e}"));
+    for k in 0..count {
+        std::fs::copy(&elcentro, dir.join(format!("rec/r{k}.AT2"))).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
 const SLV: &str = "[site.SLV]\nag = 0.155\nF0 = 2.47\nTc_star = 0.36\n";
 
 #[test]
@@ -156,10 +165,7 @@ fn bad_input_is_one_line_naming_the_key() {
     write(d, "neg.toml", "[site]\nsoil = \"B\"\n[site.SLV]\nag = 0.155\nF0 = -2.47\nTc_star = 0.36\n");
     assert!(refused(d, &["--site", "neg.toml"]).contains("neg.toml: site.SLV.F0: must be a finite number > 0"));
     // The records of these cases: three copies of El Centro.
-    std::fs::create_dir_all(d.join("rec")).unwrap_or_else(|e| panic!("{e}"));
-    for k in 0..3 {
-        std::fs::copy(&elcentro, d.join(format!("rec/r{k}.AT2"))).unwrap_or_else(|e| panic!("{e}"));
-    }
+    el_centro_copies(d, 3);
     write(
         d,
         "range.toml",
@@ -205,11 +211,7 @@ fn bad_input_is_one_line_naming_the_key() {
 fn three_records_warn_that_the_largest_response_is_used() {
     let dir = tempdir();
     let d = dir.path();
-    let elcentro = crate::util::root().join("data/records/elcentro_1940_ns.AT2");
-    std::fs::create_dir_all(d.join("rec")).unwrap_or_else(|e| panic!("{e}"));
-    for k in 0..3 {
-        std::fs::copy(&elcentro, d.join(format!("rec/r{k}.AT2"))).unwrap_or_else(|e| panic!("{e}"));
-    }
+    el_centro_copies(d, 3);
     write(
         d,
         "three.toml",

@@ -346,18 +346,11 @@ impl HazardGrid {
         }
         let cell = self.cell(lon, lat).ok_or(Error::OutsideGrid { lon, lat })?;
         let distances = cell.map(|n| great_circle_distance_km(lon, lat, n.lon, n.lat));
-        let mut sites = [NtcSite {
-            ag: 0.0,
-            f0: 0.0,
-            tc_star: 0.0,
-        }; 9];
-        for (k, site) in sites.iter_mut().enumerate() {
-            *site = NtcSite {
-                ag: inverse_distance_weighting(cell.map(|n| n.sites[k].ag), distances),
-                f0: inverse_distance_weighting(cell.map(|n| n.sites[k].f0), distances),
-                tc_star: inverse_distance_weighting(cell.map(|n| n.sites[k].tc_star), distances),
-            };
-        }
+        let sites = std::array::from_fn(|k| NtcSite {
+            ag: inverse_distance_weighting(cell.map(|n| n.sites[k].ag), distances),
+            f0: inverse_distance_weighting(cell.map(|n| n.sites[k].f0), distances),
+            tc_star: inverse_distance_weighting(cell.map(|n| n.sites[k].tc_star), distances),
+        });
         Ok(SiteHazard { sites })
     }
 }

@@ -4,7 +4,7 @@
 //! (`python/` at the repository root, built by maturin). It wraps
 //! `rocking-scenario`: a scenario from a TOML file or a dict, a run with its
 //! history as NumPy arrays, a parametric sweep on all cores, and the derived
-//! quantities, and fragility studies. The Python package adds the `Result` class and the docs; the
+//! quantities, fragility studies, and response and code spectra. The Python package adds the `Result` class and the docs; the
 //! stubs are in `python/rocking/_rocking.pyi`.
 //!
 //! The GIL is released while a case or a sweep runs. Errors are `ValueError`
@@ -16,6 +16,7 @@ mod error;
 mod fragility;
 mod run;
 mod scenario;
+mod spectra;
 mod sweep;
 
 use pyo3::prelude::*;
@@ -35,5 +36,7 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_file_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(fragility::fragility_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(spectra::spectrum_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(spectra::code_spectrum_raw, m)?)?;
     Ok(())
 }

@@ -522,24 +522,12 @@ pub fn keys_markdown() -> String {
                 let _ = writeln!(out, "|---|---|---|---|---|---|---|");
             }
         }
-        let unit = if doc.unit.is_empty() { "—" } else { doc.unit };
         let types = if doc.section() == Some("ground") {
             format!(" {} |", ground_types_of(doc.name()).join(", "))
         } else {
             String::new()
         };
-        let _ = writeln!(
-            out,
-            "| `{}` | {} | {} | {} | {} |{} {} | `{}` |",
-            doc.key,
-            doc.kind.as_str(),
-            cell(unit),
-            cell(doc.default),
-            cell(doc.range),
-            types,
-            cell(doc.meaning),
-            cell(doc.example)
-        );
+        key_row(&mut out, doc, &types);
     }
     let _ = writeln!(out);
     let _ = writeln!(out, "## `[sweep]`");
@@ -597,19 +585,25 @@ fn assessment_keys_markdown(out: &mut String) {
     let _ = writeln!(out, "| key | takes | unit | default | valid | meaning | example |");
     let _ = writeln!(out, "|---|---|---|---|---|---|---|");
     for doc in crate::assessment::ASSESSMENT_KEY_DOCS {
-        let unit = if doc.unit.is_empty() { "—" } else { doc.unit };
-        let _ = writeln!(
-            out,
-            "| `{}` | {} | {} | {} | {} | {} | `{}` |",
-            doc.key,
-            doc.kind.as_str(),
-            cell(unit),
-            cell(doc.default),
-            cell(doc.range),
-            cell(doc.meaning),
-            cell(doc.example)
-        );
+        key_row(out, doc, "");
     }
+}
+
+/// One row of a key table; `types` is the extra column of `[ground]` (`" harmonic, record |"`) or empty.
+fn key_row(out: &mut String, doc: &KeyDoc, types: &str) {
+    let unit = if doc.unit.is_empty() { "—" } else { doc.unit };
+    let _ = writeln!(
+        out,
+        "| `{}` | {} | {} | {} | {} |{} {} | `{}` |",
+        doc.key,
+        doc.kind.as_str(),
+        cell(unit),
+        cell(doc.default),
+        cell(doc.range),
+        types,
+        cell(doc.meaning),
+        cell(doc.example)
+    );
 }
 
 #[cfg(test)]

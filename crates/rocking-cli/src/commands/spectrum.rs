@@ -18,10 +18,8 @@ use crate::output;
 use crate::plot::{Band, Curve, Ink, SpectraFigure};
 use anyhow::Context;
 use rocking::Record;
-use rocking_codes::{
-    default_period_range, fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS,
-};
-use rocking_scenario::{dynamic_limit_states, kinematic_damping_pct, read_record, AssessmentFile, DEFAULT_G};
+use rocking_codes::{default_period_range, fit_record_set, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS};
+use rocking_scenario::{code_spectra_columns, dynamic_limit_states, read_record, record_names, record_spectra_in_g, AssessmentFile, SpectrumKind, DEFAULT_G};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -82,35 +80,6 @@ fn reason(e: &rocking_codes::Error) -> String {
     }
 }
 
-/// The columns' names of records: each file's name, or the paths as given when two share a name.
-fn record_names(paths: &[String]) -> Vec<String> {
-    let names: Vec<String> = paths
-        .iter()
-        .map(|p| Path::new(p).file_name().map_or_else(|| p.clone(), |n| n.to_string_lossy().into_owned()))
-        .collect();
-    let unique = names.iter().enumerate().all(|(i, n)| !names[..i].contains(n));
-    if unique {
-        names
-    } else {
-        paths.to_vec()
-    }
-}
-
-/// The spectrum of each record in g at `periods`, `damping` %.
-fn spectra_in_g(records: &[Record], periods: &[f64], damping: f64, g: f64, names: &[String]) -> anyhow::Result<Vec<Vec<f64>>> {
-    records
-        .iter()
-        .zip(names)
-        .map(|(r, name)| {
-            Ok(response_spectrum(r, periods, damping)
-                .map_err(|e| anyhow::anyhow!("{name}: {e}"))?
-                .iter()
-                .map(|a| a / g)
-                .collect())
-        })
-        .collect()
-}
-
 /// Writes a CSV of `period_s` and the columns, every digit.
 fn write_columns(path: &Path, shown: &Path, periods: &[f64], columns: &[(String, Vec<f64>)]) -> anyhow::Result<()> {
     let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", shown.display()))?;
@@ -147,7 +116,7 @@ fn records_form(args: &Args, periods: &[f64]) -> anyhow::Result<()> {
         .collect::<anyhow::Result<_>>()?;
     let paths: Vec<String> = args.records.iter().map(|p| p.display().to_string()).collect();
     let names = record_names(&paths);
-    let spectra = spectra_in_g(&records, periods, damping, g, &names)?;
+    let spectra = record_spectra_in_g(&records, periods, damping, g).map_err(|e| anyhow::anyhow!("{e}"))?;
 
     let dir = args.out.clone().unwrap_or_else(|| Path::new("out").join("spectra"));
     let mut outputs = vec![dir.join(SPECTRA_CSV)];
@@ -206,36 +175,27 @@ fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
     let assessment = AssessmentFile::from_toml_str(&text, path)?;
     let g = assessment.g;
     let site = &assessment.site;
-    let mut columns: Vec<(String, Vec<f64>)> = Vec::new();
-    let mut code_curves = Vec::new();
-    for (k, (state, spectrum)) in site.spectra.iter().enumerate() {
-        let ink = Ink::Series {
-            index: k,
-            of: site.spectra.len(),
-        };
-        columns.push((format!("Se_{state}_g"), periods.iter().map(|&t| spectrum.se(t)).collect()));
-        columns.push((format!("SDe_{state}_m"), periods.iter().map(|&t| spectrum.sde(t, g)).collect()));
-        code_curves.push(Curve {
-            label: Some(format!("{state}, ag {} g, 5%", sig(spectrum.ag(), 3))),
-            ink,
-            width: 2,
-            dashed: false,
-            points: periods.iter().map(|&t| (t, spectrum.se(t))).collect(),
-        });
-        if let Some(damping) = kinematic_damping_pct(*state) {
-            let damped = spectrum.with_damping(damping).map_err(|e| anyhow::anyhow!("{e}"))?;
-            let pct = sig(damping, 3);
-            columns.push((format!("Se_{state}_{pct}pct_g"), periods.iter().map(|&t| damped.se(t)).collect()));
-            columns.push((format!("SDe_{state}_{pct}pct_m"), periods.iter().map(|&t| damped.sde(t, g)).collect()));
-            code_curves.push(Curve {
-                label: Some(format!("{state}, {pct}%")),
-                ink,
+    let code_columns = code_spectra_columns(site, periods, g).map_err(|e| anyhow::anyhow!("{}: site: {e}", path.display()))?;
+    let states: Vec<LimitState> = site.spectra.iter().map(|(s, _)| *s).collect();
+    let code_curves: Vec<Curve> = code_columns
+        .iter()
+        .filter(|c| c.kind == SpectrumKind::Acceleration)
+        .map(|c| {
+            let index = states.iter().position(|s| *s == c.limit_state).unwrap_or(0);
+            let default = (c.damping_pct - DEFAULT_DAMPING_PCT).abs() < 1e-12;
+            Curve {
+                label: Some(match site.spectrum(c.limit_state) {
+                    Some(s) if default => format!("{}, ag {} g, 5%", c.limit_state, sig(s.ag(), 3)),
+                    _ => format!("{}, {}%", c.limit_state, sig(c.damping_pct, 3)),
+                }),
+                ink: Ink::Series { index, of: states.len() },
                 width: 2,
-                dashed: true,
-                points: periods.iter().map(|&t| (t, damped.se(t))).collect(),
-            });
-        }
-    }
+                dashed: !default,
+                points: periods.iter().copied().zip(c.values.iter().copied()).collect(),
+            }
+        })
+        .collect();
+    let mut columns: Vec<(String, Vec<f64>)> = code_columns.into_iter().map(|c| (c.name, c.values)).collect();
     let mut lines = vec![format!(
         "{}: {} spectra, soil {}, limit states {}",
         path.display(),
@@ -251,7 +211,7 @@ fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
     let mut fits: Vec<(LimitState, FittedSet)> = Vec::new();
     if !records.is_empty() {
         let set: Vec<Record> = records.iter().map(|(_, r)| r.clone()).collect();
-        let spectra = spectra_in_g(&set, periods, DEFAULT_DAMPING_PCT, g, &names)?;
+        let spectra = record_spectra_in_g(&set, periods, DEFAULT_DAMPING_PCT, g).map_err(|e| anyhow::anyhow!("{e}"))?;
         for state in dynamic_limit_states(site.code) {
             let Some(spectrum) = site.spectrum(state) else { continue };
             let target: Vec<f64> = periods.iter().map(|&t| spectrum.se(t)).collect();

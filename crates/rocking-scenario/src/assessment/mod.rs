@@ -7,9 +7,11 @@
 //! This module reads `[site]` and `[assessment]`; the scenario's own sections
 //! are kept as a table ([`AssessmentFile::scenario`]) for the tower's capacity.
 
+mod columns;
 mod keys;
 mod site;
 
+pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, SpectrumColumn, SpectrumKind};
 pub use keys::ASSESSMENT_KEY_DOCS;
 pub use site::{Code, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
 
@@ -74,7 +76,12 @@ impl AssessmentFile {
     /// Parses the TOML text of an assessment file; `origin` names the file in
     /// errors and is the folder of the grid and the records.
     pub fn from_toml_str(text: &str, origin: &Path) -> Result<Self, Error> {
-        let table = crate::parse_toml(text, origin)?;
+        Self::from_table(crate::parse_toml(text, origin)?, origin)
+    }
+
+    /// Validates an assessment file given as a TOML table (from a dict in Python);
+    /// `origin` names it in errors and its folder resolves relative paths.
+    pub fn from_table(table: Table, origin: &Path) -> Result<Self, Error> {
         Self::parse(table, origin).map_err(|f| f.in_file(origin))
     }
 

@@ -1,0 +1,70 @@
+//! `rocking.spectrum` and `rocking.code_spectrum`: the columns of `rocking
+//! spectrum`'s `spectra.csv` as NumPy arrays, computed by the same functions.
+
+use crate::convert::table_of;
+use crate::error::{file_error, scenario_error};
+use numpy::PyArray1;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rocking_codes::PeriodGrid;
+use rocking_scenario::{code_spectra_columns, read_record, record_names, record_spectra_in_g, AssessmentFile, ErrorKind, DEFAULT_G};
+use std::path::{Path, PathBuf};
+
+/// The periods `(from, to, count)`, checked, or a `ValueError` naming `periods`.
+fn periods_of(periods: (f64, f64, usize)) -> PyResult<Vec<f64>> {
+    let (from, to, count) = periods;
+    PeriodGrid { from, to, count }.periods().map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// `{"period_s": array, name: array, …}` in order.
+fn columns<'py>(py: Python<'py>, periods: Vec<f64>, columns: Vec<(String, Vec<f64>)>) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    out.set_item("period_s", PyArray1::from_vec(py, periods))?;
+    for (name, values) in columns {
+        out.set_item(name, PyArray1::from_vec(py, values))?;
+    }
+    Ok(out)
+}
+
+/// The pseudo-acceleration spectra (g) of record files (format guessed, as
+/// `[ground]` reads them) at `damping` (%) and the log-spaced `periods`
+/// `(from, to, count)`: `{"period_s": array, <file name>: array, …}`.
+#[pyfunction]
+#[pyo3(signature = (records, damping, periods))]
+pub fn spectrum_raw<'py>(py: Python<'py>, records: Vec<PathBuf>, damping: f64, periods: (f64, f64, usize)) -> PyResult<Bound<'py, PyDict>> {
+    let periods = periods_of(periods)?;
+    rocking_codes::check_damping(damping).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    if records.is_empty() {
+        return Err(PyValueError::new_err("records: give at least one record file"));
+    }
+    let read = py.detach(|| records.iter().map(|p| read_record(p, DEFAULT_G)).collect::<Result<Vec<_>, ErrorKind>>());
+    let read = read.map_err(|kind| match kind {
+        ErrorKind::Read { os_error, .. } => file_error(kind.to_string(), os_error),
+        other => PyValueError::new_err(other.to_string()),
+    })?;
+    let spectra = py
+        .detach(|| record_spectra_in_g(&read, &periods, damping, DEFAULT_G))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let names = record_names(&records.iter().map(|p| p.display().to_string()).collect::<Vec<_>>());
+    columns(py, periods, names.into_iter().zip(spectra).collect())
+}
+
+/// The code spectra of the limit states of an assessment file's `[site]`
+/// (a path, or a dict with its keys) at the log-spaced `periods`:
+/// `{"period_s": array, "Se_SLV_g": array, "SDe_SLV_m": array, …}`.
+#[pyfunction]
+#[pyo3(signature = (site, periods))]
+pub fn code_spectrum_raw<'py>(py: Python<'py>, site: &Bound<'py, PyAny>, periods: (f64, f64, usize)) -> PyResult<Bound<'py, PyDict>> {
+    let periods = periods_of(periods)?;
+    let file = if let Ok(path) = site.extract::<PathBuf>() {
+        let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
+        py.detach(|| AssessmentFile::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
+    } else {
+        let table = table_of(site, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
+        py.detach(|| AssessmentFile::from_table(table, Path::new("<dict>")))
+            .map_err(|e| scenario_error(&e))?
+    };
+    let spectra = code_spectra_columns(&file.site, &periods, file.g).map_err(|e| PyValueError::new_err(format!("{}: site: {e}", file.origin().display())))?;
+    columns(py, periods, spectra.into_iter().map(|c| (c.name, c.values)).collect())
+}
