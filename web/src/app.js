@@ -1,6 +1,7 @@
 // The page: a form over a scenario object (the TOML file's keys), recomputed
-// on every change through window.rocking; charts (uPlot), the tower's
-// animation, the summary, the derived quantities and a sweep's heat map.
+// on every change in a Web Worker (window.rocking.runInWorker); errors at
+// their field; charts (uPlot), the tower's animation, the end of the run in
+// words, the summary, the derived quantities and a sweep's heat map.
 import { rocking } from "./rocking.js";
 import { drawHeatmap } from "./heatmap.js";
 import { Animation } from "./animation.js";
@@ -375,7 +376,8 @@ async function computeNow() {
     $("verdict").textContent = verdict;
     $("verdict").hidden = !verdict;
     $("verdict").dataset.endState = result.summary.end_state || "";
-    $("verdict").classList.toggle("danger", result.summary.end_state === "overturned" || result.summary.will_overturn === true || result.summary.end_state === "beyond_stability_limit");
+    const falls = ["overturned", "beyond_stability_limit"].includes(result.summary.end_state) || result.summary.will_overturn === true;
+    $("verdict").classList.toggle("danger", falls);
     fillTable($("check"), out.derived);
     $("results").classList.remove("stale");
     $("status").textContent = `Computed in ${(result.summary.wall_time_s * 1000).toFixed(1)} ms.`;
