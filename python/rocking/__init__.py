@@ -196,7 +196,7 @@ def sweep(
         FileNotFoundError: The sweep file or a record does not exist (``OSError`` if it cannot be read otherwise).
         ValueError: The base scenario or an axis is invalid (``file: sweep."key": …``), or
             ``threads`` is outside 1..=4096 (the command's limit).
-        KeyboardInterrupt: Ctrl-C stops the sweep after the cases under way.
+        KeyboardInterrupt: Ctrl-C stops the sweep (the cases under way stop at their next event).
     """
     if axes is None:
         if not isinstance(scenario, (str, os.PathLike)):
@@ -257,7 +257,7 @@ def fragility(study: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threa
     Raises:
         ValueError: The study is invalid (``file: study.key: …``).
         OSError: The study file cannot be read.
-        KeyboardInterrupt: Ctrl-C stops the study after the cases under way.
+        KeyboardInterrupt: Ctrl-C stops the study (the cases under way stop at their next event).
     """
     raw = _fragility_raw(study, threads)
     return Fragility(raw["stripes"], raw["fragility"], raw["fractions"])

@@ -25,6 +25,7 @@ mod format;
 mod output;
 mod plot;
 mod shard;
+mod signals;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -26,6 +26,9 @@ use std::path::Path;
 /// The manifest's file name in a shard's folder.
 pub const SHARD_JSON: &str = "shard.json";
 
+/// Largest `shard.json` read (bytes): the manifest this tool writes has a few hundred.
+pub const MAX_MANIFEST_BYTES: u64 = 64 << 10;
+
 /// What `shard.json` says.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Manifest {
@@ -80,7 +83,7 @@ impl Manifest {
     /// Reads and checks `dir/shard.json`; errors name the file and the key.
     pub fn read(dir: &Path) -> anyhow::Result<Self> {
         let path = dir.join(SHARD_JSON);
-        let text = std::fs::read_to_string(&path).with_context(|| {
+        let text = rocking_scenario::file::read_text(&path, MAX_MANIFEST_BYTES).with_context(|| {
             format!(
                 "cannot read {} (is {} a folder written by `rocking sweep --shard K/N`?)",
                 path.display(),

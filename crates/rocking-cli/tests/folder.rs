@@ -87,7 +87,9 @@ fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
     // Wait until the history is being written in the staging folder.
-    let partial = out.join(format!(".rocking-partial-{}", child.id())).join("history.csv");
+    let partial = crate::util::staging_folder(&out, Duration::from_secs(60))
+        .expect("no staging folder after a minute")
+        .join("history.csv");
     let start = Instant::now();
     while std::fs::metadata(&partial).map_or(0, |m| m.len()) < 100_000 {
         assert!(start.elapsed() < Duration::from_secs(60), "no history after a minute");

@@ -14,17 +14,17 @@ use std::path::{Path, PathBuf};
 const AXES: &str = "\"building.mu_kinetic\" = [0.5, 1.5, 1.0]\n\"ground.amplitude\" = [0.2, 0.6, 1.5, 3.0]";
 const CASES: usize = 12;
 
-fn sweep_file(dir: &Path, name: &str, extra: &str) -> PathBuf {
+pub fn sweep_file(dir: &Path, name: &str, extra: &str) -> PathBuf {
     write(dir, name, &format!("{SCENARIO}\n{extra}\n[sweep]\n{AXES}\n"))
 }
 
-fn ok(r: Output) -> Output {
+pub fn ok(r: Output) -> Output {
     assert_eq!(r.code, Some(0), "{r:?}");
     r
 }
 
 /// Runs shard `k`/`n` of `file` into `dir/k`; returns that folder.
-fn shard(file: &Path, dir: &Path, k: usize, n: usize) -> PathBuf {
+pub fn shard(file: &Path, dir: &Path, k: usize, n: usize) -> PathBuf {
     let out = dir.join(k.to_string());
     ok(rocking(&[
         "sweep",
@@ -44,7 +44,7 @@ fn shards(file: &Path, dir: &Path, n: usize) -> Vec<PathBuf> {
     (1..=n).map(|k| shard(file, dir, k, n)).collect()
 }
 
-fn merge(dirs: &[&Path], out: &Path) -> Output {
+pub fn merge(dirs: &[&Path], out: &Path) -> Output {
     let mut args = vec!["merge"];
     args.extend(dirs.iter().map(|d| arg(d)));
     args.extend(["--out", arg(out)]);
@@ -52,7 +52,7 @@ fn merge(dirs: &[&Path], out: &Path) -> Output {
 }
 
 /// A refused merge: exit 1, one line on stderr holding every one of `needles`, no merged file.
-fn refused(r: &Output, out: &Path, needles: &[&str]) {
+pub fn refused(r: &Output, out: &Path, needles: &[&str]) {
     assert_eq!(r.code, Some(1), "{r:?}");
     assert_eq!(r.stderr.trim_end().lines().count(), 1, "one line: {:?}", r.stderr);
     assert!(!r.stderr.contains("panicked"), "{}", r.stderr);

@@ -285,7 +285,9 @@ fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
         .unwrap_or_else(|e| panic!("{e}"));
     let csv = out.join("sweep.csv");
     // The rows go to a staging folder until the sweep ends (or is interrupted).
-    let partial = out.join(format!(".rocking-partial-{}", child.id())).join("sweep.csv");
+    let partial = crate::util::staging_folder(&out, Duration::from_secs(60))
+        .expect("no staging folder after a minute")
+        .join("sweep.csv");
     let start = Instant::now();
     // Wait until some rows have reached the file (the writer is buffered).
     while std::fs::read_to_string(&partial).map_or(0, |t| t.lines().count()) < 3 {

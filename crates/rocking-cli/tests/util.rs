@@ -59,6 +59,24 @@ pub fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
 }
 
+/// The staging folder of the run writing into `out` (`.rocking-partial-` and
+/// a random name), once it exists; `None` after `limit`.
+pub fn staging_folder(out: &Path, limit: std::time::Duration) -> Option<PathBuf> {
+    let start = std::time::Instant::now();
+    while start.elapsed() < limit {
+        let found = std::fs::read_dir(out)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .find(|e| e.file_name().to_string_lossy().starts_with(".rocking-partial-"));
+        if let Some(entry) = found {
+            return Some(entry.path());
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    None
+}
+
 /// `path` as a `&str` argument.
 pub fn arg(path: &Path) -> &str {
     path.to_str().unwrap_or_else(|| panic!("non-UTF-8 path {}", path.display()))

@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
     let threads = thread_count(threads)?;
     let study = if let Ok(path) = study.extract::<PathBuf>() {
-        let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
+        let text = rocking_scenario::file::read_text(&path, rocking_scenario::file::MAX_INPUT_BYTES).map_err(|e| crate::error::io_error(&e, &path))?;
         py.detach(|| Study::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
     } else {
         let table = table_of(study, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
@@ -33,7 +33,6 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
     let columns = gather(
         py,
         header.len(),
-        study.len(),
         study.origin(),
         |row| tally.add(row),
         |cancel, sink| study.run(threads, cancel, sink),

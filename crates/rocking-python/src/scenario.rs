@@ -58,7 +58,7 @@ impl PyScenario {
     /// the file cannot be read, as `open()` does.
     #[staticmethod]
     fn from_toml(path: PathBuf) -> PyResult<Self> {
-        let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
+        let text = rocking_scenario::file::read_text(&path, rocking_scenario::file::MAX_INPUT_BYTES).map_err(|e| crate::error::io_error(&e, &path))?;
         let table = parse_toml(&text, &path).map_err(|e| scenario_error(&e))?;
         let scenario = Scenario::from_table(table.clone(), &path).map_err(|e| scenario_error(&e))?;
         Ok(Self { table, origin: path, scenario })

@@ -9,15 +9,16 @@ use crate::convert::table_of;
 use crate::error::scenario_error;
 use crate::scenario::PyScenario;
 use numpy::PyArray1;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use rocking_scenario::columns::{Kind, SUMMARY};
 use rocking_scenario::{Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+use std::time::Duration;
 use toml::Value;
 
 /// The most worker threads, as `rocking sweep --threads` takes.
@@ -90,7 +91,7 @@ pub fn sweep_file_len_raw(py: Python<'_>, path: PathBuf, text: Option<String>) -
 fn build_file(py: Python<'_>, path: &std::path::Path, text: Option<String>) -> PyResult<Sweep> {
     let text = match text {
         Some(text) => text,
-        None => std::fs::read_to_string(path).map_err(|e| crate::error::io_error(&e, path))?,
+        None => rocking_scenario::file::read_text(path, rocking_scenario::file::MAX_INPUT_BYTES).map_err(|e| crate::error::io_error(&e, path))?,
     };
     py.detach(|| Sweep::from_toml_str(&text, path)).map_err(|e| scenario_error(&e))
 }
@@ -113,11 +114,9 @@ pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
 
 fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases: Range<usize>) -> PyResult<Bound<'py, PyDict>> {
     let header = sweep.header();
-    let rows = cases.end.min(sweep.len()).saturating_sub(cases.start);
     let columns = gather(
         py,
         header.len(),
-        rows,
         sweep.origin(),
         |_| {},
         |cancel, sink| sweep.run_range(cases, threads, cancel, sink),
@@ -130,35 +129,54 @@ fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases:
 }
 
 /// Runs the cases of a sweep or a study by `run` with the GIL released and
-/// gathers their rows into `width` columns of cells (`rows` expected), each
-/// row shown to `each` first (a study's tally). Every `SIGNAL_CHECK` the GIL
-/// is taken back for Ctrl-C, whose `KeyboardInterrupt` stops the run; another
+/// gathers their rows into `width` columns of cells, each row shown to `each`
+/// first (a study's tally). The columns grow as the rows arrive (a sweep of
+/// 10⁷ cases reserves nothing up front; a row that cannot be stored raises
+/// `MemoryError`). The cases run on a thread of their own while the calling
+/// thread looks for Ctrl-C every `SIGNAL_CHECK`: its `KeyboardInterrupt`
+/// stops the cases under way at their next event and is raised. Another
 /// failure is a `RuntimeError` naming `origin`.
 pub(crate) fn gather(
     py: Python<'_>,
     width: usize,
-    rows: usize,
     origin: &Path,
     mut each: impl FnMut(&Row) + Send,
     run: impl FnOnce(&AtomicBool, &mut (dyn FnMut(Row) -> PyResult<()> + Send)) -> Result<Finished, RunError<PyErr>> + Send,
 ) -> PyResult<Vec<Vec<Cell>>> {
-    let mut columns: Vec<Vec<Cell>> = (0..width).map(|_| Vec::with_capacity(rows)).collect();
+    let mut columns: Vec<Vec<Cell>> = (0..width).map(|_| Vec::new()).collect();
     let cancel = AtomicBool::new(false);
-    let mut last_check = Instant::now();
-    let finished = py.detach(|| {
-        run(&cancel, &mut |row: Row| {
-            each(&row);
-            for (column, cell) in columns.iter_mut().zip(row.cells) {
-                column.push(cell);
+    let (finished, interrupt) = py.detach(|| {
+        std::thread::scope(|scope| {
+            // Dropped when the cases end: the wait below then ends at once.
+            let (done, ended) = mpsc::channel::<()>();
+            let cases = scope.spawn(|| {
+                let _done = done;
+                run(&cancel, &mut |row: Row| {
+                    each(&row);
+                    for (column, cell) in columns.iter_mut().zip(row.cells) {
+                        column
+                            .try_reserve(1)
+                            .map_err(|e| PyMemoryError::new_err(format!("{}: {e}", origin.display())))?;
+                        column.push(cell);
+                    }
+                    Ok(())
+                })
+            });
+            let mut interrupt = None;
+            while let Err(mpsc::RecvTimeoutError::Timeout) = ended.recv_timeout(SIGNAL_CHECK) {
+                // Signal handlers run on the main thread only: elsewhere (a Dask worker) this finds nothing.
+                if let Err(e) = Python::attach(|py| py.check_signals()) {
+                    interrupt.get_or_insert(e);
+                    cancel.store(true, Ordering::Relaxed);
+                }
             }
-            if last_check.elapsed() < SIGNAL_CHECK {
-                return Ok(());
-            }
-            last_check = Instant::now();
-            // Ctrl-C: the handler raises KeyboardInterrupt here, and the run stops.
-            Python::attach(|py| py.check_signals())
+            let finished = cases.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            (finished, interrupt)
         })
     });
+    if let Some(e) = interrupt {
+        return Err(e);
+    }
     match finished {
         Ok(_) => Ok(columns),
         Err(RunError::Stopped(e)) => Err(e),

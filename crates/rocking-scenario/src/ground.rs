@@ -508,26 +508,7 @@ pub const MAX_RECORD_BYTES: u64 = 640 << 20;
 /// like `/dev/urandom` never ends) or is larger than [`MAX_RECORD_BYTES`]; or
 /// why not (without the OS error number) and the OS error code if any.
 fn read_text(path: &Path) -> Result<String, (String, Option<i32>)> {
-    use std::io::Read;
-    let io = |e: std::io::Error| (io_reason(&e), e.raw_os_error());
-    let meta = std::fs::metadata(path).map_err(io)?;
-    if !meta.is_file() {
-        return Err(("not a regular file".into(), None));
-    }
-    if meta.len() > MAX_RECORD_BYTES {
-        return Err((
-            format!("{} bytes, more than the {} MiB a record may have", meta.len(), MAX_RECORD_BYTES >> 20),
-            None,
-        ));
-    }
-    let file = std::fs::File::open(path).map_err(io)?;
-    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
-    // `take` bounds the read even if the file grows while it is read.
-    file.take(MAX_RECORD_BYTES + 1).read_to_end(&mut bytes).map_err(io)?;
-    if bytes.len() as u64 > MAX_RECORD_BYTES {
-        return Err((format!("more than the {} MiB a record may have", MAX_RECORD_BYTES >> 20), None));
-    }
-    String::from_utf8(bytes).map_err(|_| ("stream did not contain valid UTF-8".into(), None))
+    crate::file::read_text(path, MAX_RECORD_BYTES).map_err(|e| (io_reason(&e), e.raw_os_error()))
 }
 
 /// Records already read, so that the cases of a sweep read a record file once

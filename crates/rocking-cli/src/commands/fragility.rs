@@ -14,6 +14,7 @@ use crate::plot::{IdaCurve, StateCurve, StudyFigures};
 use anyhow::Context;
 use rocking_scenario::{Cell, Study, Threshold};
 use std::path::PathBuf;
+use std::sync::atomic::Ordering;
 
 /// One row per case.
 pub const STRIPES_CSV: &str = "stripes.csv";
@@ -45,7 +46,8 @@ pub struct Args {
 
 /// Runs the study and writes its files.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.study).with_context(|| format!("cannot read {}", args.study.display()))?;
+    let text = rocking_scenario::file::read_text(&args.study, rocking_scenario::file::MAX_INPUT_BYTES)
+        .with_context(|| format!("cannot read {}", args.study.display()))?;
     // The study's errors already name the file, the key and the cause.
     let study = Study::from_toml_str(&text, &args.study)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.study));
@@ -84,7 +86,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         path: &staging.path(STRIPES_CSV),
         shown: &stripes_path,
         header: study.csv_header(),
-        if_killed: "stripes.csv not written",
     };
     let threads = args.threads.map(|n| n as usize);
     let Written { done, wall } = write_rows(
@@ -115,11 +116,22 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         }
         .into());
     }
-    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv()), (FRACTIONS_CSV, tally.fractions_csv())] {
+    // Ctrl-C during the fits: stripes.csv is complete, the fits are not written.
+    let interrupted = crate::signals::interrupted();
+    let fits = tally.fits_until(interrupted);
+    if interrupted.load(Ordering::Relaxed) {
+        staging.commit()?;
+        return Err(Interrupted {
+            written: done.written,
+            total: study.len(),
+            csv: stripes_path,
+        }
+        .into());
+    }
+    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
         std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()))?;
     }
 
-    let fits = tally.fits();
     let mut lines = vec![format!(
         "{}: {} records × {} levels = {} cases in {} s{}",
         study.name(),

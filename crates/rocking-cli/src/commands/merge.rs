@@ -11,12 +11,29 @@
 //! written again, so nothing of them can change) into a temporary file in the
 //! output folder, renamed into place once complete: an interrupted or refused
 //! merge leaves no partial file, and an existing file is never replaced.
+//!
+//! The output folder must be new or empty (but for the shards' own folders):
+//! a merge's file beside another run's files (a `summary.json`, a stale
+//! `shard.json`) would read as one result. The folder's lock is held from that check to the rename, so a run
+//! writing the same folder at once comes wholly before or after.
+//!
+//! Nothing grows with what a manifest claims: the number of shards is checked
+//! against the folders given before anything is counted or listed, a header
+//! is read no further than [`MAX_HEADER_BYTES`], and a file of rows must be a
+//! regular file (a link to `/dev/zero` is refused, not read for ever).
 
+use crate::output::FolderLock;
 use crate::shard::{Manifest, SHARD_JSON};
 use anyhow::{bail, Context};
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
+
+/// Longest header line read (bytes): a sweep's has a few kB.
+pub const MAX_HEADER_BYTES: u64 = 1 << 20;
+
+/// Missing shards listed by name at most (the rest are counted).
+const MISSING_LISTED: usize = 10;
 
 /// Arguments of `rocking merge`.
 #[derive(Debug, clap::Args)]
@@ -24,7 +41,7 @@ pub struct Args {
     /// The shards' folders (each with its shard.json), in any order.
     #[arg(required = true, value_name = "DIR")]
     pub shards: Vec<PathBuf>,
-    /// Output folder, created if needed; the merged file must not exist in it yet.
+    /// Output folder, created if needed; it must be empty but for the shards' folders.
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
 }
@@ -59,10 +76,12 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     }
 
     std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create the output folder {}", args.out.display()))?;
+    let _lock = FolderLock::take(&args.out)?;
     let target = args.out.join(name);
     if target.exists() {
         bail!("refusing to write {}: it exists already (remove it, or choose another --out)", target.display());
     }
+    refuse_a_used_folder(&args.out, &args.shards)?;
     let mut temp = tempfile::Builder::new()
         .prefix(&format!(".{name}."))
         .tempfile_in(&args.out)
@@ -73,11 +92,17 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         for (dir, manifest) in &ordered {
             let path = dir.join(&manifest.file);
             let file = File::open(&path).with_context(|| format!("cannot read {}", path.display()))?;
+            if !file.metadata().with_context(|| format!("cannot read {}", path.display()))?.is_file() {
+                bail!("{}: not a regular file", path.display());
+            }
             let mut reader = BufReader::with_capacity(1 << 16, file);
             let mut line = Vec::new();
             let mut scan = Records::default();
-            scan.read_record(&mut reader, &mut line)
+            scan.read_record(&mut (&mut reader).take(MAX_HEADER_BYTES), &mut line)
                 .with_context(|| format!("cannot read {}", path.display()))?;
+            if line.len() as u64 >= MAX_HEADER_BYTES && !scan.complete() {
+                bail!("{}: no header line in its first {} MiB", path.display(), MAX_HEADER_BYTES >> 20);
+            }
             if line.is_empty() || !scan.complete() {
                 bail!("{}: truncated: no complete header line", path.display());
             }
@@ -155,35 +180,66 @@ fn check_set(shards: &[(PathBuf, Manifest)]) -> anyhow::Result<Vec<&(PathBuf, Ma
             ));
         }
     }
+    // Every shard once, in order: n folders at least. A count of shards above
+    // the folders given is refused by counting, never by a table of n slots.
     let n = first.shard.n();
-    let mut slots: Vec<Option<&(PathBuf, Manifest)>> = vec![None; n];
-    for entry in shards {
-        let slot = &mut slots[entry.1.shard.k() - 1];
-        if let Some((other, _)) = slot {
+    let mut ordered: Vec<&(PathBuf, Manifest)> = shards.iter().collect();
+    ordered.sort_by_key(|(_, m)| m.shard.k());
+    for pair in ordered.windows(2) {
+        if pair[0].1.shard.k() == pair[1].1.shard.k() {
             bail!(
                 "{}: shard {} is given twice (also {})",
-                entry.0.join(SHARD_JSON).display(),
-                entry.1.shard,
-                other.join(SHARD_JSON).display()
+                pair[1].0.join(SHARD_JSON).display(),
+                pair[1].1.shard,
+                pair[0].0.join(SHARD_JSON).display()
             );
         }
-        *slot = Some(entry);
     }
-    let missing: Vec<String> = slots
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| s.is_none())
-        .map(|(i, _)| format!("{}/{n}", i + 1))
-        .collect();
-    if !missing.is_empty() {
+    // Distinct numbers in 1..=n: the missing ones are n − (folders given).
+    let missing = n - ordered.len();
+    if missing > 0 {
+        let mut given = ordered.iter().map(|(_, m)| m.shard.k()).peekable();
+        let mut listed = Vec::new();
+        for k in 1..=n {
+            if given.next_if_eq(&k).is_none() {
+                listed.push(format!("{k}/{n}"));
+                if listed.len() == MISSING_LISTED.min(missing) {
+                    break;
+                }
+            }
+        }
+        if missing > listed.len() {
+            listed.push(format!("and {} more", missing - listed.len()));
+        }
         bail!(
             "missing shard{} {} (the sweep of {} is cut in {n}: give every shard's folder)",
-            if missing.len() > 1 { "s" } else { "" },
-            missing.join(", "),
+            if missing > 1 { "s" } else { "" },
+            listed.join(", "),
             first_json.display()
         );
     }
-    Ok(slots.into_iter().flatten().collect())
+    Ok(ordered)
+}
+
+/// Refuses an output folder that holds anything but the shards' folders (a
+/// batch job's `OUT/shards/K`) and its lock file: a merged file beside
+/// another run's files would read as one result with them.
+fn refuse_a_used_folder(dir: &Path, shards: &[PathBuf]) -> anyhow::Result<()> {
+    let shards: Vec<PathBuf> = shards.iter().filter_map(|s| std::fs::canonicalize(s).ok()).collect();
+    let entries = std::fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
+    for entry in entries {
+        let entry = entry.with_context(|| format!("cannot read {}", dir.display()))?;
+        let name = entry.file_name();
+        let holds_a_shard = || std::fs::canonicalize(entry.path()).is_ok_and(|e| shards.iter().any(|s| s.starts_with(&e)));
+        if name != crate::output::LOCK_FILE && !holds_a_shard() {
+            bail!(
+                "refusing to merge into {}: it holds {} (a merge writes into a new or empty folder: choose another --out)",
+                dir.display(),
+                dir.join(name).display()
+            );
+        }
+    }
+    Ok(())
 }
 
 /// Where a CSV scan stands: inside a quoted field or not, at the start of a record or not.

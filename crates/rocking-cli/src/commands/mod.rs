@@ -17,7 +17,7 @@ use std::path::Path;
 
 /// Reads and validates a scenario file.
 pub fn load_scenario(path: &Path) -> anyhow::Result<Scenario> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let text = rocking_scenario::file::read_text(path, rocking_scenario::file::MAX_INPUT_BYTES).with_context(|| format!("cannot read {}", path.display()))?;
     // The scenario's errors already name the file, the key and the cause.
     Ok(Scenario::from_toml_str(&text, path)?)
 }

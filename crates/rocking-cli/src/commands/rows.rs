@@ -9,11 +9,8 @@ use rocking_scenario::{Finished, Row, RunError};
 use std::fs::File;
 use std::io::{BufWriter, IsTerminal, Write};
 use std::path::Path;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::time::Instant;
-
-/// Set by the first Ctrl-C: no new case starts.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// The CSV file being written.
 pub struct RowsFile<'a> {
@@ -23,8 +20,6 @@ pub struct RowsFile<'a> {
     pub shown: &'a Path,
     /// Its header line.
     pub header: String,
-    /// What a second Ctrl-C, which ends the process at once, leaves of the file.
-    pub if_killed: &'static str,
 }
 
 /// How the cases ended, and the wall time they took (s).
@@ -47,20 +42,14 @@ pub fn write_rows(
 ) -> anyhow::Result<Written> {
     let context = || format!("cannot write {}", file.shown.display());
     let mut csv = BufWriter::new(File::create(file.path).with_context(context)?);
-    writeln!(csv, "{}", file.header).with_context(context)?;
+    // The header on disk at once: the file is the sweep's from its start.
+    writeln!(csv, "{}", file.header).and_then(|()| csv.flush()).with_context(context)?;
 
-    // A second Ctrl-C while the cases under way finish ends the process at once.
-    // Without a handler (one already set), Ctrl-C simply ends the process.
-    let if_killed = file.if_killed;
-    let _ = ctrlc::set_handler(move || {
-        if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            eprintln!("interrupted twice: stopping now; {if_killed}");
-            std::process::exit(130);
-        }
-    });
+    // The first Ctrl-C stops the cases; a second ends the process at once (crate::signals).
+    let interrupted = crate::signals::interrupted();
     let progress = progress_bar(total);
     let start = Instant::now();
-    let result = run(&INTERRUPTED, &mut |row: Row| {
+    let result = run(interrupted, &mut |row: Row| {
         writeln!(csv, "{}", row.to_csv_line())?;
         each(&row);
         progress.inc(1);

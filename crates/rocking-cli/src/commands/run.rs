@@ -32,9 +32,6 @@ pub fn default_out(scenario: &Path) -> PathBuf {
     Path::new("out").join(stem)
 }
 
-/// Set by Ctrl-C: the run stops at its next step and writes nothing.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
-
 /// The run was stopped by Ctrl-C; the output folder was left as it was.
 #[derive(Debug)]
 pub struct Interrupted;
@@ -47,12 +44,12 @@ impl std::fmt::Display for Interrupted {
 
 impl std::error::Error for Interrupted {}
 
-/// Stops the run when Ctrl-C was pressed.
-struct CtrlC;
+/// Stops the run at its next step when Ctrl-C was pressed (or SIGTERM came).
+struct CtrlC(&'static AtomicBool);
 
 impl Observer for CtrlC {
     fn on_step(&mut self, _: &Step<'_>) -> Flow {
-        if INTERRUPTED.load(Ordering::Relaxed) {
+        if self.0.load(Ordering::Relaxed) {
             Flow::Break(Halt::Stop)
         } else {
             Flow::Continue(())
@@ -75,7 +72,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     inputs.extend(case.inputs.iter().cloned());
     output::refuse_to_overwrite_inputs(&files, &inputs)?;
     let staging = output::Staging::new(&dir, &inputs)?;
-    let _ = ctrlc::set_handler(|| INTERRUPTED.store(true, Ordering::SeqCst));
+    let interrupted = crate::signals::interrupted();
 
     let mut history = output::HistoryWriter::create(&staging.path(output::HISTORY), &files[1], case.layout())?;
     let mut sampler = Sampler::new(case.output_dt, case.points.clone(), |sample: &Sample, points: &[(f64, f64)]| {
@@ -87,7 +84,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         events: true,
     };
     let start = Instant::now();
-    let result = case.run_observed(options, &mut (&mut sampler, CtrlC));
+    let result = case.run_observed(options, &mut (&mut sampler, CtrlC(interrupted)));
     let wall = start.elapsed().as_secs_f64();
     drop(sampler);
     let outcome = match result {

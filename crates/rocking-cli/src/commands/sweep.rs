@@ -61,10 +61,11 @@ impl fmt::Display for Interrupted {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "interrupted: wrote {} of {} cases to {} (complete rows, in order)",
+            "interrupted: wrote {} of {} cases to {} (complete rows, in order){}",
             self.written,
             self.total,
-            self.csv.display()
+            self.csv.display(),
+            if self.written == self.total { "; nothing fitted" } else { "" }
         )
     }
 }
@@ -73,8 +74,8 @@ impl std::error::Error for Interrupted {}
 
 /// Runs the sweep and writes `sweep.csv`.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
-    let bytes = std::fs::read(&args.sweep).with_context(|| format!("cannot read {}", args.sweep.display()))?;
-    let text = String::from_utf8(bytes).with_context(|| format!("cannot read {}: not UTF-8 text", args.sweep.display()))?;
+    let text = rocking_scenario::file::read_text(&args.sweep, rocking_scenario::file::MAX_INPUT_BYTES)
+        .with_context(|| format!("cannot read {}", args.sweep.display()))?;
     // The sweep's errors already name the file, the key and the cause.
     let sweep = Sweep::from_toml_str(&text, &args.sweep)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.sweep));
@@ -100,7 +101,6 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         path: &staging.path(SWEEP_CSV),
         shown: &csv_path,
         header: sweep.csv_header(),
-        if_killed: "sweep.csv not written",
     };
     let threads = args.threads.map(|n| n as usize);
     let Written { done, wall } = write_rows(

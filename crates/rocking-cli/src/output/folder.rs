@@ -2,6 +2,13 @@
 //! staging folder inside it and moved into place only when the run succeeds,
 //! so the folder never mixes two runs and a failed run leaves nothing.
 //!
+//! Two runs writing the same folder at once: each has its own staging folder
+//! (a name drawn at random, created only if it does not exist, never one of
+//! the process id: two processes in two containers may have the same id), and
+//! each commit holds the folder's lock ([`FolderLock`]) from the first removal
+//! to the last move, so the folder ends with the complete files of the run
+//! that committed last.
+//!
 //! What a run owns: the files this tool writes ([`KNOWN`]). When a run
 //! succeeds, the known files of an earlier run that this one did not write
 //! (figures of an earlier `--plot`, a `summary.json` beside a new `sweep.csv`)
@@ -11,8 +18,11 @@
 //! run's files untouched.
 
 use super::guard::is_input;
+use super::lock::FolderLock;
+use crate::signals::Registered;
 use anyhow::Context;
 use std::path::{Path, PathBuf};
+use tempfile::TempDir;
 
 /// Every file name this tool writes into an output folder.
 pub const KNOWN: [&str; 38] = [
@@ -56,12 +66,17 @@ pub const KNOWN: [&str; 38] = [
     "records.csv",
 ];
 
+/// The prefix of a staging folder's name (the rest is drawn at random).
+pub const STAGING_PREFIX: &str = ".rocking-partial-";
+
 /// A folder being written: files go to [`Staging::path`]; [`Staging::commit`]
 /// moves them into place; dropping it without a commit removes them.
 #[derive(Debug)]
 pub struct Staging {
     dir: PathBuf,
-    staging: PathBuf,
+    // Unregistered before the folder is removed (fields drop in order).
+    registered: Registered,
+    staging: TempDir,
     inputs: Vec<PathBuf>,
 }
 
@@ -70,13 +85,13 @@ impl Staging {
     /// (the scenario, a record) are never removed, even under a known name.
     pub fn new(dir: &Path, inputs: &[PathBuf]) -> anyhow::Result<Self> {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
-        let staging = dir.join(format!(".rocking-partial-{}", std::process::id()));
-        if staging.exists() {
-            std::fs::remove_dir_all(&staging).with_context(|| format!("cannot clear {}", staging.display()))?;
-        }
-        std::fs::create_dir(&staging).with_context(|| format!("cannot write into the output folder {}", dir.display()))?;
+        let staging = tempfile::Builder::new()
+            .prefix(STAGING_PREFIX)
+            .tempdir_in(dir)
+            .with_context(|| format!("cannot write into the output folder {}", dir.display()))?;
         Ok(Self {
             dir: dir.to_path_buf(),
+            registered: Registered::new(staging.path()),
             staging,
             inputs: inputs.to_vec(),
         })
@@ -84,21 +99,26 @@ impl Staging {
 
     /// The staging folder (figures are drawn there under their final names).
     pub fn folder(&self) -> &Path {
-        &self.staging
+        self.staging.path()
     }
 
     /// Where to write the file `name` until the commit.
     pub fn path(&self, name: &str) -> PathBuf {
-        self.staging.join(name)
+        self.staging.path().join(name)
     }
 
     /// Removes the known files of an earlier run that this one did not write,
-    /// then moves this run's files into the folder (each rename is atomic).
+    /// then moves this run's files into the folder (each rename is atomic),
+    /// holding the folder's lock throughout: another run's commit comes
+    /// wholly before or wholly after.
     pub fn commit(self) -> anyhow::Result<()> {
-        let written: Vec<_> = std::fs::read_dir(&self.staging)
-            .with_context(|| format!("cannot read {}", self.staging.display()))?
+        let written: Vec<_> = std::fs::read_dir(self.folder())
+            .with_context(|| format!("cannot read {}", self.folder().display()))?
             .filter_map(|e| e.ok().map(|e| e.file_name()))
             .collect();
+        // A second Ctrl-C waits for the moves to end.
+        let held = self.registered.hold();
+        let lock = FolderLock::take(&self.dir)?;
         // A name that a rename cannot replace (a folder) fails before anything moves.
         for name in &written {
             let to = self.dir.join(name);
@@ -114,16 +134,11 @@ impl Staging {
         }
         for name in &written {
             let to = self.dir.join(name);
-            std::fs::rename(self.staging.join(name), &to).with_context(|| format!("cannot write {}", to.display()))?;
+            std::fs::rename(self.folder().join(name), &to).with_context(|| format!("cannot write {}", to.display()))?;
         }
+        drop(lock);
+        drop(held);
         Ok(())
-    }
-}
-
-impl Drop for Staging {
-    fn drop(&mut self) {
-        // Committed: empty; failed: this run's partial files. Nothing else is there.
-        let _ = std::fs::remove_dir_all(&self.staging);
     }
 }
 

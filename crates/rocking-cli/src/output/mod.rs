@@ -6,11 +6,13 @@ mod events;
 mod folder;
 mod guard;
 mod history;
+mod lock;
 
 pub use events::write_events;
 pub use folder::Staging;
 pub use guard::refuse_to_overwrite_inputs;
 pub use history::HistoryWriter;
+pub use lock::{FolderLock, LOCK_FILE};
 
 use anyhow::Context;
 use rocking_scenario::columns::Value;

@@ -17,6 +17,7 @@
 use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 use statrs::distribution::{ContinuousCDF, Normal};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The cases of one limit state at one level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -85,21 +86,38 @@ pub fn log_likelihood(stripes: &[Stripe], median: f64, beta: f64) -> f64 {
         .sum()
 }
 
-/// The negative log-likelihood over `(ln θ, ln β)`, for argmin (which minimises).
-struct NegLogLikelihood<'a>(&'a [Stripe]);
+/// The negative log-likelihood over `(ln θ, ln β)`, for argmin (which
+/// minimises); an error once `cancel` is set, which ends the maximisation.
+struct NegLogLikelihood<'a> {
+    stripes: &'a [Stripe],
+    cancel: &'a AtomicBool,
+}
 
 impl CostFunction for NegLogLikelihood<'_> {
     type Param = Vec<f64>;
     type Output = f64;
     fn cost(&self, p: &Self::Param) -> Result<f64, argmin::core::Error> {
-        let l = -log_likelihood(self.0, p[0].exp(), p[1].exp());
+        if self.cancel.load(Ordering::Relaxed) {
+            return Err(argmin::core::Error::msg(INTERRUPTED));
+        }
+        let l = -log_likelihood(self.stripes, p[0].exp(), p[1].exp());
         // Far from the optimum a tail may round to −∞: a large finite value keeps the simplex ordered.
         Ok(if l.is_finite() { l } else { f64::MAX })
     }
 }
 
+/// The `method` of a fit given up because `cancel` was set ([`fit_until`]).
+pub const INTERRUPTED: &str = "no fit: interrupted";
+
 /// Fits the lognormal fragility to `stripes` (any order; levels > 0).
 pub fn fit(stripes: &[Stripe]) -> Fit {
+    fit_until(stripes, &AtomicBool::new(false))
+}
+
+/// Fits as [`fit`] does, giving up (method [`INTERRUPTED`]) once `cancel` is
+/// set: it is looked at before every evaluation of the likelihood, so a fit
+/// over many levels stops at once on Ctrl-C.
+pub fn fit_until(stripes: &[Stripe], cancel: &AtomicBool) -> Fit {
     let cases: u64 = stripes.iter().map(|s| s.cases).sum();
     let exceeded: u64 = stripes.iter().map(|s| s.exceeded).sum();
     let none = |method: String| Fit {
@@ -127,10 +145,11 @@ pub fn fit(stripes: &[Stripe]) -> Fit {
     let above = stripes.iter().filter(|s| s.exceeded > 0).map(|s| s.level).fold(f64::INFINITY, f64::min);
     if below <= above {
         return none(format!(
-            "no fit: the exceedances are separated by level (none exceeded above {below}, all exceeded from {above}): the likelihood has no maximum (beta -> 0)"
+            "no fit: {}: the likelihood has no maximum (beta -> 0)",
+            separation(stripes, below, above)
         ));
     }
-    match maximise(stripes, (below * above).sqrt()) {
+    match maximise(stripes, (below * above).sqrt(), cancel) {
         Some((median, beta)) if beta < 1e3 => Fit {
             median: Some(median),
             beta: Some(beta),
@@ -139,18 +158,34 @@ pub fn fit(stripes: &[Stripe]) -> Fit {
             method: METHOD.into(),
         },
         Some(_) => none("no fit: the exceedances do not grow with the level (beta -> infinity)".into()),
+        None if cancel.load(Ordering::Relaxed) => none(INTERRUPTED.into()),
         None => none("no fit: the maximisation did not converge".into()),
     }
 }
 
+/// How the exceedances are separated by level, in words, when `below` (the
+/// highest level with a case that did not exceed) is at most `above` (the
+/// lowest with one that did). When they are equal, that level is the only one
+/// with both kinds of case, and its counts are given.
+fn separation(stripes: &[Stripe], below: f64, above: f64) -> String {
+    if below < above {
+        return format!("the exceedances are separated by level (none exceeded up to {below}, all exceeded from {above})");
+    }
+    let (cases, exceeded) = stripes
+        .iter()
+        .filter(|s| s.level.total_cmp(&below).is_eq())
+        .fold((0, 0), |(n, k), s| (n + s.cases, k + s.exceeded));
+    format!("the exceedances are separated by level (none exceeded below {below}, {exceeded} of {cases} exceeded at {below}, all exceeded above it)")
+}
+
 /// Nelder–Mead from `(start, β = 0.5)`, then once more from its optimum: `(θ, β)`.
-fn maximise(stripes: &[Stripe], start: f64) -> Option<(f64, f64)> {
+fn maximise(stripes: &[Stripe], start: f64, cancel: &AtomicBool) -> Option<(f64, f64)> {
     let mut x = vec![start.ln(), 0.5f64.ln()];
     for _ in 0..2 {
         let simplex = vec![x.clone(), vec![x[0] + 0.2, x[1]], vec![x[0], x[1] + 0.3]];
         // Stop when the simplex's values agree to 1e-13 (the log-likelihood is O(cases)).
         let solver = NelderMead::new(simplex).with_sd_tolerance(1e-13).ok()?;
-        let result = Executor::new(NegLogLikelihood(stripes), solver)
+        let result = Executor::new(NegLogLikelihood { stripes, cancel }, solver)
             .configure(|state| state.max_iters(5_000))
             .run()
             .ok()?;

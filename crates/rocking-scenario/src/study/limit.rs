@@ -2,10 +2,11 @@
 //! exceedances per level as the rows of `stripes.csv` stream by: memory in
 //! the number of limit states × levels, not cases.
 
-use super::fit::{fit, Fit, Stripe};
+use super::fit::{fit_until, Fit, Stripe};
 use crate::error::{closest, ErrorKind, Fault};
 use crate::read::{as_number, with_article};
 use crate::{Cell, Row};
+use std::sync::atomic::AtomicBool;
 use toml::Value;
 
 /// The columns of `fragility.csv`.
@@ -192,20 +193,26 @@ impl Tally {
 
     /// The fitted fragility of every limit state, in order.
     pub fn fits(&self) -> Vec<Fit> {
-        (0..self.states.len()).map(|i| fit(&self.stripes(i))).collect()
+        self.fits_until(&AtomicBool::new(false))
     }
 
-    /// `fragility.csv`: header and one line per limit state.
-    pub fn fragility_csv(&self) -> String {
+    /// The fits as [`Tally::fits`] makes them, given up once `cancel` is set
+    /// (Ctrl-C: see [`fit_until`]).
+    pub fn fits_until(&self, cancel: &AtomicBool) -> Vec<Fit> {
+        (0..self.states.len()).map(|i| fit_until(&self.stripes(i), cancel)).collect()
+    }
+
+    /// `fragility.csv`: header and one line per limit state, with its fit in `fits` ([`Tally::fits`]).
+    pub fn fragility_csv(&self, fits: &[Fit]) -> String {
         let mut out = crate::csv_line(FRAGILITY_HEADER) + "\n";
-        for (state, f) in self.states.iter().zip(self.fits()) {
+        for (state, f) in self.states.iter().zip(fits) {
             let cells = [
                 Cell::Text(state.name.clone()),
                 f.median.map_or(Cell::Empty, Cell::Float),
                 f.beta.map_or(Cell::Empty, Cell::Float),
                 Cell::Int(i64::try_from(f.cases).unwrap_or(i64::MAX)),
                 Cell::Int(i64::try_from(f.exceeded).unwrap_or(i64::MAX)),
-                Cell::Text(f.method),
+                Cell::Text(f.method.clone()),
             ];
             out.push_str(
                 &Row {

@@ -13,14 +13,14 @@ mod fit;
 mod limit;
 mod measure;
 
-pub use fit::{fit, log_likelihood, probability, Fit, Stripe, METHOD};
+pub use fit::{fit, fit_until, log_likelihood, probability, Fit, Stripe, INTERRUPTED, METHOD};
 pub use limit::{LimitState, Tally, Threshold, FRACTIONS_HEADER, FRAGILITY_HEADER};
 pub use measure::{pga, pgv, Measure};
 
 use crate::error::{closest, ErrorKind, Fault};
 use crate::ground::RecordCache;
 use crate::read::{as_number, with_article};
-use crate::sweep::{one_line, run_cases, summary_template, Cases};
+use crate::sweep::{is_stopped, one_line, run_cases, summary_template, Cases, Until};
 use crate::{summary_fields, Cell, Error, Finished, Row, RunError, RunOptions, Scenario, ERROR_COLUMN};
 use rocking::{GroundMotion, Record, RecordFormat};
 use std::path::{Path, PathBuf};
@@ -175,7 +175,7 @@ impl Study {
         let format = match keys.format {
             Some(f) => f,
             None => {
-                let text = std::fs::read_to_string(&file).map_err(|e| {
+                let text = crate::file::read_text(&file, crate::ground::MAX_RECORD_BYTES).map_err(|e| {
                     Fault::new(
                         "study.records",
                         ErrorKind::Read {
@@ -328,20 +328,27 @@ impl Study {
 
     /// Runs case `index` on this thread: its row (with `error` filled if it failed).
     pub fn run_case(&self, index: usize) -> Row {
+        self.run_case_until(index, &|| false).unwrap_or_else(|| self.failed_row(index, "stopped"))
+    }
+
+    /// Runs case `index` as [`Study::run_case`] does, stopping it at its next
+    /// event once `halted()` is true: `None` for a case so stopped.
+    fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row> {
         let Some(table) = self.case_table(index) else {
-            return self.failed_row(index, "no such case");
+            return Some(self.failed_row(index, "no such case"));
         };
         let outcome = Scenario::from_table(table, &self.origin)
             .and_then(|s| s.build_with(Some(&self.cache)))
-            .and_then(|case| case.run(RunOptions::SUMMARY));
+            .and_then(|case| case.run_observed(RunOptions::SUMMARY, &mut Until(halted)));
         match outcome {
             Ok(outcome) => {
                 let mut cells = self.case_cells(index);
                 cells.extend(summary_fields(&outcome).into_iter().map(|(_, cell)| cell));
                 cells.push(Cell::Empty);
-                Row { index, cells }
+                Some(Row { index, cells })
             }
-            Err(e) => self.failed_row(index, &e.fault.to_string()),
+            Err(e) if is_stopped(&e) => None,
+            Err(e) => Some(self.failed_row(index, &e.fault.to_string())),
         }
     }
 
@@ -381,8 +388,8 @@ impl Cases for Study {
     fn len(&self) -> usize {
         Study::len(self)
     }
-    fn run_case(&self, index: usize) -> Row {
-        Study::run_case(self, index)
+    fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row> {
+        Study::run_case_until(self, index, halted)
     }
     fn failed_row(&self, index: usize, message: &str) -> Row {
         Study::failed_row(self, index, message)

@@ -11,9 +11,10 @@
 //! the number of cases, even when one case takes far longer than the others.
 //! A case's scenario is only built when a worker takes it.
 //!
-//! Cancellation: once `cancel` is set, no worker takes a new case; the cases
-//! under way finish, and the rows passed on are exactly the first `written`
-//! cases of the range.
+//! Cancellation: once `cancel` is set, no worker takes a new case and the
+//! cases under way stop at their next event (an uplift, an impact, a slip
+//! starting or ending: [`Until`]); the rows passed on are exactly the first
+//! `written` cases of the range, each complete.
 //!
 //! [`Sweep::run_range`] runs a contiguous block of cases (a shard, a Dask
 //! task): the rows are those of the whole sweep's cases of that block, each
@@ -21,6 +22,7 @@
 //! give the rows of [`Sweep::run`].
 
 use super::{Row, Sweep};
+use rocking::{Event, Flow, Halt, Observer};
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -66,8 +68,9 @@ pub enum RunError<E> {
 pub(crate) trait Cases: Sync {
     /// The number of cases.
     fn len(&self) -> usize;
-    /// Runs case `index` on this thread: its row (with `error` filled if it failed).
-    fn run_case(&self, index: usize) -> Row;
+    /// Runs case `index` on this thread: its row (with `error` filled if it
+    /// failed), or `None` when `halted()` stopped it before its end.
+    fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row>;
     /// The row of case `index` that failed with `message`.
     fn failed_row(&self, index: usize, message: &str) -> Row;
 }
@@ -76,8 +79,8 @@ impl Cases for Sweep {
     fn len(&self) -> usize {
         Sweep::len(self)
     }
-    fn run_case(&self, index: usize) -> Row {
-        Sweep::run_case(self, index)
+    fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row> {
+        Sweep::run_case_until(self, index, halted)
     }
     fn failed_row(&self, index: usize, message: &str) -> Row {
         Sweep::failed_row(self, index, message)
@@ -165,7 +168,10 @@ pub(crate) fn run_cases<C: Cases, E>(
                         done = signal.wait_timeout(done, POLL).unwrap_or_else(PoisonError::into_inner).0;
                     }
                     drop(done);
-                    if sender.send(guarded_case(this, index)).is_err() {
+                    let Some(row) = guarded_case(this, index, halted) else {
+                        break;
+                    };
+                    if sender.send(row).is_err() {
                         break;
                     }
                 }
@@ -198,7 +204,10 @@ pub(crate) fn run_cases<C: Cases, E>(
             if halted() {
                 break;
             }
-            order.take(std::iter::once(guarded_case(this, index)), &mut on_row, &stop);
+            let Some(row) = guarded_case(this, index, &halted) else {
+                break;
+            };
+            order.take(std::iter::once(row), &mut on_row, &stop);
         }
         // The workers' last rows; the loop ends when the last worker does.
         order.take(receiver.iter(), &mut on_row, &stop);
@@ -213,9 +222,28 @@ pub(crate) fn run_cases<C: Cases, E>(
     })
 }
 
-/// Case `index`'s row; a panic inside the case (a bug) becomes its error.
-fn guarded_case<C: Cases>(cases: &C, index: usize) -> Row {
-    catch_unwind(AssertUnwindSafe(|| cases.run_case(index))).unwrap_or_else(|panic| panicked(cases, index, &*panic))
+/// Case `index`'s row (`None`: stopped by `halted`); a panic inside the case (a bug) becomes its error.
+fn guarded_case<C: Cases>(cases: &C, index: usize, halted: &dyn Fn() -> bool) -> Option<Row> {
+    catch_unwind(AssertUnwindSafe(|| cases.run_case_until(index, halted))).unwrap_or_else(|panic| Some(panicked(cases, index, &*panic)))
+}
+
+/// Stops a case at its next event once `.0()` is true. Events, not steps:
+/// an observer of steps makes every step build its dense output.
+pub(crate) struct Until<'a>(pub &'a dyn Fn() -> bool);
+
+impl Observer for Until<'_> {
+    fn on_event(&mut self, _: &Event) -> Flow {
+        if (self.0)() {
+            Flow::Break(Halt::Stop)
+        } else {
+            Flow::Continue(())
+        }
+    }
+}
+
+/// Whether the run was stopped by its observer ([`Until`]), not failed.
+pub(crate) fn is_stopped(e: &crate::Error) -> bool {
+    matches!(e.kind(), crate::ErrorKind::Simulation(rocking::Error::Stopped { .. }))
 }
 
 /// The row of a case whose run panicked.

@@ -14,7 +14,7 @@ mod shard;
 mod tests;
 
 pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
-pub(crate) use engine::{run_cases, Cases};
+pub(crate) use engine::{is_stopped, run_cases, Cases, Until};
 pub use engine::{Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 pub use shard::Shard;
@@ -22,7 +22,7 @@ pub use shard::Shard;
 use crate::columns::{Layout, SUMMARY};
 use crate::error::{Error, ErrorKind, Fault};
 use crate::ground::RecordCache;
-use crate::{set_dotted, Outcome, RunOptions, Scenario};
+use crate::{set_dotted, RunOptions, Scenario};
 use axis::{alternative, axis_name};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -352,17 +352,28 @@ impl Sweep {
 
     /// Runs case `index` on this thread: its row (with `error` filled if it failed).
     pub fn run_case(&self, index: usize) -> Row {
-        let outcome = match self.outcome(index) {
+        self.run_case_until(index, &|| false).unwrap_or_else(|| self.failed_row(index, "stopped"))
+    }
+
+    /// Runs case `index` as [`Sweep::run_case`] does, stopping it at its next
+    /// event once `halted()` is true: `None` for a case so stopped.
+    fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row> {
+        let outcome = self
+            .scenario(index)
+            .and_then(|s| s.build_with(Some(&self.records)))
+            .and_then(|case| case.run_observed(RunOptions::SUMMARY, &mut Until(halted)));
+        let outcome = match outcome {
             Ok(outcome) => outcome,
+            Err(e) if is_stopped(&e) => return None,
             // The file is the sweep's: the message names the key and what is wrong.
-            Err(e) => return self.failed_row(index, &e.fault.to_string()),
+            Err(e) => return Some(self.failed_row(index, &e.fault.to_string())),
         };
         let mut cells = self.axis_cells(index);
         // The fields come in the order of `summary_keys`.
         cells.extend(SUMMARY.iter().filter(|f| (f.present)(&self.layout)).map(|f| (f.read)(&outcome)));
         debug_assert_eq!(cells.len(), self.axes.len() + self.summary_keys.len());
         cells.push(Cell::Empty);
-        Row { index, cells }
+        Some(Row { index, cells })
     }
 
     /// The row of case `index` that failed with `message`: its axis values, empty results, the message.
@@ -377,10 +388,6 @@ impl Sweep {
         let mut cells = Vec::with_capacity(self.axes.len() + self.summary_keys.len() + 1);
         cells.extend(self.case_values(index).unwrap_or_default().into_iter().map(Cell::from_toml));
         cells
-    }
-
-    fn outcome(&self, index: usize) -> Result<Outcome, Error> {
-        self.scenario(index)?.build_with(Some(&self.records))?.run(RunOptions::SUMMARY)
     }
 }
 

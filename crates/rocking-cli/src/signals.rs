@@ -1,0 +1,65 @@
+//! Ctrl-C (SIGINT), SIGTERM and SIGHUP: one handler for the whole process.
+//!
+//! The first signal sets [`interrupted`]: a run stops at its next step, a
+//! sweep or a study stops its cases under way at their next event and keeps
+//! the rows finished (the command then exits 130). A second signal ends the
+//! process at once with 130, after removing the staging folders of the
+//! output folders being written ([`Registered`]), so that nothing of the
+//! interrupted run is left behind; a commit under way (the moves of
+//! `output::Staging::commit`) is let finish first, so that the folder holds
+//! one run's files whatever the moment of the signal.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Mutex, MutexGuard, Once, PoisonError};
+
+/// Set by the first signal.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// The staging folders to remove when a second signal ends the process.
+static STAGING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Installs the handler (once; later calls do nothing) and returns the flag the first signal sets.
+pub fn interrupted() -> &'static AtomicBool {
+    static INSTALL: Once = Once::new();
+    INSTALL.call_once(|| {
+        // Without a handler (another one is set) a signal simply ends the process.
+        let _ = ctrlc::set_handler(|| {
+            if INTERRUPTED.swap(true, Ordering::SeqCst) {
+                for dir in staging().drain(..) {
+                    let _ = std::fs::remove_dir_all(dir);
+                }
+                eprintln!("interrupted twice: stopping now, nothing written");
+                std::process::exit(130);
+            }
+        });
+    });
+    &INTERRUPTED
+}
+
+fn staging() -> MutexGuard<'static, Vec<PathBuf>> {
+    STAGING.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// A staging folder removed by a second signal while this value lives.
+#[derive(Debug)]
+pub struct Registered(PathBuf);
+
+impl Registered {
+    /// Registers `dir`.
+    pub fn new(dir: &Path) -> Self {
+        staging().push(dir.to_path_buf());
+        Self(dir.to_path_buf())
+    }
+
+    /// Holds off the second signal's exit while the guard lives (a commit's moves).
+    pub fn hold(&self) -> MutexGuard<'static, Vec<PathBuf>> {
+        staging()
+    }
+}
+
+impl Drop for Registered {
+    fn drop(&mut self) {
+        staging().retain(|d| *d != self.0);
+    }
+}

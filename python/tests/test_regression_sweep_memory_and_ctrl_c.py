@@ -1,0 +1,72 @@
+"""Regression: ``rocking.sweep`` reserved rows × columns up front (a sweep of
+10⁷ cases aborted the interpreter instead of raising), and ``sweep`` and
+``fragility`` looked for Ctrl-C only when a row arrived (a long case kept a
+sweep running long after SIGINT). The columns now grow as rows arrive, and the
+calling thread looks for Ctrl-C while the cases run on another one, stopping
+the cases under way at their next event. (``fragility`` gathers its rows by
+the same function as ``sweep``.)
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+import time
+
+import rocking
+from conftest import seconds_to_interrupt
+
+# A building sliding under 1.5 g (μs = 1.25), two slip events a cycle.
+SLIDER = {
+    "name": "slider",
+    "building": {"mass": 2.0e6, "mu_static": 1.25, "mu_kinetic": 1.0},
+    "ground": {"type": "harmonic", "amplitude": 1.5, "frequency": 5.0},
+    "simulation": {"duration": 1500.0, "output_dt": 0.1},
+}
+
+
+def test_a_sweep_of_ten_million_cases_reserves_nothing_up_front() -> None:
+    """10⁷ cases under a 2 GB address space: the sweep starts, and Ctrl-C stops it.
+
+    Reserved up front, the columns would need 10⁷ × (about 40 columns) × 32
+    bytes, some 13 GB: the interpreter aborted before the first case.
+    """
+    script = textwrap.dedent(
+        """
+        import os, resource, signal, threading
+        import rocking
+        limit = 2 << 30
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+        s = rocking.Scenario.from_dict({
+            "tower": {"width": 4.0, "height": 12.0, "mass": 1.5e5},
+            "ground": {"type": "harmonic", "amplitude": 0.5, "frequency": 2.0},
+            "simulation": {"duration": 1.0},
+        })
+        axes = {"ground.frequency": {"from": 1.0, "to": 9.0, "steps": 10_000_000}, "max_cases": 10_000_000}
+        threading.Timer(1.0, os.kill, args=(os.getpid(), signal.SIGINT)).start()
+        try:
+            rocking.sweep(s, axes, threads=1)
+        except KeyboardInterrupt:
+            print("interrupted")
+        """
+    )
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600, check=False)
+    assert r.returncode == 0, f"exit {r.returncode}: {r.stderr[-2000:]}"
+    assert r.stdout.strip() == "interrupted", r.stdout + r.stderr
+
+
+def test_ctrl_c_stops_the_long_cases_of_a_sweep() -> None:
+    """Two cases of 150,000 s of sliding, SIGINT 0.3 s in: the sweep gives up at once.
+
+    One case of 1,500 s is timed first; a case 100 times longer takes about 100
+    times as long. Were the cases not stopped, the exception would come only
+    when they end: the bound, a quarter of one case, leaves a wide margin both ways.
+    """
+    s = rocking.Scenario.from_dict(SLIDER)
+    start = time.perf_counter()
+    rocking.sweep(s, {"ground.frequency": [5.0]}, threads=1)
+    long_case = 100 * (time.perf_counter() - start)
+    longer = rocking.Scenario.from_dict({**SLIDER, "simulation": {"duration": 150000.0, "output_dt": 10.0}})
+    elapsed = seconds_to_interrupt(lambda: rocking.sweep(longer, {"ground.frequency": [4.0, 4.5]}, threads=2))
+    assert elapsed < 0.25 * long_case, f"the sweep stopped {elapsed:.2f} s after it started (a case takes about {long_case:.0f} s)"
