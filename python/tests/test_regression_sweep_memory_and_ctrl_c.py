@@ -43,7 +43,12 @@ def test_a_sweep_of_ten_million_cases_reserves_nothing_up_front() -> None:
             "ground": {"type": "harmonic", "amplitude": 0.5, "frequency": 2.0},
             "simulation": {"duration": 1.0},
         })
-        axes = {"ground.frequency": {"from": 1.0, "to": 9.0, "steps": 10_000_000}, "max_cases": 10_000_000}
+        # 10,000 × 1,000 (an axis holds at most 10⁶ values).
+        axes = {
+            "ground.frequency": {"from": 1.0, "to": 9.0, "steps": 10_000},
+            "ground.amplitude": {"from": 0.1, "to": 0.9, "steps": 1_000},
+            "max_cases": 10_000_000,
+        }
         threading.Timer(1.0, os.kill, args=(os.getpid(), signal.SIGINT)).start()
         try:
             rocking.sweep(s, axes, threads=1)

@@ -10,11 +10,7 @@ use std::sync::atomic::AtomicBool;
 fn stripes() -> Vec<Stripe> {
     [(0.1, 0), (0.2, 1), (0.3, 2), (0.4, 4), (0.5, 5)]
         .iter()
-        .map(|&(level, exceeded)| Stripe {
-            level,
-            cases: 5,
-            exceeded,
-        })
+        .map(|&(level, exceeded)| Stripe { level, cases: 5, exceeded })
         .collect()
 }
 

@@ -25,9 +25,5 @@ fn a_gap_between_the_levels_is_named_by_its_two_ends() {
     // Stripes in any order: none exceeded at 0.1 and 0.2, all at 0.3 and 0.4.
     let fit = fit_fragility(&[stripe(0.3, 2, 2), stripe(0.1, 2, 0), stripe(0.4, 2, 2), stripe(0.2, 2, 0)]);
     assert_eq!(fit.median, None);
-    assert!(
-        fit.method.contains("(none exceeded up to 0.2, all exceeded from 0.3)"),
-        "{}",
-        fit.method
-    );
+    assert!(fit.method.contains("(none exceeded up to 0.2, all exceeded from 0.3)"), "{}", fit.method);
 }

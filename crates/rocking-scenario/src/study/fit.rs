@@ -87,7 +87,9 @@ pub fn log_likelihood(stripes: &[Stripe], median: f64, beta: f64) -> f64 {
 }
 
 /// The negative log-likelihood over `(ln θ, ln β)`, for argmin (which
-/// minimises); an error once `cancel` is set, which ends the maximisation.
+/// minimises); once `cancel` is set, a flat function, on which Nelder–Mead
+/// stops at once (its simplex's values agree). An error would not do: argmin's
+/// Nelder–Mead unwraps the cost of its shrink step.
 struct NegLogLikelihood<'a> {
     stripes: &'a [Stripe],
     cancel: &'a AtomicBool,
@@ -98,7 +100,7 @@ impl CostFunction for NegLogLikelihood<'_> {
     type Output = f64;
     fn cost(&self, p: &Self::Param) -> Result<f64, argmin::core::Error> {
         if self.cancel.load(Ordering::Relaxed) {
-            return Err(argmin::core::Error::msg(INTERRUPTED));
+            return Ok(f64::MAX);
         }
         let l = -log_likelihood(self.stripes, p[0].exp(), p[1].exp());
         // Far from the optimum a tail may round to −∞: a large finite value keeps the simplex ordered.
@@ -149,7 +151,11 @@ pub fn fit_until(stripes: &[Stripe], cancel: &AtomicBool) -> Fit {
             separation(stripes, below, above)
         ));
     }
-    match maximise(stripes, (below * above).sqrt(), cancel) {
+    let optimum = maximise(stripes, (below * above).sqrt(), cancel);
+    if cancel.load(Ordering::Relaxed) {
+        return none(INTERRUPTED.into());
+    }
+    match optimum {
         Some((median, beta)) if beta < 1e3 => Fit {
             median: Some(median),
             beta: Some(beta),
@@ -158,7 +164,6 @@ pub fn fit_until(stripes: &[Stripe], cancel: &AtomicBool) -> Fit {
             method: METHOD.into(),
         },
         Some(_) => none("no fit: the exceedances do not grow with the level (beta -> infinity)".into()),
-        None if cancel.load(Ordering::Relaxed) => none(INTERRUPTED.into()),
         None => none("no fit: the maximisation did not converge".into()),
     }
 }

@@ -47,6 +47,62 @@ impl LimitState {
 
 const KEYS: &[&str] = &["name", "field", "above"];
 
+/// The fields of `summary.json` that only a tower has (empty, or always
+/// false, in a run without one).
+pub const TOWER_FIELDS: [&str; 19] = [
+    "alpha_rad",
+    "R_m",
+    "p_rad_s",
+    "restitution",
+    "uplift_acceleration_g",
+    "max_abs_theta_rad",
+    "max_theta_over_alpha",
+    "impacts",
+    "overturned",
+    "overturn_time_s",
+    "first_uplift_time_s",
+    "max_top_displacement_m",
+    "max_top_abs_acceleration_m_s2",
+    "max_pivot_friction_demand",
+    "tower_uplift_detected",
+    "time_in_regime_s.rocking",
+    "time_in_regime_s.rocking_sliding",
+    "min_theta_rad",
+    "max_theta_rad",
+];
+
+/// The fields of `summary.json` that only a building that can slide has.
+pub const BUILDING_FIELDS: [&str; 6] = [
+    "slip_acceleration_g",
+    "max_abs_slip_m",
+    "final_slip_m",
+    "first_slip_time_s",
+    "time_in_regime_s.sliding",
+    "time_in_regime_s.rocking_sliding",
+];
+
+/// Refuses a limit state on a field the study's scenario cannot have (a
+/// tower's field without `[tower]`, a slip without `[building]`): every case
+/// would count as not exceeded, and the study would report "0 exceeded".
+pub(crate) fn check_fields(states: &[LimitState], tower: bool, building: bool) -> Result<(), Fault> {
+    for (i, state) in states.iter().enumerate() {
+        let missing = if !tower && TOWER_FIELDS.contains(&state.field.as_str()) {
+            Some("a field of the tower, and the scenario has no [tower]")
+        } else if !building && BUILDING_FIELDS.contains(&state.field.as_str()) {
+            Some("a field of the building's slip, and the scenario has no [building]")
+        } else {
+            None
+        };
+        if let Some(why) = missing {
+            return Err(Fault::new(
+                format!("study.limit_state[{i}].field"),
+                ErrorKind::NotApplicable(format!("\"{}\" is {why}: no case could exceed it", state.field)),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Reads `[[study.limit_state]]` against the summary's fields (`template`: their names and kinds).
 pub(crate) fn parse(value: Option<&Value>, template: &[(String, Cell)]) -> Result<Vec<LimitState>, Fault> {
     let items = match value {

@@ -28,7 +28,17 @@ use std::sync::atomic::AtomicBool;
 use toml::{Table, Value};
 
 /// The keys of `[study]`.
-pub const STUDY_KEYS: &[&str] = &["records", "format", "units", "dt", "measure", "levels", "free_after", "limit_state"];
+pub const STUDY_KEYS: &[&str] = &[
+    "records",
+    "format",
+    "units",
+    "dt",
+    "measure",
+    "levels",
+    "free_after",
+    "limit_state",
+    "max_cases",
+];
 /// Seconds simulated after the end of each record when `free_after` is not given.
 pub const DEFAULT_FREE_AFTER: f64 = 10.0;
 /// The first columns of `stripes.csv`, before the summary's fields.
@@ -146,6 +156,19 @@ impl Study {
         let ground_keys = ground_keys(&study).map_err(fail)?;
         let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
         let paths = glob_records("study", study.get("records"), &folder).map_err(fail)?;
+        // Counted before a record is read: records × levels cases.
+        let max_cases = parse_max_cases(&study).map_err(fail)?;
+        let cases = paths.len().saturating_mul(levels.len());
+        if cases > max_cases {
+            return Err(fail(Fault::invalid(
+                "study",
+                format!(
+                    "{} records × {} levels make {cases} cases, more than {max_cases}; to run them knowingly, raise the limit with `max_cases = {cases}` in [study]",
+                    paths.len(),
+                    levels.len()
+                ),
+            )));
+        }
         let name = match table.get("name") {
             Some(Value::String(s)) => s.clone(),
             _ => origin.file_stem().map_or_else(|| "study".to_string(), |s| s.to_string_lossy().into_owned()),
@@ -165,6 +188,11 @@ impl Study {
         for path in paths {
             let record = this.read_record(path, &ground_keys, &folder)?;
             this.records.push(record);
+        }
+        if let Some(first) = this.case_table(0) {
+            let case = Scenario::from_table(first, &this.origin).and_then(|s| s.build()).map_err(study_error)?;
+            let derived = case.model.derived();
+            limit::check_fields(&this.limit_states, derived.alpha.is_some(), derived.slip_acceleration_g.is_some()).map_err(fail)?;
         }
         Ok(this)
     }
@@ -454,6 +482,25 @@ fn ground_keys(study: &Table) -> Result<GroundKeys, Fault> {
     Ok(GroundKeys { format, format_name, csv })
 }
 
+/// `max_cases`: the most cases (records × levels) the study may have, as `[sweep]`'s.
+fn parse_max_cases(study: &Table) -> Result<usize, Fault> {
+    let key = "study.max_cases";
+    match study.get("max_cases") {
+        None => Ok(crate::DEFAULT_MAX_CASES),
+        Some(Value::Integer(n)) => usize::try_from(*n)
+            .ok()
+            .filter(|&n| n >= 1)
+            .ok_or_else(|| Fault::invalid(key, format!("must be a whole number >= 1, got {n}"))),
+        Some(other) => Err(Fault::new(
+            key,
+            ErrorKind::WrongType {
+                expected: "a whole number",
+                got: with_article(other),
+            },
+        )),
+    }
+}
+
 fn parse_measure(study: &Table) -> Result<Measure, Fault> {
     let names: Vec<&'static str> = Measure::ALL.iter().map(|(n, _)| *n).collect();
     match study.get("measure") {
@@ -535,8 +582,10 @@ fn parse_levels(study: &Table) -> Result<Vec<f64>, Fault> {
 }
 
 /// The record files of `records` (glob patterns relative to `folder`), each
-/// pattern's matches sorted, a file matched twice kept once; paths relative to
-/// `folder`. `section` is the table of the key (`study`, `assessment`).
+/// pattern's matches sorted, a file matched twice (by its canonical path)
+/// kept once; paths relative to `folder`. A pattern that matches no file, and
+/// a file name that is not UTF-8 where a pattern would match it, are errors.
+/// `section` is the table of the key (`study`, `assessment`).
 pub(crate) fn glob_records(section: &str, value: Option<&Value>, folder: &Path) -> Result<Vec<String>, Fault> {
     let key = &format!("{section}.records");
     let patterns: Vec<&str> = match value {
@@ -571,27 +620,22 @@ pub(crate) fn glob_records(section: &str, value: Option<&Value>, folder: &Path) 
             ))
         }
     };
-    let escaped = glob::Pattern::escape(&folder.to_string_lossy());
     let mut paths: Vec<String> = Vec::new();
+    let mut seen = std::collections::HashSet::new();
     for (i, pattern) in patterns.iter().enumerate() {
-        let full = if folder.as_os_str().is_empty() || Path::new(pattern).is_absolute() {
-            pattern.to_string()
-        } else {
-            format!("{escaped}/{pattern}")
-        };
-        let matches = glob::glob(&full).map_err(|e| Fault::invalid(format!("{key}[{i}]"), format!("\"{pattern}\" is not a glob pattern: {e}")))?;
-        let mut found: Vec<String> = matches
-            .filter_map(Result::ok)
-            .filter(|p| p.is_file())
-            .map(|p| {
-                let relative = p.strip_prefix(folder).map(Path::to_path_buf).unwrap_or(p);
-                relative.to_string_lossy().replace('\\', "/")
-            })
-            .collect();
-        found.sort();
+        let at = if patterns.len() > 1 { format!("{key}[{i}]") } else { key.to_string() };
+        let found = matching_files(pattern, folder).map_err(|why| Fault::invalid(at.clone(), why))?;
+        if found.is_empty() {
+            return Err(Fault::invalid(
+                at,
+                format!("no file matches \"{pattern}\" (patterns are relative to the study file)"),
+            ));
+        }
         for path in found {
-            if !paths.contains(&path) {
-                paths.push(path);
+            // A file reached twice (two patterns, a link to it, a link to a folder) is one record.
+            if seen.insert(std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone())) {
+                let relative = path.strip_prefix(folder).map(Path::to_path_buf).unwrap_or(path);
+                paths.push(relative.to_string_lossy().replace('\\', "/"));
             }
         }
     }
@@ -605,4 +649,91 @@ pub(crate) fn glob_records(section: &str, value: Option<&Value>, folder: &Path) 
         ));
     }
     Ok(paths)
+}
+
+/// Folders of the system that hold no records and have no end when walked
+/// (`/proc/self/root` leads back to `/`): never searched.
+const SYSTEM_FOLDERS: [&str; 2] = ["/proc", "/sys"];
+
+/// The regular files matching the glob `pattern` (relative to `folder`
+/// unless absolute), sorted; or why the pattern cannot be searched.
+///
+/// The folders are walked by `walkdir`, following links but never into a
+/// folder it is already inside (a cycle of links is walked once), no deeper
+/// than the pattern reaches (any depth below a `**`), never into
+/// [`SYSTEM_FOLDERS`]; each path is matched whole with `glob::Pattern` (`*`
+/// stays within one folder). The glob crate's own walk skips a file name
+/// that is not UTF-8 without a word, and follows a cycle of links until the
+/// paths grow too long.
+fn matching_files(pattern: &str, folder: &Path) -> Result<Vec<PathBuf>, String> {
+    let options = glob::MatchOptions {
+        require_literal_separator: true,
+        ..glob::MatchOptions::new()
+    };
+    let is_wild = |c: &str| c.contains(['*', '?', '[']);
+    let components: Vec<&str> = pattern.split('/').collect();
+    let literal = components.iter().take_while(|c| !is_wild(c)).count();
+    let full = |p: &str| {
+        if folder.as_os_str().is_empty() || Path::new(pattern).is_absolute() {
+            PathBuf::from(p)
+        } else {
+            folder.join(p)
+        }
+    };
+    if literal == components.len() {
+        // No wildcard: the file itself.
+        let path = full(pattern);
+        return Ok(if path.is_file() { vec![path] } else { Vec::new() });
+    }
+    let base_text = components[..literal].join("/");
+    let base = match (base_text.is_empty(), Path::new(pattern).is_absolute()) {
+        (true, true) => PathBuf::from("/"),
+        (true, false) => full("."),
+        _ => full(&base_text),
+    };
+    let canonical_base = std::fs::canonicalize(&base).unwrap_or_else(|_| base.clone());
+    if let Some(system) = SYSTEM_FOLDERS.iter().find(|s| canonical_base.starts_with(s)) {
+        return Err(format!("\"{pattern}\" searches {system}, which holds no records: give the records' folder"));
+    }
+    let rest = &components[literal..];
+    let depth = if rest.contains(&"**") { usize::MAX } else { rest.len() };
+    let matcher = glob::Pattern::new(&format!(
+        "{}/{}",
+        glob::Pattern::escape(&base.to_string_lossy()).trim_end_matches('/'),
+        rest.join("/")
+    ))
+    .map_err(|e| format!("\"{pattern}\" is not a glob pattern: {e}"))?;
+    let walk = walkdir::WalkDir::new(&base)
+        .follow_links(true)
+        .min_depth(1)
+        .max_depth(depth)
+        .into_iter()
+        .filter_entry(|e| !(e.file_type().is_dir() && is_system(e.path())));
+    let mut found = Vec::new();
+    // Unreadable folders and cycles of links are passed over, as the shell's glob does.
+    for entry in walk.flatten() {
+        if !entry.file_type().is_file() {
+            continue;
+        }
+        let path = entry.path();
+        match path.to_str() {
+            Some(text) if matcher.matches_with(text, options) => found.push(path.to_path_buf()),
+            Some(_) => {}
+            None if matcher.matches_with(&path.to_string_lossy(), options) => {
+                return Err(format!(
+                    "{}: a file name that is not UTF-8 (it cannot be named in stripes.csv): rename it",
+                    path.display()
+                ))
+            }
+            None => {}
+        }
+    }
+    found.sort();
+    Ok(found)
+}
+
+/// Whether the folder `path` is (or leads by links into) one of [`SYSTEM_FOLDERS`].
+fn is_system(path: &Path) -> bool {
+    let canonical = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    SYSTEM_FOLDERS.iter().any(|s| canonical.starts_with(s))
 }

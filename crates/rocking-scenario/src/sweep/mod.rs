@@ -256,10 +256,17 @@ impl Sweep {
         Ok(sweep)
     }
 
-    /// The input files of the first case that builds (a ground-motion record), for `--out` checks.
+    /// The input files of the first case that builds (a ground-motion record),
+    /// for `--out` checks. At most [`DEFAULT_MAX_CASES`] cases are tried: all
+    /// of them in a sweep of no more, else as many spread evenly over the
+    /// sweep, case 0 first (a raised `max_cases` of 10⁹ cases all invalid
+    /// searched for hours without a word).
     fn first_buildable_case(&self) -> Result<Vec<PathBuf>, Error> {
         let mut first_error = None;
-        for index in 0..self.len {
+        let tried = self.len.min(DEFAULT_MAX_CASES);
+        // floor(j·len/tried): 0, then increasing, all below len.
+        let spread = (0..tried).map(|j| usize::try_from(j as u128 * self.len as u128 / tried as u128).unwrap_or(0));
+        for index in spread {
             match self.scenario(index).and_then(|s| s.build_with(Some(&self.records))) {
                 Ok(case) => return Ok(case.inputs),
                 Err(e) => {
