@@ -184,7 +184,7 @@ impl HazardGrid {
         for (line, text) in lines {
             let f = fields(text);
             if f.len() != expected {
-                let missing = if f.len() < expected && (expected - f.len()) % 3 == 0 {
+                let missing = if f.len() < expected && (expected - f.len()).is_multiple_of(3) {
                     ": a return period's ag, F0, Tc* are missing"
                 } else {
                     ""
