@@ -1,5 +1,6 @@
 // The single run's Web Worker: runs a scenario off the page's main thread and
-// hands back the history as typed arrays (transferred, not copied), the
+// hands back the history as typed arrays (transferred, not copied: a copy
+// of every row, or of every k-th of a long run, the whole kept here), the
 // regime as one byte per row, the charts' series thinned to what a chart can
 // show, and the sliding spans: whatever the duration, the page only draws.
 import init, { runColumns, check } from "../pkg/rocking_web.js";
@@ -87,7 +88,6 @@ function run(text) {
   try {
     const { summary, events, event_columns, order, columns, text: textColumns } = JSON.parse(output.meta());
     const history = {};
-    const transfer = [];
     let regimeNames = [];
     for (const name of order) {
       if (name in textColumns) {
@@ -104,7 +104,6 @@ function run(text) {
       } else {
         history[name] = output.column(columns.indexOf(name));
       }
-      transfer.push(history[name].buffer);
     }
     summary.wall_time_s = (performance.now() - start) / 1000;
     const h = history;
@@ -112,21 +111,18 @@ function run(text) {
     const { t, series } = thin(h.t, names.map((c) => h[c]), CHART_BUCKETS);
     const chart = { t };
     names.forEach((c, j) => (chart[c] = series[j]));
-    transfer.push(t.buffer, ...series.map((s) => s.buffer));
     const slips = h.regime ? slipSpans(h.t, h.regime, regimeNames) : [];
-    // A long history stays here (for history.csv); the page gets every k-th row and the last.
-    const rows = h.t.length;
-    const stride = Math.ceil(rows / FRAME_ROWS);
+    // The whole history stays here (for history.csv); the page gets a copy
+    // of it (what is transferred leaves this thread), of every k-th row and
+    // the last for a long one.
     kept = { history, regimeNames };
-    let frames = history;
-    if (stride > 1) {
-      const picks = Array.from({ length: Math.ceil(rows / stride) }, (_, k) => k * stride);
-      if (picks[picks.length - 1] !== rows - 1) picks.push(rows - 1);
-      frames = {};
-      for (const [name, column] of Object.entries(history)) frames[name] = column.constructor.from(picks, (i) => column[i]);
-    }
-    transfer.length = 0;
-    transfer.push(...Object.values(frames).map((c) => c.buffer), t.buffer, ...series.map((s) => s.buffer));
+    const rows = h.t.length;
+    const stride = Math.max(1, Math.ceil(rows / FRAME_ROWS));
+    const picks = Array.from({ length: Math.ceil(rows / stride) }, (_, k) => k * stride);
+    if (picks[picks.length - 1] !== rows - 1) picks.push(rows - 1);
+    const frames = {};
+    for (const [name, column] of Object.entries(history)) frames[name] = stride > 1 ? column.constructor.from(picks, (i) => column[i]) : column.slice();
+    const transfer = [...Object.values(frames).map((c) => c.buffer), t.buffer, ...series.map((s) => s.buffer)];
     const message = { summary, derived, history: frames, rows, stride, regimeNames, events, eventColumns: event_columns, chart, slips };
     return { message, transfer };
   } finally {

@@ -1,6 +1,8 @@
 """The page as an engineer uses it: the examples' menu, links, errors at the
 field, friction edits, long runs off the main thread."""
 
+import csv
+import io
 import json
 import re
 import subprocess
@@ -190,3 +192,20 @@ def test_an_input_changed_during_a_long_run_ends_it(page):
     computed(page, timeout=4000)
     page.eval_on_selector("#time", "s => { s.value = s.max; s.dispatchEvent(new Event('input')) }")
     expect(page.locator("#time-label")).to_contain_text("t = 15.000 s")
+
+
+def test_the_history_download_is_the_commands_history(page, tmp_path):
+    """history.csv from the page (written by the run's worker) holds the
+    command's rows: the same header, the same regimes, every number the same
+    double."""
+    with page.expect_download() as download:
+        page.click('button[data-download="history.csv"]')
+    got = list(csv.reader(io.StringIO(open(download.value.path()).read())))
+    file = ROOT / "examples" / "tower-on-church.toml"
+    command_summary(file, tmp_path / "out")
+    want = list(csv.reader(io.StringIO((tmp_path / "out" / "history.csv").read_text())))
+    assert got[0] == want[0] and len(got) == len(want) == 3002
+    regime = want[0].index("regime")
+    for g, w in zip(got[1:], want[1:]):
+        assert g[regime] == w[regime]
+        assert [float(x) for k, x in enumerate(g) if k != regime] == [float(x) for k, x in enumerate(w) if k != regime]
