@@ -729,7 +729,11 @@ function axisLabel(key) {
 function drawSweep() {
   if (!sweepShown) return;
   const { columns, keys, labels } = sweepShown;
-  const at = drawHeatmap($("heatmap"), columns, keys, labels, $("heatmap-log").checked);
+  // Drawn at the width it is shown at (up to 640 px), so that its text stays legible on a phone.
+  const canvas = $("heatmap");
+  canvas.width = Math.max(320, Math.min(640, $("heatmap-box").clientWidth - 2));
+  canvas.height = Math.round(canvas.width * 0.5625);
+  const at = drawHeatmap(canvas, columns, keys, labels, $("heatmap-log").checked);
   sweepShown.at = at;
 }
 

@@ -98,7 +98,8 @@ export function drawHeatmap(canvas, columns, keys, labels, log = false) {
   ctx.textAlign = "center";
   ctx.fillText(labels[0], left + plotW / 2, canvas.height - 6);
   const tick = (list, n) => list.filter((_, k) => k % Math.max(1, Math.ceil(list.length / n)) === 0);
-  for (const v of tick(xs, 8)) ctx.fillText(tickText(v), (xEdge(xs.indexOf(v)) + xEdge(xs.indexOf(v) + 1)) / 2, canvas.height - bottom + 14);
+  // About one x tick per 50 px, so that their texts never touch.
+  for (const v of tick(xs, Math.max(2, Math.min(8, Math.floor(plotW / 50))))) ctx.fillText(tickText(v), (xEdge(xs.indexOf(v)) + xEdge(xs.indexOf(v) + 1)) / 2, canvas.height - bottom + 14);
   ctx.textAlign = "right";
   if (keys[1]) {
     ctx.save();
