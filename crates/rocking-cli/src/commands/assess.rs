@@ -18,6 +18,8 @@ pub const CAPACITY_CSV: &str = "capacity.csv";
 pub const RECORDS_CSV: &str = "records.csv";
 /// The code spectra and the fitted records' spectra.
 pub const SPECTRA_CSV: &str = "spectra.csv";
+/// The page to attach to a report.
+pub const REPORT_HTML: &str = "report.html";
 
 /// Arguments of `rocking assess`.
 #[derive(Debug, clap::Args)]
@@ -68,7 +70,7 @@ fn assess(args: &Args) -> anyhow::Result<()> {
     let file = AssessmentInput::from_toml_str(&text, &args.assessment)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.assessment));
     let dynamic = !file.file.records.is_empty();
-    let mut names = vec![ASSESSMENT_JSON, CAPACITY_CSV];
+    let mut names = vec![ASSESSMENT_JSON, CAPACITY_CSV, REPORT_HTML];
     if dynamic {
         names.extend([RECORDS_CSV, SPECTRA_CSV]);
     }
@@ -104,6 +106,8 @@ fn assess(args: &Args) -> anyhow::Result<()> {
         write(RECORDS_CSV, records_csv(set, &dynamic_checks))?;
         write(SPECTRA_CSV, spectra_csv(set, &dynamic_checks))?;
     }
+    let page = super::assess_report::report_html(&file, &capacity, &checks, set.as_ref().map(|s| (s, dynamic_checks.as_slice())))?;
+    write(REPORT_HTML, page)?;
     staging.commit()?;
 
     let mut lines = vec![format!(

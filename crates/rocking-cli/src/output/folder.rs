@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
 /// Every file name this tool writes into an output folder.
-pub const KNOWN: [&str; 38] = [
+pub const KNOWN: [&str; 39] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -64,6 +64,7 @@ pub const KNOWN: [&str; 38] = [
     "assessment.json",
     "capacity.csv",
     "records.csv",
+    "report.html",
 ];
 
 /// The prefix of a staging folder's name (the rest is drawn at random).

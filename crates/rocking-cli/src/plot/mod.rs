@@ -8,6 +8,7 @@
 //! A fragility study: `ida` (the response against the level, one line per
 //! record) and `fragility` (observed fractions and fitted curves).
 
+mod chart;
 mod fragility;
 mod ida;
 mod labels;
@@ -23,6 +24,7 @@ mod sweep_table;
 mod theta;
 mod timeline;
 
+pub use chart::{LineChart, Marker};
 use rocking_scenario::{Measure, Outcome, Stripe};
 pub use spectra::{Band, Curve, Ink, SpectraFigure};
 use std::path::{Path, PathBuf};
@@ -31,6 +33,16 @@ pub use sweep_table::SweepTable;
 /// Draws a figure of spectra (log-log) into `dir/<stem>.svg` and `.png`, returning the files.
 pub fn spectra_figure(dir: &Path, stem: &str, figure: &SpectraFigure) -> anyhow::Result<Vec<PathBuf>> {
     style::render(dir, stem, spectra::SIZE, figure)
+}
+
+/// A figure of spectra (log-log) as an SVG string, for a page.
+pub fn spectra_svg(figure: &SpectraFigure) -> anyhow::Result<String> {
+    style::render_svg(spectra::SIZE, figure)
+}
+
+/// A chart on linear axes as an SVG string, for a page.
+pub fn chart_svg(chart: &LineChart) -> anyhow::Result<String> {
+    style::render_svg(chart::SIZE, chart)
 }
 
 /// The files `run_figures` writes.

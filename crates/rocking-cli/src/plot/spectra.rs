@@ -44,6 +44,13 @@ impl Ink {
     }
 }
 
+impl Curve {
+    /// Its colour.
+    pub fn ink_color(&self) -> RGBColor {
+        self.ink.color()
+    }
+}
+
 /// One curve of a spectra figure.
 #[derive(Debug, Clone)]
 pub struct Curve {

@@ -145,6 +145,18 @@ pub fn render(dir: &Path, stem: &str, size: (u32, u32), figure: &impl Figure) ->
     Ok(vec![svg, png])
 }
 
+/// Draws `figure` as an SVG document in a string, `size` px (w, h): a figure
+/// inlined in a page (`report.html`).
+pub fn render_svg(size: (u32, u32), figure: &impl Figure) -> anyhow::Result<String> {
+    register()?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        draw_on(&root, figure).context("cannot draw an inline figure")?;
+    }
+    Ok(svg)
+}
+
 fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, figure: &impl Figure) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,

@@ -1,0 +1,436 @@
+//! `report.html` of `rocking assess`: one self-contained page (no link, no
+//! script; figures inline as SVG) that an engineer can attach to a report and
+//! a reviewer can follow: the tower and its capacity, the site, each check
+//! with its formula, numbers and verdict, the capacity curve in the ADRS plane
+//! with the demand points, and for the dynamic checks the fitted spectra, the
+//! responses record by record and the response against λ. Printed to A4, no
+//! figure is cut (each figure avoids a page break inside it).
+
+use crate::format::sig;
+use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, SpectraFigure};
+use rocking_assess::{governing, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role};
+use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
+use std::fmt::Write;
+
+/// Escapes text for HTML.
+fn esc(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;max-width:190mm;margin:1em auto;color:#222;font-size:10.5pt;line-height:1.4}\
+h1{font-size:17pt}h2{font-size:13pt;border-bottom:1px solid #999;margin-top:1.4em}h3{font-size:11pt}\
+table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left;vertical-align:top}\
+th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
+figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width:100%;height:auto;display:block}figcaption{font-size:9.5pt;color:#444}\
+code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
+
+/// The SVG of a figure with a viewBox, so that it scales to the page's width.
+fn scalable(svg: String, size: (u32, u32)) -> String {
+    if svg.contains("viewBox") {
+        svg
+    } else {
+        svg.replacen("<svg ", &format!("<svg viewBox=\"0 0 {} {}\" ", size.0, size.1), 1)
+    }
+}
+
+fn verdict(c: &Check) -> String {
+    if c.holds {
+        "<span class=\"holds\">holds</span>".into()
+    } else {
+        "<span class=\"fails\">fails</span>".into()
+    }
+}
+
+fn formula(c: &Check, q: f64) -> String {
+    match c.method {
+        Method::Activation => "a<sub>g</sub> S(a<sub>g</sub>) ≥ a<sub>0</sub>* activates (Circolare 2019 eq. C8.7.1.8)".into(),
+        Method::LinearKinematic => format!("a<sub>g</sub> S(a<sub>g</sub>) / q ≥ a<sub>0</sub>*, q = {q} (§C8.7.1.2.1.7)"),
+        Method::NonlinearKinematic => {
+            "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)".into()
+        }
+        Method::NonlinearDynamic => {
+            "records run through the model: none beyond d<sub>0</sub>, mean (largest with fewer than 7) ≤ d<sub>LS</sub> (§C8.7.1.2.1.9)".into()
+        }
+    }
+}
+
+fn check_row(out: &mut String, c: &Check, q: f64) {
+    let bound = if c.ag_capacity.is_lower_bound() { "≥ " } else { "" };
+    let _ = writeln!(
+        out,
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{} {}</td><td class=\"n\">{} {}</td><td class=\"n\">{}</td><td class=\"n\">{bound}{}</td><td class=\"n\">{bound}{}</td><td>{}</td></tr>",
+        c.limit_state,
+        c.method.as_str().replace('_', " "),
+        formula(c, q),
+        sig(c.demand, 4),
+        c.unit.as_str().replace("m/s2", "m/s²"),
+        sig(c.capacity, 4),
+        c.unit.as_str().replace("m/s2", "m/s²"),
+        sig(c.ag, 4),
+        sig(c.ag_capacity.value(), 4),
+        sig(c.zeta_e, 3),
+        verdict(c)
+    );
+}
+
+/// The capacity curve in the ADRS plane with the ultimate displacements and the demands.
+fn adrs_figure(capacity: &Capacity, checks: &[Check]) -> anyhow::Result<String> {
+    let points = capacity.curve_points(201);
+    let mut markers = vec![
+        Marker {
+            label: format!("d_SLV = 0.4 d0 = {} m", sig(capacity.d_slv, 3)),
+            at: (capacity.d_slv, capacity.acceleration_at(capacity.d_slv)),
+            fails: false,
+        },
+        Marker {
+            label: format!("d_SLC = 0.6 d0 = {} m", sig(capacity.d_slc, 3)),
+            at: (capacity.d_slc, capacity.acceleration_at(capacity.d_slc)),
+            fails: false,
+        },
+    ];
+    for c in checks.iter().filter(|c| c.method == Method::NonlinearKinematic) {
+        markers.push(Marker {
+            label: format!("{} demand {} m", c.limit_state, sig(c.demand, 3)),
+            at: (c.demand, capacity.acceleration_at(c.demand.min(capacity.d0))),
+            fails: !c.holds,
+        });
+    }
+    let chart = LineChart {
+        title: "Capacity curve in the ADRS plane".into(),
+        subtitle: format!("{} curve, FC = {}, e* = 1", capacity.curve, capacity.confidence_factor),
+        x_label: "spectral displacement d* (m)".into(),
+        y_label: "spectral acceleration a* (m/s²)".into(),
+        curves: vec![Curve {
+            label: Some("capacity a*(d*)".into()),
+            ink: Ink::Mean,
+            width: 3,
+            dashed: false,
+            points,
+        }],
+        markers,
+    };
+    Ok(scalable(chart_svg(&chart)?, (1000, 620)))
+}
+
+fn spectra_figure(set: &RecordSet, d: &DynamicCheck) -> anyhow::Result<String> {
+    let (a, b) = set.range;
+    let mut curves: Vec<Curve> = set
+        .records
+        .iter()
+        .zip(&d.fitted.scales)
+        .enumerate()
+        .map(|(i, (r, s))| Curve {
+            label: (i == 0).then(|| format!("the {} records, each scaled", set.records.len())),
+            ink: Ink::Faint,
+            width: 1,
+            dashed: false,
+            points: set.periods.iter().zip(&r.psa_g).map(|(t, p)| (*t, s * p)).collect(),
+        })
+        .collect();
+    curves.push(Curve {
+        label: Some("mean of the scaled set".into()),
+        ink: Ink::Mean,
+        width: 3,
+        dashed: false,
+        points: set.periods.iter().copied().zip(d.fitted.mean.iter().copied()).collect(),
+    });
+    curves.push(Curve {
+        label: Some(format!("{} code spectrum, 5%", d.limit_state)),
+        ink: Ink::Target,
+        width: 3,
+        dashed: true,
+        points: set.periods.iter().copied().zip(d.target_g.iter().copied()).collect(),
+    });
+    let band = Band {
+        label: format!("{COMPATIBILITY_LOWER}–{COMPATIBILITY_UPPER} × the code spectrum"),
+        points: set
+            .periods
+            .iter()
+            .zip(&d.target_g)
+            .filter(|(t, _)| **t >= a && **t <= b)
+            .map(|(t, s)| (*t, COMPATIBILITY_LOWER * s, COMPATIBILITY_UPPER * s))
+            .collect(),
+    };
+    let figure = SpectraFigure {
+        title: format!("Record set fitted to {}", d.limit_state),
+        subtitle: format!("pseudo-acceleration at 5% damping; fitted over {}–{} s", sig(a, 3), sig(b, 3)),
+        y_label: "PSA, Se (g)".into(),
+        curves,
+        band: Some(band),
+        range: Some((a, b)),
+    };
+    Ok(scalable(spectra_svg(&figure)?, (1000, 680)))
+}
+
+fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64) -> anyhow::Result<String> {
+    let mut scan: Vec<(f64, f64)> = d.scan.iter().map(|p| (p.lambda, p.combined)).collect();
+    scan.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let top = scan.last().map_or(1.0, |p| p.0);
+    let mut markers = Vec::new();
+    if let Some((lo, hi)) = d.bracket {
+        let at = |l: f64| d.scan.iter().find(|p| (p.lambda - l).abs() < 1e-12).map_or(d_ls, |p| p.combined);
+        markers.push(Marker {
+            label: format!("holds at λ = {}", sig(lo, 4)),
+            at: (lo, at(lo)),
+            fails: false,
+        });
+        markers.push(Marker {
+            label: format!("fails at λ = {}", sig(hi, 4)),
+            at: (hi, at(hi)),
+            fails: true,
+        });
+    }
+    let chart = LineChart {
+        title: format!("{}: the set's response against λ", d.limit_state),
+        subtitle: "every record at λ times its fitted scale; overturning counted as d0".into(),
+        x_label: "λ (multiplier of the fitted scales)".into(),
+        y_label: "response d* (m)".into(),
+        curves: vec![
+            Curve {
+                label: Some(match d.fitted.rule {
+                    rocking_codes::SetRule::Mean => "mean response of the set".into(),
+                    rocking_codes::SetRule::Largest => "largest response of the set".into(),
+                }),
+                ink: Ink::Mean,
+                width: 2,
+                dashed: false,
+                points: scan,
+            },
+            Curve {
+                label: Some(format!("d_{} = {} m", d.limit_state, sig(d_ls, 3))),
+                ink: Ink::Target,
+                width: 2,
+                dashed: true,
+                points: vec![(0.0, d_ls), (top, d_ls)],
+            },
+            Curve {
+                label: Some(format!("d0 = {} m", sig(d0, 3))),
+                ink: Ink::Series { index: 2, of: 7 },
+                width: 1,
+                dashed: true,
+                points: vec![(0.0, d0), (top, d0)],
+            },
+        ],
+        markers,
+    };
+    Ok(scalable(chart_svg(&chart)?, (1000, 620)))
+}
+
+fn site_rows(out: &mut String, input: &AssessmentInput) {
+    let ntc = input.site.is_ntc();
+    if ntc {
+        let _ = writeln!(out, "<table><tr><th>limit state</th><th>a<sub>g</sub> (g)</th><th>F<sub>0</sub></th><th>T<sub>C</sub>* (s)</th><th>S<sub>S</sub></th><th>S<sub>T</sub></th><th>S</th><th>C<sub>C</sub></th><th>T<sub>B</sub> (s)</th><th>T<sub>C</sub> (s)</th><th>T<sub>D</sub> (s)</th></tr>");
+    } else {
+        let _ = writeln!(out, "<table><tr><th>limit state</th><th>a<sub>g</sub> (g)</th><th>S</th><th>T<sub>B</sub> (s)</th><th>T<sub>C</sub> (s)</th><th>T<sub>D</sub> (s)</th></tr>");
+    }
+    for role in Role::ALL {
+        let n = |x: f64| format!("<td class=\"n\">{}</td>", sig(x, 4));
+        let cells = match input.site.spectrum(role) {
+            CodeSpectrum::Ntc(s) => [
+                s.site().ag,
+                s.site().f0,
+                s.site().tc_star,
+                s.ss(),
+                s.st(),
+                s.s(),
+                s.cc(),
+                s.tb(),
+                s.tc(),
+                s.td(),
+            ]
+            .map(n)
+            .join(""),
+            CodeSpectrum::Ec8(s) => {
+                let p = s.parameters();
+                [s.ag(), p.s, p.tb, p.tc, p.td].map(n).join("")
+            }
+        };
+        let _ = writeln!(out, "<tr><td>{}</td>{cells}</tr>", input.site.limit_state(role));
+    }
+    let _ = writeln!(out, "</table>");
+}
+
+/// The page.
+pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check], dynamic: Option<(&RecordSet, &[DynamicCheck])>) -> anyhow::Result<String> {
+    let mut out = String::new();
+    let name = esc(input.name());
+    let code = if input.site.is_ntc() {
+        "NTC 2018 and the Circolare 21 gennaio 2019 n. 7 (§C8.7.1.2.1)"
+    } else {
+        "EN 1998-1 spectra, EN 1998-3 limit states, the Circolare's checks"
+    };
+    let _ = writeln!(
+        out,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Assessment: {name}</title><style>{STYLE}</style></head><body>"
+    );
+    let _ = writeln!(out, "<h1>Assessment of {name}: the tower's local mechanism to {code}</h1>");
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">Made by rocking {} from <code>{}</code>. The tower is one rigid block overturning about a base corner at its springing level; the building under it is rigid, so that the springing level moves with the ground when the building does not slide (the floor spectrum of an elastic church is not modelled).</p>",
+        env!("CARGO_PKG_VERSION"),
+        esc(&input.origin().display().to_string())
+    );
+    let mut all: Vec<Check> = checks.to_vec();
+    if let Some((_, d)) = dynamic {
+        all.extend(d.iter().filter_map(|c| c.check));
+    }
+    if let Some(g) = governing(&all) {
+        let _ = writeln!(
+            out,
+            "<p><b>Governing check: {} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
+            g.limit_state,
+            g.method.as_str().replace('_', " "),
+            if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+            sig(g.zeta_e, 3),
+            verdict(g)
+        );
+    }
+
+    let _ = writeln!(out, "<h2>1. The tower and its capacity</h2>");
+    let b = capacity.radius * capacity.alpha.sin();
+    let h = capacity.radius * capacity.alpha.cos();
+    let rows = [
+        (
+            "b, h",
+            "corner to centre of mass, horizontal and vertical".to_string(),
+            format!("{} m, {} m", sig(b, 4), sig(h, 4)),
+        ),
+        (
+            "α = atan(b/h), R",
+            "slenderness, distance to the centre of mass".into(),
+            format!("{} rad, {} m", sig(capacity.alpha, 4), sig(capacity.radius, 4)),
+        ),
+        ("α<sub>0</sub> = b/h", "activation multiplier (§C8.7.1.2.1.3)".into(), sig(capacity.alpha0, 4)),
+        (
+            "e*, M*",
+            "one rigid body: e* = 1, M* = m".into(),
+            format!("{}, {} kg", capacity.e_star, sig(capacity.m_star, 4)),
+        ),
+        ("FC", "confidence factor".into(), capacity.confidence_factor.to_string()),
+        (
+            "a<sub>0</sub>* = α<sub>0</sub> g / (e* FC)",
+            "spectral acceleration of activation (eq. C8.7.1.8)".into(),
+            format!("{} m/s²", sig(capacity.a0_star, 4)),
+        ),
+        (
+            "d<sub>0</sub> = R sin α",
+            "displacement at which a* vanishes".into(),
+            format!("{} m", sig(capacity.d0, 4)),
+        ),
+        (
+            "d<sub>SLV</sub> = 0.4 d<sub>0</sub>, d<sub>SLC</sub> = 0.6 d<sub>0</sub>",
+            "ultimate displacements (§C8.7.1.2.1.6)".into(),
+            format!("{} m, {} m", sig(capacity.d_slv, 4), sig(capacity.d_slc, 4)),
+        ),
+        (
+            "T<sub>SLV</sub> = 1.68π √(d<sub>SLV</sub>/a*(d<sub>SLV</sub>))",
+            "secant period at life safety".into(),
+            format!("{} s", sig(capacity.t_slv, 4)),
+        ),
+        (
+            "T<sub>SLC</sub> = 1.56π √(d<sub>SLC</sub>/a*(d<sub>SLC</sub>))",
+            "secant period at collapse".into(),
+            format!("{} s", sig(capacity.t_slc, 4)),
+        ),
+    ];
+    let _ = writeln!(out, "<table><tr><th>quantity</th><th>meaning</th><th>value</th></tr>");
+    for (q, m, v) in rows {
+        let _ = writeln!(out, "<tr><td>{q}</td><td>{m}</td><td class=\"n\">{v}</td></tr>");
+    }
+    let _ = writeln!(out, "</table>");
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">Capacity curve: {}.</p>",
+        match capacity.curve {
+            rocking_assess::CurveKind::Linear => "linear, a*(d) = a<sub>0</sub>* (1 − d/d<sub>0</sub>)",
+            rocking_assess::CurveKind::Exact => "exact, a*(θ) = g tan(α − θ)/FC, d*(θ) = R (sin α − sin(α − θ))",
+        }
+    );
+
+    let _ = writeln!(out, "<h2>2. The site</h2>");
+    let _ = writeln!(
+        out,
+        "<p>Soil {}; spectra at 5% damping. Each check moves a<sub>g</sub> with every site parameter that depends on it (S<sub>S</sub>, T<sub>D</sub>) and takes the <em>least</em> a<sub>g</sub> at which it stops holding: the demand need not grow with a<sub>g</sub>.</p>",
+        input.file.site.soil
+    );
+    site_rows(&mut out, input);
+
+    let _ = writeln!(out, "<h2>3. The checks</h2>");
+    let _ = writeln!(out, "<table><tr><th>LS</th><th>method</th><th>stops holding when</th><th>demand at a<sub>g</sub></th><th>capacity</th><th>a<sub>g</sub> (g)</th><th>a<sub>g,capacity</sub> (g)</th><th>ζ<sub>E</sub></th><th>verdict</th></tr>");
+    for c in &all {
+        check_row(&mut out, c, input.file.q);
+    }
+    if let Some((_, d)) = dynamic {
+        for c in d.iter().filter(|c| c.check.is_none()) {
+            let _ = writeln!(
+                out,
+                "<tr><td>{}</td><td>nonlinear dynamic</td><td colspan=\"7\" class=\"fails\">could not be completed: {}</td></tr>",
+                c.limit_state,
+                esc(c.error.as_deref().unwrap_or("a record failed"))
+            );
+        }
+    }
+    let _ = writeln!(out, "</table>");
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">ζ<sub>E</sub> = a<sub>g,capacity</sub> / a<sub>g</sub>; a check holds when ζ<sub>E</sub> ≥ 1. The non-linear kinematic capacity is not taken below the activation's. “≥” marks a capacity beyond the search (2 g, or the last λ).</p>"
+    );
+    let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(capacity, checks)?);
+
+    if let Some((set, dynamic)) = dynamic {
+        let _ = writeln!(out, "<h2>4. The non-linear dynamic checks</h2>");
+        let _ = writeln!(
+            out,
+            "<p>{} records, each fitted to the limit state's spectrum by its own scale (the least squares of the log spectra over {}–{} s), run through the full model{} for its duration plus {} s. The response of a record is its largest d*(θ) = R (sin α − sin(α − |θ|)).</p>",
+            set.records.len(),
+            sig(set.range.0, 3),
+            sig(set.range.1, 3),
+            if input.model().building().is_some() { " (the tower, and the church sliding on its foundation)" } else { "" },
+            input.file.free_after
+        );
+        for d in dynamic {
+            let d_ls = if d.limit_state == input.site.limit_state(Role::LifeSafety) {
+                capacity.d_slv
+            } else {
+                capacity.d_slc
+            };
+            let c = &d.fitted.compatibility;
+            let _ = writeln!(out, "<h3>{}</h3>", d.limit_state);
+            let _ = writeln!(
+                out,
+                "<p>Mean of the scaled set over the code spectrum, over the fitting range: {} to {} ({} the code's {}–{}).</p>",
+                sig(c.least_ratio, 3),
+                sig(c.greatest_ratio, 3),
+                if c.holds { "within" } else { "<span class=\"fails\">outside</span>" },
+                COMPATIBILITY_LOWER,
+                COMPATIBILITY_UPPER
+            );
+            let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
+            let _ = writeln!(
+                out,
+                "<table><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th><th>max slip of the building (m)</th><th>error</th></tr>"
+            );
+            for ((r, s), resp) in set.records.iter().zip(&d.fitted.scales).zip(&d.at_one.responses) {
+                let (dm, ov, slip, err) = match resp {
+                    Ok(x) => (
+                        x.max_displacement.map_or("—".into(), |v| sig(v, 4)),
+                        x.overturned.to_string(),
+                        x.max_slip.map_or("—".into(), |v| sig(v, 4)),
+                        String::new(),
+                    ),
+                    Err(e) => ("".into(), "".into(), "".into(), esc(e)),
+                };
+                let _ = writeln!(
+                    out,
+                    "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td><td class=\"n\">{slip}</td><td>{err}</td></tr>",
+                    esc(&r.path),
+                    sig(*s, 4)
+                );
+            }
+            let _ = writeln!(out, "</table>");
+            let _ = writeln!(out, "<figure>{}<figcaption>The response at each λ of the scan and of the bisection; the first λ at which the check fails is the one reported.</figcaption></figure>", lambda_figure(d, d_ls, capacity.d0)?);
+        }
+    }
+    let _ = writeln!(out, "</body></html>");
+    Ok(out)
+}

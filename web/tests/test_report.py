@@ -1,0 +1,49 @@
+"""`rocking assess`'s report.html in Chromium: the example's page opens with
+no page error and no console error, inlines its figures (no request leaves the
+page), and prints to A4 PDF with every figure short enough to fit one printed
+page and kept whole (break-inside: avoid). ROCKING_BIN is the command; the
+browser fixture is in conftest.py."""
+
+import subprocess
+from pathlib import Path
+
+from conftest import BIN, OUT, ROOT
+
+EXAMPLE = ROOT / "examples" / "sant-anna-cervino" / "assess.toml"
+# A4 is 297 mm tall; the page's @page margins are 14 mm: 269 mm printable, in CSS px (96 per inch).
+PRINTABLE_HEIGHT_PX = (297 - 2 * 14) / 25.4 * 96
+
+
+def test_the_report_opens_and_prints_to_a4(browser, tmp_path):
+    out = tmp_path / "assess"
+    run = subprocess.run([BIN, "assess", str(EXAMPLE), "--out", str(out)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    report = out / "report.html"
+    page = browser.new_page()
+    errors, requests = [], []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.on("request", lambda r: requests.append(r.url) if not r.url.startswith("file://") else None)
+    page.goto(report.as_uri())
+    page.wait_for_load_state("load")
+    assert errors == [], errors
+    assert requests == [], requests
+    # The capacity curve, and per dynamic check its spectra and its λ curve.
+    assert page.locator("figure svg").count() == 5
+    assert "Governing check" in page.inner_text("body")
+    page.emulate_media(media="print")
+    heights = page.eval_on_selector_all("figure", "fs => fs.map(f => f.getBoundingClientRect().height)")
+    assert heights and max(heights) < PRINTABLE_HEIGHT_PX, heights
+    breaks = page.eval_on_selector_all("figure", "fs => fs.map(f => getComputedStyle(f).breakInside)")
+    assert set(breaks) == {"avoid"}, breaks
+    OUT.mkdir(parents=True, exist_ok=True)
+    pdf = OUT / "report.pdf"
+    page.pdf(path=str(pdf), format="A4", print_background=True)
+    data = pdf.read_bytes()
+    assert data.startswith(b"%PDF")
+    assert data.count(b"/Type /Page") - data.count(b"/Type /Pages") >= 3
+    page.set_viewport_size({"width": 900, "height": 3600})
+    page.emulate_media(media="screen")
+    page.screenshot(path=str(OUT / "report.png"), full_page=False)
+    assert errors == [], errors
+    page.close()
