@@ -271,3 +271,27 @@ fn bad_input_is_refused() {
     let e = kinematic_checks(&cap, &site(Soil::B, SITE_B), 0.0).unwrap_err().to_string();
     assert!(e.starts_with("q: must be a finite number > 0"), "{e}");
 }
+
+/// Tower 1 on an EN 1998-1 site (type 1, ground B: S = 1.2, TC = 0.5 s,
+/// TD = 2 s, none moving with ag): every capacity is a closed form, and the
+/// linear check's is q times the activation's.
+#[test]
+fn tower_one_on_an_ec8_site() {
+    use rocking_codes::{Ec8Spectrum, Ec8Type};
+    let cap = tower(2.0, 6.0, 1.5e5, 1.35);
+    let ec8 = |ag| CodeSpectrum::Ec8(Ec8Spectrum::new(ag, Soil::B, Ec8Type::Type1, 5.0).unwrap());
+    let site = Site::new(ec8(0.06), ec8(0.15), ec8(0.20)).unwrap();
+    let checks = kinematic_checks(&cap, &site, 2.0).unwrap();
+    let a = 1.0 / 3.0 / 1.35;
+    assert_eq!(checks[0].limit_state.as_str(), "DL");
+    assert_relative_eq!(at(&checks[0]), a / 1.2, max_relative = TOL);
+    assert_relative_eq!(at(&checks[1]), 2.0 * a / 1.2, max_relative = TOL);
+    // T_SLV = 3.92 s and T_SLC = 5.45 s are beyond TD = 2 s: SDe is flat from TD
+    // to TE = 5 s at 2.5 ag S η TC TD g / 4π², above its value just past TE
+    // (0.025 in place of 1/4π²), so both demands are that plateau.
+    for (check, d, xi, ag) in [(&checks[2], 0.8, 8.0, 0.15), (&checks[3], 1.2, 10.0, 0.20)] {
+        let root = d * 4.0 * PI * PI / (2.5 * 1.2 * eta(xi) * 0.5 * 2.0 * G);
+        assert_relative_eq!(at(check), root, max_relative = TOL);
+        assert_relative_eq!(check.zeta_e, root / ag, max_relative = TOL);
+    }
+}
