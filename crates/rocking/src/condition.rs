@@ -28,36 +28,45 @@ pub(crate) enum Condition {
 
 pub(crate) const MAX_CONDITIONS: usize = 4;
 
-/// The conditions that can end `regime`, at most four.
+/// The conditions that can end `regime`, at most four, in the order in which
+/// they are applied when several hold at one instant (a jump of the input):
+/// the tower's first, unless [`slips_before_uplift`].
 pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], usize) {
+    let tower: &[Condition] = match (kernel.has_tower, regime.tower) {
+        (false, _) => &[],
+        (true, TowerRegime::Rest) => &[Condition::UpliftNegative, Condition::UpliftPositive],
+        (true, TowerRegime::Rocking(_)) => &[Condition::Overturn, Condition::Impact],
+    };
+    let building: &[Condition] = match (kernel.has_building, regime.building) {
+        (false, _) => &[],
+        (true, BuildingRegime::Stick) => &[Condition::SlipNegative, Condition::SlipPositive],
+        (true, BuildingRegime::Slip(_)) => &[Condition::SlipStop],
+    };
+    let order = if slips_before_uplift(kernel, regime) {
+        [building, tower]
+    } else {
+        [tower, building]
+    };
     let mut list = [Condition::Impact; MAX_CONDITIONS];
     let mut n = 0;
-    let mut push = |c| {
+    for &c in order.iter().flat_map(|part| part.iter()) {
         list[n] = c;
         n += 1;
-    };
-    if kernel.has_tower {
-        match regime.tower {
-            TowerRegime::Rest => {
-                push(Condition::UpliftNegative);
-                push(Condition::UpliftPositive);
-            }
-            TowerRegime::Rocking(_) => {
-                push(Condition::Overturn);
-                push(Condition::Impact);
-            }
-        }
-    }
-    if kernel.has_building {
-        match regime.building {
-            BuildingRegime::Stick => {
-                push(Condition::SlipNegative);
-                push(Condition::SlipPositive);
-            }
-            BuildingRegime::Slip(_) => push(Condition::SlipStop),
-        }
     }
     (list, n)
+}
+
+/// Whether a building that is stuck under a standing tower slips before the
+/// tower can lift, when a jump of the input makes both conditions hold at
+/// once: with the tower standing, both compare the pivot line's acceleration
+/// `|a_g|` with a threshold, `μs g_e` for the slip and `g_e tan α` for the
+/// uplift, and a jump passes the lower one first. So where `μs < tan α` the
+/// building slips first, and sliding it carries the tower at `μk g_e < g_e
+/// tan α`: the tower stays standing (a 1.5 g rectangular pulse under a
+/// building with μs = 0.2 lifted the tower first and reported an uplift and an
+/// impact at t = 0 while θ stayed 0).
+pub(crate) fn slips_before_uplift(kernel: &Kernel, regime: Regime) -> bool {
+    kernel.has_tower && kernel.has_building && regime.tower == TowerRegime::Rest && regime.building == BuildingRegime::Stick && kernel.mu_s < kernel.tan_alpha
 }
 
 /// `s = ±1` of a rocking tower (0 at rest).

@@ -1203,6 +1203,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// that is zero and growing (its time derivative positive).
     fn settle(&mut self) -> Result<(), Error> {
         while !self.finished {
+            if self.falls_back() {
+                self.set_down()?;
+                continue;
+            }
             let (list, n) = conditions(self.kernel, self.regime);
             let conditions = if list[..n].iter().all(|c| c.of_theta()) {
                 // Conditions on θ alone (a rocking tower on a fixed base): the
@@ -1274,20 +1278,69 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         holds_now(w.conditions[0])
     }
 
-    /// Performs the transition of `condition` at the current instant.
-    fn switch(&mut self, condition: Condition) -> Result<(), Error> {
+    /// Counts a regime switch at the current instant; beyond
+    /// [`MAX_SWITCHES_AT_ONE_INSTANT`] the run reports chattering, `last` the
+    /// name of the switch that went beyond.
+    fn count_switch(&mut self, last: &'static str) -> Result<(), Error> {
         if self.t.to_bits() == self.switch_time.to_bits() {
             self.switches += 1;
             if self.switches > MAX_SWITCHES_AT_ONE_INSTANT {
-                return Err(Error::Chattering {
-                    time: self.t,
-                    last: condition.name(),
-                });
+                return Err(Error::Chattering { time: self.t, last });
             }
         } else {
             self.switch_time = self.t;
             self.switches = 1;
         }
+        Ok(())
+    }
+
+    /// Whether the tower, rocking but still at `θ = 0` with `θ̇ = 0` (it has
+    /// just lifted), no longer meets the uplift condition of its pivot on the
+    /// building as it now moves: then it would be driven back across `θ = 0`,
+    /// about a corner into the building, and it stands instead. This happens
+    /// where the building starts to slide at the instant the tower lifts and,
+    /// sliding, carries it at less than `g tan α`. The condition is the one
+    /// that lifts a standing tower, evaluated as `settle` evaluates it, so
+    /// that lifting and setting down cannot both hold at one instant (at an
+    /// uplift located on the input, `θ̈` is zero to rounding).
+    fn falls_back(&self) -> bool {
+        let TowerRegime::Rocking(pivot) = self.regime.tower else { return false };
+        if self.y[0] != 0.0 || self.y[1] != 0.0 {
+            return false;
+        }
+        let lifts = match pivot {
+            Pivot::Negative => Condition::UpliftNegative,
+            Pivot::Positive => Condition::UpliftPositive,
+        };
+        let standing = Regime {
+            tower: TowerRegime::Rest,
+            ..self.regime
+        };
+        let w = watched(
+            self.kernel,
+            standing,
+            &self.segment.piece,
+            &self.vsegment.piece,
+            &[lifts],
+            self.t,
+            &self.y,
+            None,
+        );
+        !holds_now(w.conditions[0])
+    }
+
+    /// Puts a tower that [`Self::falls_back`] at rest: a rest event, no impact.
+    fn set_down(&mut self) -> Result<(), Error> {
+        self.count_switch("rest")?;
+        self.restart = true;
+        self.regime.tower = TowerRegime::Rest;
+        let at = self.y;
+        self.emit(EventKind::Rest, at)
+    }
+
+    /// Performs the transition of `condition` at the current instant.
+    fn switch(&mut self, condition: Condition) -> Result<(), Error> {
+        self.count_switch(condition.name())?;
         self.restart = true;
         let before = self.y;
         let a_g = self.a_g(self.t);
