@@ -6,6 +6,7 @@
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
 //! rocking assess ASSESS.toml [--out DIR]           # the checks of the code (Circolare 2019, EC8)
+//! rocking inventory TOWERS.csv --assess ASSESS.toml [--out DIR] [--threads N]   # every tower of a town, ranked by ζ_E
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! rocking spectrum RECORD... [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]   # response spectra
 //! rocking spectrum --site ASSESS.toml [--out DIR] [--plot]   # code spectra, the record set fitted
@@ -51,6 +52,8 @@ enum Command {
     Fragility(commands::fragility::Args),
     /// Assess a tower to the code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998): capacity, checks, ζ_E; writes assessment.json and capacity.csv.
     Assess(commands::assess::Args),
+    /// Assess every tower of a town (one row of a CSV each) with the kinematic checks; writes inventory.csv and inventory.geojson.
+    Inventory(commands::inventory::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),
     /// Response spectra of records, or the code spectra of an assessment file's site and its record set fitted to them.
@@ -76,6 +79,7 @@ fn main() -> ExitCode {
         Command::Keys(args) => commands::keys::execute(args),
         Command::Fragility(args) => commands::fragility::execute(args),
         Command::Assess(args) => commands::assess::execute(args),
+        Command::Inventory(args) => commands::inventory::execute(args),
         Command::Spectrum(args) => commands::spectrum::execute(args),
     };
     match result {

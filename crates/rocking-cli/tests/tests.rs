@@ -10,6 +10,7 @@ mod folder;
 mod fragility;
 mod guard;
 mod hardening;
+mod inventory;
 mod keys;
 mod regression_concurrent_runs;
 mod regression_interrupted_sweep;

@@ -4,6 +4,7 @@ pub mod assess;
 pub mod assess_report;
 pub mod check;
 pub mod fragility;
+pub mod inventory;
 pub mod keys;
 pub mod merge;
 pub mod rows;

@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
 /// Every file name this tool writes into an output folder.
-pub const KNOWN: [&str; 39] = [
+pub const KNOWN: [&str; 41] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -65,6 +65,8 @@ pub const KNOWN: [&str; 39] = [
     "capacity.csv",
     "records.csv",
     "report.html",
+    "inventory.csv",
+    "inventory.geojson",
 ];
 
 /// The prefix of a staging folder's name (the rest is drawn at random).

@@ -1,0 +1,213 @@
+//! `rocking inventory`: every row of inventory.csv is `rocking assess` of an
+//! assessment file written out by hand with that tower's values (the second
+//! route: the file's text, not the row's table), bit for bit; bad rows each get
+//! their own error while the others are still right; inventory.geojson read
+//! back by the `geojson` crate.
+
+use crate::util::{arg, read, rocking, root, tempdir, write};
+use std::path::Path;
+
+/// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
+fn base(grid: &Path) -> String {
+    format!(
+        "[tower]\nwidth = 4.5\nheight = 24.0\nmass = 4.0e5\n\n[site]\nsoil = \"B\"\ngrid = '{}'\nlon = 14.33\nlat = 41.07\nCU = 1.5\n\n[assessment]\nconfidence_factor = 1.35\n",
+        grid.display()
+    )
+}
+
+/// One tower's assessment file, written from its values as an engineer would.
+fn tower_file(grid: &Path, width: f64, height: f64, mass: f64, soil: &str, lon: f64, lat: f64) -> String {
+    format!(
+        "[tower]\nwidth = {width:?}\nheight = {height:?}\nmass = {mass:?}\n\n[site]\nsoil = \"{soil}\"\ngrid = '{}'\nlon = {lon:?}\nlat = {lat:?}\nCU = 1.5\n\n[assessment]\nconfidence_factor = 1.35\n",
+        grid.display()
+    )
+}
+
+/// `rocking assess` of `text`: each check's (column prefix, ag capacity, ζ_E), and the governing (ζ_E, check).
+fn assess(dir: &Path, name: &str, text: &str) -> (Vec<(String, f64, f64)>, f64, String) {
+    let file = write(dir, &format!("{name}.toml"), text);
+    let out = dir.join(format!("out-{name}"));
+    let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let json: serde_json::Value = serde_json::from_str(&read(&out.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
+    let num = |v: &serde_json::Value| v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"));
+    let checks = json["checks"]
+        .as_array()
+        .unwrap_or_else(|| panic!("no checks"))
+        .iter()
+        .map(|c| {
+            let prefix = format!("{}_{}", c["limit_state"].as_str().unwrap_or(""), c["method"].as_str().unwrap_or(""));
+            (prefix, num(&c["ag_capacity_g"]), num(&c["zeta_E"]))
+        })
+        .collect();
+    let g = &json["governing"];
+    let governing = format!("{} {}", g["limit_state"].as_str().unwrap_or(""), g["method"].as_str().unwrap_or(""));
+    (checks, num(&g["zeta_E"]), governing)
+}
+
+/// inventory.csv as (header, rows).
+fn inventory_csv(out: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut reader = csv::Reader::from_path(out.join("inventory.csv")).unwrap_or_else(|e| panic!("{e}"));
+    let header = reader.headers().unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
+    let rows = reader
+        .records()
+        .map(|r| r.unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+fn cell<'a>(header: &[String], row: &'a [String], name: &str) -> &'a str {
+    let i = header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
+    &row[i]
+}
+
+fn number(text: &str) -> f64 {
+    text.parse().unwrap_or_else(|_| panic!("not a number: {text:?}"))
+}
+
+/// The row's numbers are `rocking assess`'s, to the bit: the same functions on the same values.
+fn assert_row_is_assess(header: &[String], row: &[String], expected: &(Vec<(String, f64, f64)>, f64, String)) {
+    let (checks, zeta, governing) = expected;
+    assert_eq!(checks.len(), 4);
+    for (prefix, ag, z) in checks {
+        assert_eq!(
+            number(cell(header, row, &format!("{prefix}_ag_capacity_g"))).to_bits(),
+            ag.to_bits(),
+            "{prefix} of {row:?}"
+        );
+        assert_eq!(
+            number(cell(header, row, &format!("{prefix}_zeta_E"))).to_bits(),
+            z.to_bits(),
+            "{prefix} of {row:?}"
+        );
+    }
+    assert_eq!(number(cell(header, row, "zeta_E")).to_bits(), zeta.to_bits());
+    assert_eq!(cell(header, row, "governing"), governing);
+    assert_eq!(cell(header, row, "error"), "");
+}
+
+#[test]
+fn every_tower_of_the_example_town_is_rocking_assess_of_it() {
+    let dir = tempdir();
+    let out = dir.path().join("out");
+    let r = rocking(&[
+        "inventory",
+        "examples/town/towers.csv",
+        "--assess",
+        "examples/town/assess.toml",
+        "--out",
+        arg(&out),
+    ]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let (header, rows) = inventory_csv(&out);
+    assert_eq!(rows.len(), 12);
+    let grid = root().join("data/hazard/synthetic_grid.txt");
+    let towers = read(&root().join("examples/town/towers.csv"));
+    let mut given = csv::Reader::from_reader(towers.as_bytes());
+    let given_header: Vec<String> = given.headers().unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
+    for (input, row) in given.records().zip(&rows) {
+        let input: Vec<String> = input.unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
+        let get = |name: &str| cell(&given_header, &input, name).to_string();
+        // Input order, the identity as given.
+        assert_eq!(cell(&header, row, "id"), get("id"));
+        // The example's cells as an engineer would write each tower's file; empty cells are the town file's values.
+        let or = |name: &str, default: &str| Some(get(name)).filter(|v| !v.is_empty()).unwrap_or_else(|| default.to_string());
+        let mut text = tower_file(
+            &grid,
+            number(&get("tower.width")),
+            number(&get("tower.height")),
+            number(&get("tower.mass")),
+            &or("soil", "B"),
+            number(&get("lon")),
+            number(&get("lat")),
+        );
+        text = text.replace(
+            "confidence_factor = 1.35",
+            &format!("confidence_factor = {}", or("assessment.confidence_factor", "1.35")),
+        );
+        text = text.replace("[site]\n", &format!("[site]\ntopography = \"{}\"\n", or("topography", "T1")));
+        assert_row_is_assess(&header, row, &assess(dir.path(), &get("id"), &text));
+    }
+}
+
+#[test]
+fn each_bad_row_gets_its_own_error_and_the_others_are_right() {
+    let dir = tempdir();
+    let grid = root().join("data/hazard/synthetic_grid.txt");
+    let assess_file = write(dir.path(), "town.toml", &base(&grid));
+    let towers = write(
+        dir.path(),
+        "towers.csv",
+        "id,name,lon,lat,tower.width,tower.height,soil\n\
+         A,good,14.34,41.06,5.0,30.0,\n\
+         B,negative width,14.35,41.07,-4.0,30.0,\n\
+         C,outside the grid,13.90,41.07,5.0,30.0,\n\
+         D,not a number,14.36,41.08,5.0,tall,\n\
+         A,the same id,14.37,41.09,5.0,30.0,\n\
+         E,no lon,,41.09,5.0,30.0,\n\
+         F,good on C,14.41,41.10,4.0,20.0,C\n",
+    );
+    let out = dir.path().join("out");
+    let r = rocking(&["inventory", arg(&towers), "--assess", arg(&assess_file), "--out", arg(&out)]);
+    // Bad input: exit 1, one line per bad row on stderr, the files written all the same.
+    assert_eq!(r.code, Some(1), "{}", r.stderr);
+    let (header, rows) = inventory_csv(&out);
+    assert_eq!(rows.len(), 7);
+    let errors: Vec<&str> = rows.iter().map(|row| cell(&header, row, "error")).collect();
+    let expect = [
+        (1, "(id B), column tower.width (\"-4.0\"):", "-4"),
+        (2, "(id C), column lon (\"13.90\"):", "outside"),
+        (3, "(id D), column tower.height (\"tall\"):", "string"),
+        (4, "(id A), column id:", "the same id as row 1"),
+        (5, "(id E), column lon:", "missing"),
+    ];
+    for (i, column, what) in expect {
+        let e = errors[i];
+        assert!(e.contains(&format!("row {} {column}", i + 1)) && e.contains(what), "row {}: {e:?}", i + 1);
+        assert!(!e.contains('\n'), "one line: {e:?}");
+        assert!(r.stderr.contains(e), "{e:?} not on stderr: {}", r.stderr);
+        assert_eq!(cell(&header, &rows[i], "zeta_E"), "");
+    }
+    let good_a = assess(dir.path(), "a", &tower_file(&grid, 5.0, 30.0, 4.0e5, "B", 14.34, 41.06));
+    assert_row_is_assess(&header, &rows[0], &good_a);
+    let good_f = assess(dir.path(), "f", &tower_file(&grid, 4.0, 20.0, 4.0e5, "C", 14.41, 41.10));
+    assert_row_is_assess(&header, &rows[6], &good_f);
+}
+
+#[test]
+fn the_geojson_reads_back_as_points_with_the_csv_properties() {
+    let dir = tempdir();
+    let out = dir.path().join("out");
+    let r = rocking(&[
+        "inventory",
+        "examples/town/towers.csv",
+        "--assess",
+        "examples/town/assess.toml",
+        "--out",
+        arg(&out),
+    ]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let (header, rows) = inventory_csv(&out);
+    let parsed: geojson::GeoJson = read(&out.join("inventory.geojson")).parse().unwrap_or_else(|e| panic!("{e}"));
+    let geojson::GeoJson::FeatureCollection(collection) = parsed else {
+        panic!("not a FeatureCollection")
+    };
+    assert_eq!(collection.features.len(), rows.len());
+    for (feature, row) in collection.features.iter().zip(&rows) {
+        let Some(geojson::Value::Point(position)) = feature.geometry.as_ref().map(|g| &g.value) else {
+            panic!("not a point: {feature:?}")
+        };
+        // RFC 7946: longitude first, in degrees, the value written in towers.csv.
+        assert_eq!(position.len(), 2);
+        assert_eq!(position[0].to_bits(), number(cell(&header, row, "lon")).to_bits());
+        assert_eq!(position[1].to_bits(), number(cell(&header, row, "lat")).to_bits());
+        assert_eq!(feature.id, Some(geojson::feature::Id::String(cell(&header, row, "id").to_string())));
+        for name in header.iter().filter(|h| h.ends_with("_g") || h.ends_with("zeta_E")) {
+            let value = feature.property(name).and_then(|v| v.as_f64()).unwrap_or_else(|| panic!("no {name}"));
+            assert_eq!(value.to_bits(), number(cell(&header, row, name)).to_bits(), "{name}");
+        }
+        assert_eq!(feature.property("governing").and_then(|v| v.as_str()), Some(cell(&header, row, "governing")));
+        assert_eq!(feature.property("name").and_then(|v| v.as_str()), Some(cell(&header, row, "name")));
+        assert!(feature.property("error").is_some_and(|v| v.is_null()));
+    }
+}
