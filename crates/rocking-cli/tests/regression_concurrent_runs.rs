@@ -22,12 +22,7 @@ const PAIRS: usize = 50;
 
 /// What a folder holds: its names, sorted, and their contents (summary.json without its wall time).
 fn contents(dir: &Path) -> Vec<(String, String)> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()).unwrap_or_else(|e| panic!("{e}")))
-        .collect();
-    names.sort();
-    names
+    crate::folder::names(dir)
         .into_iter()
         .map(|name| {
             let text = read(&dir.join(&name));

@@ -71,12 +71,7 @@ fn interrupted_by(signal: &str) {
     assert!(stderr.starts_with("interrupted: wrote 0 of 4 cases"), "{signal}: {stderr}");
     assert_eq!(read(&out.join("sweep.csv")).lines().count(), 1);
     assert!(!partial.exists(), "{signal}: the staging folder is left");
-    let names: Vec<_> = std::fs::read_dir(&out)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .flatten()
-        .map(|e| e.file_name())
-        .collect();
-    assert_eq!(names, ["sweep.csv"], "{signal}");
+    assert_eq!(crate::folder::names(&out), ["sweep.csv"], "{signal}");
 }
 
 #[cfg(unix)]
