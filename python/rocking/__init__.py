@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, 
 from ._rocking import EVENT_COLUMNS as _EVENT_COLUMNS
 from ._rocking import HISTORY_COLUMNS as _HISTORY_COLUMNS
 from ._rocking import Scenario, __version__
+from ._rocking import assess_raw as _assess_raw
 from ._rocking import derived as _derived
 from ._rocking import fragility_raw as _fragility_raw
 from ._rocking import code_spectrum_raw as _code_spectrum_raw
@@ -44,7 +45,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["Fragility", "Result", "Scenario", "ScenarioLike", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
+__all__ = ["Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
@@ -264,6 +265,77 @@ def fragility(study: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threa
 
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _csv_columns(text: Optional[str]) -> Optional[Dict[str, "np.ndarray"]]:
+    """The columns of a CSV table: numbers as float64 arrays, others as object arrays (empty cells None)."""
+    if text is None:
+        return None
+    import csv
+    import io
+
+    import numpy as np
+
+    rows = list(csv.reader(io.StringIO(text)))
+    out: Dict[str, "np.ndarray"] = {}
+    for i, name in enumerate(rows[0]):
+        cells = [row[i] for row in rows[1:]]
+        try:
+            out[name] = np.array([float(c) for c in cells], dtype=np.float64)
+        except ValueError:
+            out[name] = np.array([c if c != "" else None for c in cells], dtype=object)
+    return out
+
+
+class Assessment:
+    """The outcome of :func:`assess`: what ``rocking assess`` writes.
+
+    Attributes:
+        json: ``assessment.json`` as a dict: ``capacity``, ``sites``, ``checks``
+            (each with ``limit_state``, ``method``, ``demand``, ``capacity``,
+            ``unit``, ``holds``, ``ag_capacity_g``, ``zeta_E``), ``governing``, ``dynamic``.
+        checks: ``json["checks"]``.
+        governing: ``json["governing"]``, the check of least ζ_E.
+        capacity: The columns of ``capacity.csv`` (``d_star_m``, ``a_star_m_s2``).
+        records: The columns of ``records.csv`` (with a record set, else None).
+        spectra: The columns of ``spectra.csv`` (with a record set, else None).
+    """
+
+    def __init__(self, raw: Mapping[str, Optional[str]]) -> None:
+        import json
+
+        self.json: Dict[str, Any] = json.loads(raw["assessment"] or "{}")
+        self.checks: List[Dict[str, Any]] = self.json["checks"]
+        self.governing: Optional[Dict[str, Any]] = self.json["governing"]
+        self.capacity = _csv_columns(raw["capacity"])
+        self.records = _csv_columns(raw["records"])
+        self.spectra = _csv_columns(raw["spectra"])
+
+    def __repr__(self) -> str:
+        g = self.governing
+        return f"<rocking.Assessment: {len(self.checks)} checks, governing {g['limit_state']} {g['method']} zeta_E={g['zeta_E']:.3g}>" if g else "<rocking.Assessment>"
+
+
+def assess(file: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threads: Optional[int] = None) -> Assessment:
+    """Assesses a tower to the code, as ``rocking assess`` does (Circolare 2019
+    §C8.7.1.2.1 with the NTC 2018 or EN 1998-1 spectra): the capacity, the
+    activation, linear and non-linear kinematic checks and, with a record set,
+    the non-linear dynamic checks (on all cores with the GIL released).
+
+    Args:
+        file: The path of an assessment file, or a dict with its keys (relative
+            paths of a dict resolve against the current directory).
+        threads: Worker threads of the dynamic checks (default: one per core).
+
+    Returns:
+        An :class:`Assessment`.
+
+    Raises:
+        FileNotFoundError: The file (or its grid, or a record) does not exist.
+        ValueError: A key is wrong (``file: key: what is wrong``).
+    """
+    raw = file if isinstance(file, Mapping) else os.fspath(file)
+    return Assessment(_assess_raw(raw, threads))
 
 
 def spectrum(

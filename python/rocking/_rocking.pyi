@@ -101,6 +101,13 @@ def fragility_raw(
     """
     ...
 
+def assess_raw(file: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads: Optional[int] = None) -> Dict[str, Optional[str]]:
+    """Assesses a tower to the code with the GIL released: ``{"assessment": JSON text, "capacity", "records", "spectra": CSV text or None}``; see ``rocking.assess``.
+
+    Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
+    """
+    ...
+
 def spectrum_raw(records: List[str], damping: float, periods: Tuple[float, float, int]) -> Dict[str, "np.ndarray"]:
     """Response spectra (g) of record files: ``{"period_s", <file name>...}``; see ``rocking.spectrum``.
 

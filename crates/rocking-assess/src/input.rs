@@ -55,6 +55,11 @@ impl AssessmentInput {
         Self::new(AssessmentFile::from_toml_str(text, origin)?)
     }
 
+    /// From the file's table (a Python dict gives one); `origin` names it in errors.
+    pub fn from_table(table: Table, origin: &Path) -> Result<Self, Error> {
+        Self::new(AssessmentFile::from_table(table, origin)?)
+    }
+
     /// Validates what the checks need of a parsed file.
     pub fn new(file: AssessmentFile) -> Result<Self, Error> {
         let origin = file.origin().to_path_buf();

@@ -32,6 +32,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod assess;
 mod capacity;
 mod check;
 mod dynamic;
@@ -42,6 +43,7 @@ mod outputs;
 mod search;
 mod site;
 
+pub use assess::Assessment;
 pub use capacity::{
     activation_acceleration, activation_multiplier, collapse_displacement, exact_acceleration_at, exact_capacity_curve, linear_capacity_curve,
     secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind, DEFAULT_CONFIDENCE_FACTOR,

@@ -11,6 +11,7 @@
 //! (bad input) or `RuntimeError` (a numerical failure) with the one-line
 //! message of the `rocking` command (`file: key: what is wrong`).
 
+mod assess;
 mod convert;
 mod error;
 mod fragility;
@@ -36,6 +37,7 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_file_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(fragility::fragility_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(assess::assess_raw, m)?)?;
     m.add_function(wrap_pyfunction!(spectra::spectrum_raw, m)?)?;
     m.add_function(wrap_pyfunction!(spectra::code_spectrum_raw, m)?)?;
     Ok(())

@@ -7,7 +7,7 @@
 use crate::format::sig;
 use crate::output;
 use anyhow::Context;
-use rocking_assess::{assessment_json, capacity_csv, dynamic_check, governing, records_csv, spectra_csv, AssessmentInput, Check, RecordSet, Role};
+use rocking_assess::{Assessment, AssessmentInput, Check};
 use std::path::PathBuf;
 
 /// The verdict: capacity, sites, checks, governing check.
@@ -69,9 +69,8 @@ fn assess(args: &Args) -> anyhow::Result<()> {
     // The file's errors already name the file, the key and the cause.
     let file = AssessmentInput::from_toml_str(&text, &args.assessment)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.assessment));
-    let dynamic = !file.file.records.is_empty();
     let mut names = vec![ASSESSMENT_JSON, CAPACITY_CSV, REPORT_HTML];
-    if dynamic {
+    if !file.file.records.is_empty() {
         names.extend([RECORDS_CSV, SPECTRA_CSV]);
     }
     let outputs: Vec<PathBuf> = names.iter().map(|f| dir.join(f)).collect();
@@ -80,34 +79,16 @@ fn assess(args: &Args) -> anyhow::Result<()> {
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
     let staging = output::Staging::new(&dir, &inputs)?;
 
-    let capacity = file.capacity()?;
-    let checks = file.kinematic_checks(&capacity)?;
-    let (set, dynamic_checks) = if dynamic {
-        let set = RecordSet::read(&file, capacity.t_slc)?;
-        let d = [Role::LifeSafety, Role::Collapse]
-            .into_iter()
-            .map(|role| dynamic_check(&file, &set, &capacity, role))
-            .collect::<Result<Vec<_>, _>>()?;
-        (Some(set), d)
-    } else {
-        (None, Vec::new())
-    };
-    let json = assessment_json(
-        file.name(),
-        &capacity,
-        &file.site,
-        &checks,
-        set.as_ref().map(|s| (s, dynamic_checks.as_slice())),
-    );
+    let done = Assessment::run(&file)?;
+    let (capacity, checks) = (&done.capacity, &done.checks);
     let write = |name: &str, text: String| std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()));
-    output::write_summary(&staging.path(ASSESSMENT_JSON), &dir.join(ASSESSMENT_JSON), &json)?;
-    write(CAPACITY_CSV, capacity_csv(&capacity))?;
-    if let Some(set) = &set {
-        write(RECORDS_CSV, records_csv(set, &dynamic_checks))?;
-        write(SPECTRA_CSV, spectra_csv(set, &dynamic_checks))?;
+    output::write_summary(&staging.path(ASSESSMENT_JSON), &dir.join(ASSESSMENT_JSON), &done.json(&file))?;
+    write(CAPACITY_CSV, done.capacity_csv())?;
+    if let Some((records, spectra)) = done.set_csvs() {
+        write(RECORDS_CSV, records)?;
+        write(SPECTRA_CSV, spectra)?;
     }
-    let page = super::assess_report::report_html(&file, &capacity, &checks, set.as_ref().map(|s| (s, dynamic_checks.as_slice())))?;
-    write(REPORT_HTML, page)?;
+    write(REPORT_HTML, super::assess_report::report_html(&file, capacity, checks, done.dynamic_part())?)?;
     staging.commit()?;
 
     let mut lines = vec![format!(
@@ -122,13 +103,9 @@ fn assess(args: &Args) -> anyhow::Result<()> {
         capacity.curve
     )];
     lines.extend(checks.iter().map(check_line));
-    let mut all = checks.clone();
-    for d in &dynamic_checks {
+    for d in &done.dynamic {
         match &d.check {
-            Some(c) => {
-                lines.push(check_line(c));
-                all.push(*c);
-            }
+            Some(c) => lines.push(check_line(c)),
             None => lines.push(format!(
                 "  {:4} {:20} could not be completed: {}",
                 d.limit_state.as_str(),
@@ -137,7 +114,7 @@ fn assess(args: &Args) -> anyhow::Result<()> {
             )),
         }
     }
-    if let Some(g) = governing(&all) {
+    if let Some(g) = done.governing() {
         lines.push(format!("governing: {} {}, ζ_E = {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
     }
     lines.push(format!(
