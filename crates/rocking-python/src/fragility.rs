@@ -4,7 +4,7 @@
 
 use crate::convert::table_of;
 use crate::error::scenario_error;
-use crate::sweep::{column, gather, thread_count};
+use crate::sweep::{column, gather, interruptible, thread_count};
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -43,7 +43,8 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
     }
 
     let states = study.limit_states();
-    let fits = tally.fits();
+    // Ctrl-C during the fits raises KeyboardInterrupt as it does during the cases.
+    let fits = interruptible(py, |cancel| tally.fits_until(cancel))?;
     let text = |py: Python<'py>, items: Vec<String>| -> Bound<'py, PyAny> {
         let objects: Vec<Py<PyAny>> = items.iter().map(|s| PyString::new(py, s).into_any().unbind()).collect();
         PyArray1::from_vec(py, objects).into_any()

@@ -144,23 +144,39 @@ pub(crate) fn gather(
     run: impl FnOnce(&AtomicBool, &mut (dyn FnMut(Row) -> PyResult<()> + Send)) -> Result<Finished, RunError<PyErr>> + Send,
 ) -> PyResult<Vec<Vec<Cell>>> {
     let mut columns: Vec<Vec<Cell>> = (0..width).map(|_| Vec::new()).collect();
+    let finished = interruptible(py, |cancel| {
+        run(cancel, &mut |row: Row| {
+            each(&row);
+            for (column, cell) in columns.iter_mut().zip(row.cells) {
+                column
+                    .try_reserve(1)
+                    .map_err(|e| PyMemoryError::new_err(format!("{}: {e}", origin.display())))?;
+                column.push(cell);
+            }
+            Ok(())
+        })
+    })?;
+    match finished {
+        Ok(_) => Ok(columns),
+        Err(RunError::Stopped(e)) => Err(e),
+        Err(e) => Err(PyRuntimeError::new_err(format!("{}: {e}", origin.display()))),
+    }
+}
+
+/// Runs `work` with the GIL released on a thread of its own while the calling
+/// thread looks for Ctrl-C every `SIGNAL_CHECK`. Ctrl-C sets the flag `work`
+/// is given (which must then end soon: the cases stop at their next event, a
+/// fit at its next evaluation) and its `KeyboardInterrupt` is returned once
+/// `work` has ended.
+pub(crate) fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send) -> PyResult<T> {
     let cancel = AtomicBool::new(false);
-    let (finished, interrupt) = py.detach(|| {
+    let (value, interrupt) = py.detach(|| {
         std::thread::scope(|scope| {
-            // Dropped when the cases end: the wait below then ends at once.
+            // Dropped when the work ends: the wait below then ends at once.
             let (done, ended) = mpsc::channel::<()>();
-            let cases = scope.spawn(|| {
+            let worker = scope.spawn(|| {
                 let _done = done;
-                run(&cancel, &mut |row: Row| {
-                    each(&row);
-                    for (column, cell) in columns.iter_mut().zip(row.cells) {
-                        column
-                            .try_reserve(1)
-                            .map_err(|e| PyMemoryError::new_err(format!("{}: {e}", origin.display())))?;
-                        column.push(cell);
-                    }
-                    Ok(())
-                })
+                work(&cancel)
             });
             let mut interrupt = None;
             while let Err(mpsc::RecvTimeoutError::Timeout) = ended.recv_timeout(SIGNAL_CHECK) {
@@ -170,17 +186,13 @@ pub(crate) fn gather(
                     cancel.store(true, Ordering::Relaxed);
                 }
             }
-            let finished = cases.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-            (finished, interrupt)
+            let value = worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            (value, interrupt)
         })
     });
-    if let Some(e) = interrupt {
-        return Err(e);
-    }
-    match finished {
-        Ok(_) => Ok(columns),
-        Err(RunError::Stopped(e)) => Err(e),
-        Err(e) => Err(PyRuntimeError::new_err(format!("{}: {e}", origin.display()))),
+    match interrupt {
+        Some(e) => Err(e),
+        None => Ok(value),
     }
 }
 
