@@ -191,8 +191,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         Number,
         "",
         "1.35",
-        "> 0",
-        "Confidence factor FC, dividing the capacity's accelerations (LC1: 1.35).",
+        "> 0; >= 1 for rocking assess",
+        "Confidence factor FC, dividing the capacity's accelerations (LC1: 1.35, LC2: 1.2, LC3: 1).",
         "1.35",
     ),
     key(
