@@ -50,7 +50,7 @@ enum Command {
     Merge(commands::merge::Args),
     /// Run a fragility study: a suite of records scaled to levels of an intensity measure; stripes, fitted fragility curves.
     Fragility(commands::fragility::Args),
-    /// Assess a tower to the code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998): capacity, checks, ζ_E; writes assessment.json and capacity.csv.
+    /// Assess a tower to the code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998): capacity, checks, ζ_E; writes assessment.json, capacity.csv, records.csv and spectra.csv with a record set, and report.html.
     Assess(commands::assess::Args),
     /// Assess every tower of a town (one row of a CSV each) with the kinematic checks; writes inventory.csv and inventory.geojson.
     Inventory(commands::inventory::Args),
