@@ -47,6 +47,7 @@ pub mod reference;
 mod regime;
 mod response;
 mod simulate;
+pub mod stack;
 mod trig;
 
 pub use body::{Building, MassInput, NormalForce, Section, Tower, TowerGeometry};

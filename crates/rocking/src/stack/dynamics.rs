@@ -1,0 +1,246 @@
+//! The stack's equations of motion in Kane's form, the friction a sticking
+//! building needs, and the loads each interface carries.
+//!
+//! For every coordinate `q_a` of the regime (Lagrange's equations written as
+//! Kane's: the virtual work of the inertia and gravity forces along each
+//! coordinate equals that of the applied ones), summed over the building
+//! (mass `m1`, no rotation, `∂/∂u = e_x`) and the blocks:
+//!
+//! ```text
+//! Σ_i m_i (∂G_i/∂q_a) · (G̈_i + g_e e_y) + Σ_i J_i (∂φ_i/∂q_a) φ̈_i = Q_a
+//! ```
+//!
+//! with absolute accelerations `G̈_i = Ẍ_p e_x + Σ_b (∂G_i/∂q_b) q̈_b + c_i`
+//! (`c_i` the velocity-squared part, [`Pose::point_quadratic`]),
+//! `φ̈_i = Σ_b (∂φ_i/∂q_b) q̈_b`, `Q_u = F` the foundation's friction and
+//! `Q_θ = 0`. In matrix form `M q̈ = f + F e_u` with
+//!
+//! ```text
+//! M_ab = Σ_i m_i (∂G_i/∂q_a)·(∂G_i/∂q_b) + Σ_i J_i (∂φ_i/∂q_a)(∂φ_i/∂q_b)
+//! f_a  = −Σ_i m_i (∂G_i/∂q_a) · (a_g e_x + c_i + g_e e_y)
+//! ```
+//!
+//! The normal force on the foundation is `N = g_e Σ m` ("constant") or
+//! `N = Σ m_i (g_e + ÿ_i)` ("dynamic"); while the building slips,
+//! `F = −μk σ N`, and the dynamic `N`'s `q̈` terms move to the left-hand side:
+//! still one linear system, solved directly. For one block this is (T)–(B).
+//!
+//! While the building sticks, the friction it needs is the horizontal
+//! momentum rate of everything on it, `F_req = m1 a_g + Σ_i m_i Ẍ_i`.
+
+use super::geometry::{cross, dot, scale, sub, Coordinate, Coordinates, Pose, Vec2, MAX_COORDINATES};
+use super::linalg::{solve, Matrix};
+use super::{Stack, StackRegime, StackState, MAX_BLOCKS};
+use crate::body::NormalForce;
+use crate::regime::BuildingRegime;
+
+/// The kinematics of one instant in one set of coordinates: the pose, and for
+/// each block `∂G_i/∂q`, `∂φ_i/∂q` and the velocity-squared part of `G̈_i`.
+#[derive(Debug, Clone)]
+pub struct Frame {
+    /// The coordinates.
+    pub coords: Coordinates,
+    /// Where the blocks are.
+    pub pose: Pose,
+    pub(crate) jac: [[Vec2; MAX_COORDINATES]; MAX_BLOCKS],
+    pub(crate) rot: [[f64; MAX_COORDINATES]; MAX_BLOCKS],
+    pub(crate) quad: [Vec2; MAX_BLOCKS],
+}
+
+impl Frame {
+    /// The frame of `pose` in `coords`.
+    pub fn new(coords: Coordinates, pose: Pose) -> Self {
+        let mut jac = [[[0.0; 2]; MAX_COORDINATES]; MAX_BLOCKS];
+        let mut rot = [[0.0; MAX_COORDINATES]; MAX_BLOCKS];
+        let mut quad = [[0.0; 2]; MAX_BLOCKS];
+        for i in 0..pose.len() {
+            let g = pose.centre(i);
+            for (a, &c) in coords.list().iter().enumerate() {
+                jac[i][a] = pose.point_jacobian(i, g, c);
+                rot[i][a] = pose.rotation_jacobian(i, c);
+            }
+            quad[i] = pose.point_quadratic(i, g);
+        }
+        Self { coords, pose, jac, rot, quad }
+    }
+}
+
+/// The state of motion at one instant: the accelerations of the regime's
+/// coordinates and of every body.
+#[derive(Debug, Clone)]
+pub struct Snapshot {
+    /// The kinematics.
+    pub frame: Frame,
+    /// `θ̈_k` (rad/s², 0 for a stuck interface) at index `k − 1`.
+    pub theta_ddot: [f64; MAX_BLOCKS],
+    /// `ü` (m/s², 0 while the building sticks).
+    pub slip_acc: f64,
+    /// `G̈_i`, absolute (with the ground's `a_g`).
+    pub centre_acc: [Vec2; MAX_BLOCKS],
+    /// `φ̈_i`.
+    pub rotation_acc: [f64; MAX_BLOCKS],
+    /// The ground's acceleration `a_g` (m/s²).
+    pub a_g: f64,
+    /// The effective gravity `g_e` (m/s²).
+    pub g_e: f64,
+}
+
+/// What the blocks `k … N` need from the block below (the building for
+/// `k = 1`): the resultant force split along that block's base and normal to
+/// it, and the counter-clockwise moment about `C_k`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceLoad {
+    /// Component along the supporting surface `R(φ_{k−1}) e_x` (N).
+    pub tangential: f64,
+    /// Component normal to it, `R(φ_{k−1}) e_y` (N); the resultant of `V_k`
+    /// and `T_k` on the surface's normal, equal to `V_k` on an upright block.
+    pub normal: f64,
+    /// `M_k` (N·m), counter-clockwise positive.
+    pub moment: f64,
+}
+
+impl Stack {
+    /// Mass matrix and forces `M q̈ = f` of Kane's equations for `frame`,
+    /// including the foundation's kinetic friction when `coords` has the slip
+    /// (`sigma` its direction).
+    pub(crate) fn kane_system(&self, frame: &Frame, sigma: f64, a_g: f64, g_e: f64) -> (Matrix, [f64; MAX_COORDINATES]) {
+        let coords = frame.coords.list();
+        let n = coords.len();
+        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
+        let mut f = [0.0; MAX_COORDINATES];
+        let m1 = self.building_mass();
+        for (i, block) in self.blocks.iter().enumerate() {
+            let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
+            for a in 0..n {
+                for b in a..n {
+                    m[a][b] += block.mass * dot(frame.jac[i][a], frame.jac[i][b]) + block.inertia_centre * frame.rot[i][a] * frame.rot[i][b];
+                }
+                f[a] -= block.mass * dot(frame.jac[i][a], load);
+            }
+        }
+        for a in 0..n {
+            for b in 0..a {
+                m[a][b] = m[b][a];
+            }
+        }
+        if let Some(u) = frame.coords.index(Coordinate::Slip) {
+            m[u][u] += m1;
+            f[u] -= m1 * a_g;
+            let friction = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
+            let weight = g_e * self.total_mass();
+            if self.dynamic_normal_force() {
+                let mut rest = weight;
+                for (i, block) in self.blocks.iter().enumerate() {
+                    rest += block.mass * frame.quad[i][1];
+                    for b in 0..n {
+                        m[u][b] += friction * block.mass * frame.jac[i][b][1];
+                    }
+                }
+                f[u] -= friction * rest;
+            } else {
+                f[u] -= friction * weight;
+            }
+        }
+        (m, f)
+    }
+
+    pub(crate) fn dynamic_normal_force(&self) -> bool {
+        self.building.is_some_and(|b| b.normal_force() == NormalForce::Dynamic)
+    }
+
+    /// Everything about the motion at one instant: `q̈` from Kane's equations
+    /// of `regime` (NaN where the system has no solution: Painlevé's paradox
+    /// of the dynamic normal force, a light building under high friction),
+    /// and the bodies' accelerations.
+    pub fn snapshot(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> Snapshot {
+        let coords = Coordinates::of(self, regime);
+        let frame = Frame::new(coords, Pose::new(self, regime, state));
+        let sigma = match regime.building {
+            BuildingRegime::Slip(d) => d.sign(),
+            BuildingRegime::Stick => 0.0,
+        };
+        let n = frame.coords.len();
+        let (m, f) = self.kane_system(&frame, sigma, a_g, g_e);
+        let (q_ddot, det) = solve(m, f, n);
+        let q_ddot = if det > 0.0 { q_ddot } else { [f64::NAN; MAX_COORDINATES] };
+        let mut theta_ddot = [0.0; MAX_BLOCKS];
+        let mut slip_acc = 0.0;
+        for (a, c) in frame.coords.list().iter().enumerate() {
+            match *c {
+                Coordinate::Slip => slip_acc = q_ddot[a],
+                Coordinate::Theta(k) => theta_ddot[k] = q_ddot[a],
+            }
+        }
+        let mut centre_acc = [[0.0; 2]; MAX_BLOCKS];
+        let mut rotation_acc = [0.0; MAX_BLOCKS];
+        for i in 0..self.len() {
+            let mut acc = [a_g + frame.quad[i][0], frame.quad[i][1]];
+            for a in 0..n {
+                acc[0] += frame.jac[i][a][0] * q_ddot[a];
+                acc[1] += frame.jac[i][a][1] * q_ddot[a];
+                rotation_acc[i] += frame.rot[i][a] * q_ddot[a];
+            }
+            centre_acc[i] = acc;
+        }
+        Snapshot {
+            frame,
+            theta_ddot,
+            slip_acc,
+            centre_acc,
+            rotation_acc,
+            a_g,
+            g_e,
+        }
+    }
+
+    /// The normal force of the foundation on the building in `snap`:
+    /// `g_e Σ m` (constant) or `Σ m_i (g_e + ÿ_i)` (dynamic).
+    pub fn normal_force(&self, snap: &Snapshot) -> f64 {
+        let weight = snap.g_e * self.total_mass();
+        if self.dynamic_normal_force() {
+            weight + self.blocks.iter().zip(&snap.centre_acc).map(|(b, acc)| b.mass * acc[1]).sum::<f64>()
+        } else {
+            weight
+        }
+    }
+
+    /// The friction force on the building, `F = m1 Ẍ_p + Σ_i m_i Ẍ_i`: while it
+    /// sticks (`Ẍ_p = a_g`), the `F_req` it needs; it slips when
+    /// `|F_req| > μs N`.
+    pub fn friction_force(&self, snap: &Snapshot) -> f64 {
+        self.building_mass() * (snap.a_g + snap.slip_acc) + self.blocks.iter().zip(&snap.centre_acc).map(|(b, acc)| b.mass * acc[0]).sum::<f64>()
+    }
+
+    /// The load interface `k` (0-based: 0 is the tower on the building)
+    /// carries in `snap`: with `(T_k, V_k) = Σ_{i≥k} m_i (G̈_i + g_e e_y)`,
+    /// its components along and normal to the supporting surface, and
+    /// `M_k = Σ_{i≥k} (G_i − C_k) × m_i (G̈_i + g_e e_y) − Σ_{i≥k} J_i φ̈_i`
+    /// (`φ` is clockwise positive, hence the minus).
+    pub fn interface_load(&self, snap: &Snapshot, k: usize) -> InterfaceLoad {
+        let pose = &snap.frame.pose;
+        let mut force = [0.0, 0.0];
+        let mut moment = 0.0;
+        for i in k..self.len() {
+            let block = &self.blocks[i];
+            let f = scale([snap.centre_acc[i][0], snap.centre_acc[i][1] + snap.g_e], block.mass);
+            force[0] += f[0];
+            force[1] += f[1];
+            moment += cross(sub(pose.centre[i], pose.base[k]), f) - block.inertia_centre * snap.rotation_acc[i];
+        }
+        InterfaceLoad {
+            tangential: dot(force, pose.tangent[k]),
+            normal: dot(force, pose.normal[k]),
+            moment,
+        }
+    }
+
+    /// The uplift condition of a stuck interface `k`: `|M_k| − N_k B_k / 2`,
+    /// positive when the base can no longer give the moment the blocks above
+    /// need; block `k` then rocks on the corner `s_k = sgn M_k`. For one block
+    /// standing on the ground (`M = −m (H/2) Ẍ_p`, `N = m g_e`) it is positive
+    /// exactly when `|Ẍ_p| > g_e tan α`.
+    pub fn uplift_margin(&self, snap: &Snapshot, k: usize) -> (f64, f64) {
+        let load = self.interface_load(snap, k);
+        (load.moment.abs() - load.normal * self.blocks[k].width / 2.0, load.moment.signum())
+    }
+}

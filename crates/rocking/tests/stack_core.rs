@@ -1,0 +1,291 @@
+//! The stack's laws at one instant, against closed forms worked out by hand:
+//! the uplift thresholds of a standing stack, the impact of a belfry on a
+//! rocking shaft and of a shaft carrying a rocking belfry (angular momentum
+//! about the corners, written out independently of the library's Jacobians),
+//! the compound restitution of a seated stack and the impulsive moment its
+//! seat carries, and horizontal momentum through an impact on a frictionless
+//! building.
+
+use rocking::stack::{Block, Interface, Stack, StackRegime, StackState};
+use rocking::{Building, BuildingRegime, NormalForce, Pivot};
+
+const G: f64 = 9.81;
+
+/// A shaft 4 m × 20 m of 3.2e5 kg and a belfry 3 m × 6 m of 4e4 kg, solid.
+fn shaft() -> Block {
+    Block::solid(1, 4.0, 20.0, 3.2e5).expect("a valid shaft")
+}
+fn belfry() -> Block {
+    Block::solid(2, 3.0, 6.0, 4.0e4).expect("a valid belfry")
+}
+
+fn fixed(blocks: &[Block]) -> Stack {
+    Stack::new(blocks, None, G).expect("a valid stack")
+}
+
+/// A standing stack under a ground acceleration `a_g` moves as one rigid
+/// body, `G̈_i = a_g e_x`: interface 2 carries `M_2 = −m_2 (H_2/2) a_g` on
+/// `V_2 = m_2 g` and lifts when `|a_g| > g (B_2/2)/(H_2/2)`, the belfry's own
+/// `g tan α_2`; interface 1 carries the whole stack, `M_1 = −Σ m_i y_i a_g`,
+/// and lifts when `|a_g| > g (B_1/2) Σ m_i / Σ m_i y_i` (`y_i` the heights of
+/// the centres of mass: 10 m and 23 m). The corner is `s = sgn M = −sgn a_g`.
+#[test]
+fn uplift_thresholds_of_a_standing_stack() {
+    let stack = fixed(&[shaft(), belfry()]);
+    let (m1, m2) = (3.2e5, 4.0e4);
+    let thresholds = [G * 2.0 * (m1 + m2) / (m1 * 10.0 + m2 * 23.0), G * 1.5 / 3.0];
+    assert!(thresholds[0] < thresholds[1], "the shaft lifts first here");
+    for (k, threshold) in thresholds.into_iter().enumerate() {
+        for sign in [1.0, -1.0] {
+            // 1e-9 either side: far above the rounding of a few products (1e-15),
+            // far below any error in a term of the threshold.
+            for (factor, lifts) in [(1.0 - 1e-9, false), (1.0 + 1e-9, true)] {
+                let snap = stack.snapshot(&StackRegime::REST, &StackState::default(), sign * factor * threshold, G);
+                let (margin, corner) = stack.uplift_margin(&snap, k);
+                assert_eq!(margin > 0.0, lifts, "interface {} at {factor} × {threshold}: margin {margin}", k + 1);
+                assert!(corner * sign < 0.0, "corner {corner}");
+            }
+        }
+    }
+}
+
+/// One block on a building that slides under it (`Ẍ_p = −μk σ g`, the
+/// building's deceleration): it lifts when `μk g > g tan α`, the engine's
+/// rule `|Ẍ_p| > g tan α` with the pivot line's acceleration in place of
+/// the ground's.
+#[test]
+fn uplift_of_one_block_on_a_sliding_building() {
+    let block = Block::solid(1, 4.0, 12.0, 1.5e5).unwrap();
+    for (mu, lifts) in [(0.33, false), (0.34, true)] {
+        let building = Building::new(4.0e5, mu, mu, NormalForce::Constant).unwrap();
+        let stack = Stack::new(&[block], Some(building), G).unwrap();
+        let regime = StackRegime::REST.with_building(BuildingRegime::Slip(rocking::SlipDirection::Positive));
+        let state = StackState {
+            slip_vel: 0.5,
+            ..StackState::default()
+        };
+        let snap = stack.snapshot(&regime, &state, 0.0, G);
+        // ü = −μk g exactly, up to the rounding of one product.
+        assert!((snap.slip_acc + mu * G).abs() < 1e-14 * G, "{}", snap.slip_acc);
+        let (margin, corner) = stack.uplift_margin(&snap, 0);
+        assert_eq!(margin > 0.0, lifts, "μ = {mu}: margin {margin}");
+        // Decelerating a building that moves towards +x throws the block towards +x.
+        assert!(corner > 0.0);
+    }
+}
+
+/// Hand kinematics of two blocks for the impact tests, independent of the
+/// library's geometry: block 1 on corner `O_1 = (s_1 b_1, 0)` at `θ_1`, block
+/// 2 on corner `O_2` of block 1's top at `θ_2` relative to it. Returns, for
+/// `(θ̇_1, θ̇_2)`, the clockwise angular momentum about `a` of the blocks from
+/// `from` (0 or 1) up, and the kinetic energy.
+struct Two {
+    m: [f64; 2],
+    j: [f64; 2],
+    g: [[f64; 2]; 2],
+    o1: [f64; 2],
+    o2: [f64; 2],
+}
+
+/// `R(φ) v`, clockwise.
+fn rot(phi: f64, v: [f64; 2]) -> [f64; 2] {
+    [v[0] * phi.cos() + v[1] * phi.sin(), -v[0] * phi.sin() + v[1] * phi.cos()]
+}
+
+impl Two {
+    fn new(lower: Block, upper: Block, s1: f64, theta1: f64, s2: f64, theta2: f64) -> Self {
+        let (b1, h1) = (lower.width() / 2.0, lower.height());
+        let (b2, h2) = (upper.width() / 2.0, upper.height());
+        let o1 = [s1 * b1, 0.0];
+        let g1 = add(o1, rot(theta1, [-s1 * b1, h1 / 2.0]));
+        let o2 = add(o1, rot(theta1, [-s1 * b1 + s2 * b2, h1]));
+        let g2 = add(o2, rot(theta1 + theta2, [-s2 * b2, h2 / 2.0]));
+        Self {
+            m: [lower.mass(), upper.mass()],
+            j: [lower.inertia_centre(), upper.inertia_centre()],
+            g: [g1, g2],
+            o1,
+            o2,
+        }
+    }
+    /// Velocities of the centres: a rotation `ω_1 = θ̇_1` about `O_1` carries
+    /// both; block 2 adds `θ̇_2` about `O_2`. `v(P) = ω (P − O)^⊥` with
+    /// `(x, y)^⊥ = (y, −x)` for a clockwise `ω`.
+    fn velocities(&self, w1: f64, w2: f64) -> [[f64; 2]; 2] {
+        let perp = |p: [f64; 2], o: [f64; 2]| [p[1] - o[1], -(p[0] - o[0])];
+        let v1 = scale(perp(self.g[0], self.o1), w1);
+        let v2 = add(scale(perp(self.g[1], self.o1), w1), scale(perp(self.g[1], self.o2), w2));
+        [v1, v2]
+    }
+    fn angular_momentum(&self, a: [f64; 2], from: usize, w1: f64, w2: f64) -> f64 {
+        let v = self.velocities(w1, w2);
+        let omega = [w1, w1 + w2];
+        (from..2)
+            .map(|i| {
+                let r = [self.g[i][0] - a[0], self.g[i][1] - a[1]];
+                // Clockwise: −(r × m v).
+                -(r[0] * v[i][1] - r[1] * v[i][0]) * self.m[i] + self.j[i] * omega[i]
+            })
+            .sum()
+    }
+    fn energy(&self, w1: f64, w2: f64) -> f64 {
+        let v = self.velocities(w1, w2);
+        let omega = [w1, w1 + w2];
+        (0..2)
+            .map(|i| 0.5 * self.m[i] * (v[i][0].powi(2) + v[i][1].powi(2)) + 0.5 * self.j[i] * omega[i].powi(2))
+            .sum()
+    }
+}
+
+fn add(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+    [a[0] + b[0], a[1] + b[1]]
+}
+fn scale(a: [f64; 2], k: f64) -> [f64; 2] {
+    [a[0] * k, a[1] * k]
+}
+
+/// The velocities after an impact from the two balances of angular momentum
+/// that its impulses leave alone, solved by Cramer's rule: `L_{A_1}` of both
+/// blocks about the shaft's corner after the impact `A_1`, and `L_{A_2}` of
+/// the belfry about its corner after it `A_2` (the new corner of the
+/// interface that impacts, the kept one of the other). Both are linear in
+/// `(θ̇_1⁺, θ̇_2⁺)`; the impulses act at `A_1` (the ground) and `A_2` (the
+/// shaft on the belfry) or pass through them.
+fn balance(after: &Two, before: &Two, w1: f64, w2: f64) -> (f64, f64) {
+    let (a1, a2) = (after.o1, after.o2);
+    let l1 = before.angular_momentum(a1, 0, w1, w2);
+    let l2 = before.angular_momentum(a2, 1, w1, w2);
+    let row = |a, from| [after.angular_momentum(a, from, 1.0, 0.0), after.angular_momentum(a, from, 0.0, 1.0)];
+    let (r1, r2) = (row(a1, 0), row(a2, 1));
+    let det = r1[0] * r2[1] - r1[1] * r2[0];
+    ((l1 * r2[1] - r1[1] * l2) / det, (r1[0] * l2 - l1 * r2[0]) / det)
+}
+
+/// Both interfaces rocking on a fixed base; the belfry lands (θ_2 = 0) while
+/// the shaft leans at θ_1 = 0.03 on its + corner, then the shaft lands (θ_1 =
+/// 0) with the belfry leaning at −0.02 on its − corner. The library's
+/// generalised-momentum law gives the velocities of the balances above and
+/// loses the energy they lose.
+#[test]
+fn impacts_of_two_rocking_blocks_by_angular_momentum() {
+    let stack = fixed(&[shaft(), belfry()]);
+    // (impacting interface, θ_1, s_1, θ_2, s_2, θ̇_1⁻, θ̇_2⁻)
+    for (k, theta1, s1, theta2, s2, w1, w2) in [
+        (1, 0.03, 1.0, 0.0, 1.0, -0.2, -0.5),
+        (0, 0.0, 1.0, -0.02, -1.0, -0.3, 0.4),
+        (1, -0.05, -1.0, 0.0, -1.0, 0.1, 0.6),
+    ] {
+        let regime = StackRegime::REST
+            .with(0, Interface::Rocking(Pivot::of_sign(s1)))
+            .with(1, Interface::Rocking(Pivot::of_sign(s2)));
+        let mut state = StackState::default();
+        state.theta[..2].copy_from_slice(&[theta1, theta2]);
+        state.theta_dot[..2].copy_from_slice(&[w1, w2]);
+        let out = stack.impact(&regime, &state, k);
+        let (s1n, s2n) = if k == 0 { (-s1, s2) } else { (s1, -s2) };
+        let before = Two::new(shaft(), belfry(), s1, theta1, s2, theta2);
+        let after = Two::new(shaft(), belfry(), s1n, theta1, s2n, theta2);
+        let (v1, v2) = balance(&after, &before, w1, w2);
+        // Two 2×2 solves of sums of products of order 1e6–1e8: 1e-12 of the
+        // velocities is a thousand roundings.
+        let tol = 1e-12 * (w1.abs() + w2.abs());
+        assert!(
+            (out.state.theta_dot[0] - v1).abs() < tol && (out.state.theta_dot[1] - v2).abs() < tol,
+            "{out:?} vs ({v1}, {v2})"
+        );
+        let expected = [Interface::Rocking(Pivot::of_sign(s1n)), Interface::Rocking(Pivot::of_sign(s2n))];
+        // These impacts keep both blocks rocking on (the law's θ̇_k⁺ has the
+        // sign of θ̇_k⁻).
+        assert_eq!(&out.regime.interfaces[..2], &expected, "{out:?}");
+        let ratio = after.energy(v1, v2) / before.energy(w1, w2);
+        assert!(ratio < 1.0 && ratio > 0.5, "{ratio}");
+        // The fixed base's vertical momentum balance: the ground pushes up.
+        assert!(out.normal_impulse > 0.0, "{out:?}");
+    }
+}
+
+/// A seated belfry on a landing shaft (fixed base): the two move as one
+/// compound block of `I_O' = Σ (J_i + m_i (b_1² + y_i²))` and
+/// `θ̇⁺ = r' θ̇⁻`, `r' = 1 − 2 (m_1 + m_2) b_1² / I_O'` (Housner's balance about
+/// the new corner: `(G − O)·(G − O') = y² − b_1²` for each centred block).
+/// The belfry's velocity jumps by `ΔĠ_2 = (y_2 (θ̇⁺ − θ̇⁻), −s b_1 (θ̇⁺ + θ̇⁻))`
+/// and its rotation by `θ̇⁺ − θ̇⁻`, so its seat carries
+/// `M_imp = −(m_2 (H_2/2) y_2 + J_2)(θ̇⁺ − θ̇⁻)` on `V_imp = m_2 b_1 (1 + r') |θ̇⁻|`:
+///
+/// ```text
+/// max_seat_impulse_ratio = (m_2 (H_2/2) y_2 + J_2)(1 − r') / (m_2 b_1 b_2 (1 + r'))
+/// ```
+///
+/// independent of `θ̇⁻`. For the slender belfry 1.6 m × 6 m on this shaft it
+/// exceeds 1: the model keeps it seated where its base cannot carry the
+/// impulse.
+#[test]
+fn seat_impulse_ratio_of_a_seated_belfry() {
+    for upper in [belfry(), Block::solid(2, 1.6, 6.0, 2.0e4).unwrap()] {
+        let stack = fixed(&[shaft(), upper]);
+        let (m1, m2) = (shaft().mass(), upper.mass());
+        let (b1, b2, h2) = (2.0, upper.width() / 2.0, upper.height() / 2.0);
+        let (y1, y2) = (10.0, 20.0 + h2);
+        let inertia = shaft().inertia_centre() + m1 * (b1 * b1 + y1 * y1) + upper.inertia_centre() + m2 * (b1 * b1 + y2 * y2);
+        let r = 1.0 - 2.0 * (m1 + m2) * b1 * b1 / inertia;
+        let expected = (m2 * h2 * y2 + upper.inertia_centre()) * (1.0 - r) / (m2 * b1 * b2 * (1.0 + r));
+        for (pivot, w) in [(Pivot::Positive, -0.05), (Pivot::Negative, 0.4)] {
+            let regime = StackRegime::REST.with(0, Interface::Rocking(pivot));
+            let mut state = StackState::default();
+            state.theta_dot[0] = w;
+            let out = stack.impact(&regime, &state, 0);
+            // Sums of a few products, then one ratio: 1e-12 is a thousand roundings.
+            assert!((out.state.theta_dot[0] - r * w).abs() < 1e-12 * w.abs(), "{out:?} r' = {r}");
+            assert!(
+                (out.seat_impulse_ratio - expected).abs() < 1e-12 * expected,
+                "{} vs {expected}",
+                out.seat_impulse_ratio
+            );
+            assert_eq!(out.regime.interfaces[1], Interface::Stuck);
+        }
+        if upper.width() < 2.0 {
+            assert!(expected > 1.0, "{expected}");
+        } else {
+            assert!(expected < 1.0, "{expected}");
+        }
+    }
+}
+
+/// On a frictionless building the foundation gives no horizontal impulse, so
+/// the horizontal momentum `m1 u̇ + Σ m_i Ẋ_i` is the same after an impact at
+/// either interface as before it (and the building slides, `P = 0`).
+#[test]
+fn horizontal_momentum_through_impacts_on_a_frictionless_building() {
+    let building = Building::new(6.0e5, 0.0, 0.0, NormalForce::Constant).unwrap();
+    let stack = Stack::new(&[shaft(), belfry()], Some(building), G).unwrap();
+    let momentum = |regime: &StackRegime, state: &StackState| {
+        let hand_s1 = regime.interfaces[0].pivot().map_or(1.0, Pivot::sign);
+        let hand_s2 = regime.interfaces[1].pivot().map_or(1.0, Pivot::sign);
+        let two = Two::new(shaft(), belfry(), hand_s1, state.theta[0], hand_s2, state.theta[1]);
+        let v = two.velocities(state.theta_dot[0], state.theta_dot[1]);
+        6.0e5 * state.slip_vel + two.m[0] * (v[0][0] + state.slip_vel) + two.m[1] * (v[1][0] + state.slip_vel)
+    };
+    for (k, theta, w, slip_vel) in [
+        (0, [0.0, 0.02], [-0.3, 0.2], 0.1),
+        (1, [-0.04, 0.0], [0.25, 0.5], -0.2),
+        (1, [0.01, 0.0], [-0.1, -0.3], 0.0),
+    ] {
+        let regime = StackRegime::REST
+            .with(0, Interface::Rocking(Pivot::of_sign(if k == 0 { -w[0] } else { theta[0] })))
+            .with(1, Interface::Rocking(Pivot::of_sign(if k == 1 { -w[1] } else { theta[1] })))
+            .with_building(BuildingRegime::Slip(rocking::SlipDirection::of_sign(slip_vel)));
+        let mut state = StackState::default();
+        state.theta[..2].copy_from_slice(&theta);
+        state.theta_dot[..2].copy_from_slice(&w);
+        state.slip_vel = slip_vel;
+        let out = stack.impact(&regime, &state, k);
+        let (p0, p1) = (momentum(&regime, &state), momentum(&out.regime, &out.state));
+        // Momenta built from products of order 1e6 × velocity: 1e-12 of that is
+        // a thousand roundings, and far below any momentum the law could lose
+        // (the foundation's impulse would be of order 1e5 × velocity).
+        let scale = 1.0e6 * (w[0].abs() + w[1].abs() + slip_vel.abs());
+        assert!((p0 - p1).abs() < 1e-12 * scale, "{p0} vs {p1}: {out:?}");
+        assert!(out.friction_impulse.abs() < 1e-9 * scale, "{out:?}");
+        assert!(matches!(out.regime.building, BuildingRegime::Slip(_)), "{out:?}");
+    }
+}
