@@ -189,8 +189,10 @@ def sweep(
         ``wall_time_s`` (nested ones dotted: ``time_in_regime_s.rest``), then ``error``.
         Numbers are ``float64`` arrays (``NaN`` where the CSV field is empty: a quantity
         that does not exist, or any result of a failed case); booleans are ``bool``
-        arrays (``False`` for a failed case); text is an ``object`` array of ``str``
-        (``""`` where empty). A case that fails (a bad combination, a numerical
+        arrays, or ``object`` arrays of ``True`` / ``False`` / ``None`` when a field
+        is empty (``will_overturn`` while ground motion remains after the end, any
+        flag of a failed case: a null stays ``None``, never ``False``); text is an
+        ``object`` array of ``str`` (``""`` where empty). A case that fails (a bad combination, a numerical
         failure) does not stop the others: its message is in ``error``.
 
     Raises:

@@ -33,7 +33,7 @@ def read_csv(path: Path) -> Dict[str, List[str]]:
 
 
 def assert_same_columns(got: Dict[str, np.ndarray], want: Dict[str, List[str]]) -> None:
-    """Every column of sweep.csv, value for value: numbers exactly, empty fields as NaN / False / ""."""
+    """Every column of sweep.csv, value for value: numbers exactly, empty fields as NaN / None / ""."""
     assert list(got) == list(want)
     for name, fields in want.items():
         column = got[name]
@@ -43,6 +43,10 @@ def assert_same_columns(got: Dict[str, np.ndarray], want: Dict[str, List[str]]) 
             np.testing.assert_array_equal(column, expected, err_msg=name)
         elif column.dtype == np.bool_:
             assert column.tolist() == [x == "true" for x in fields], name
+        elif set(fields) <= {"true", "false", ""} and "" in fields and any(fields):
+            # A flag with an empty field: an object array, None where empty.
+            assert column.dtype == np.dtype(object), name
+            assert column.tolist() == [{"true": True, "false": False, "": None}[x] for x in fields], name
         else:
             assert column.dtype == np.dtype(object), name
             assert column.tolist() == fields, name
@@ -113,7 +117,8 @@ def test_a_failed_case_fills_error_and_the_others_run() -> None:
     assert grid["error"][0] == ""
     assert "building.mu_kinetic" in grid["error"][1]
     assert not math.isnan(grid["max_theta_over_alpha"][0]) and math.isnan(grid["max_theta_over_alpha"][1])
-    assert grid["overturned"].tolist() == [False, False]
+    # The failed case has no result: None, not False.
+    assert grid["overturned"].tolist() == [False, None]
 
 
 def test_bad_axes_raise_value_error() -> None:

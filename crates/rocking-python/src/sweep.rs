@@ -207,19 +207,22 @@ fn field_kind(name: &str) -> Option<Kind> {
 }
 
 /// A column as a NumPy array: numbers as float64 (`NaN` where the CSV field
-/// is empty), booleans as bool (`False` where empty: a failed case, see
-/// `error`), text as an object array of `str` (`""` where empty), and a
-/// mixture as an object array of Python values (`None` where empty).
+/// is empty), booleans as bool when no field is empty, text as an object
+/// array of `str` (`""` where empty), and a mixture, or booleans with an
+/// empty field (`will_overturn` undecided, any flag of a failed case), as an
+/// object array of Python values (`None` where empty): a null stays a null,
+/// never `False`.
 pub(crate) fn column<'py>(py: Python<'py>, name: &str, cells: Vec<Cell>) -> PyResult<Bound<'py, PyAny>> {
     let all = |f: fn(&Cell) -> bool| cells.iter().all(|c| c.is_empty() || f(c));
     let all_empty = cells.iter().all(Cell::is_empty);
     let is_text = all(|c| matches!(c, Cell::Text(_))) && (!all_empty || field_kind(name) == Some(Kind::Text));
     let is_bool = all(|c| matches!(c, Cell::Bool(_))) && (!all_empty || field_kind(name) == Some(Kind::Flag));
+    let has_empty = cells.iter().any(Cell::is_empty);
     if !is_text && !is_bool && all(|c| matches!(c, Cell::Float(_) | Cell::Int(_))) {
         let values = cells.iter().map(|c| c.as_f64().unwrap_or(f64::NAN)).collect();
         return Ok(PyArray1::<f64>::from_vec(py, values).into_any());
     }
-    if is_bool {
+    if is_bool && !has_empty {
         let values = cells.iter().map(|c| matches!(c, Cell::Bool(true))).collect();
         return Ok(PyArray1::<bool>::from_vec(py, values).into_any());
     }
