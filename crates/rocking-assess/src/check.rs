@@ -43,14 +43,17 @@ pub enum Unit {
     Acceleration,
     /// A spectral displacement (m).
     Displacement,
+    /// A ground acceleration `ag` (g).
+    GroundAcceleration,
 }
 
 impl Unit {
-    /// `m/s2` or `m`.
+    /// `m/s2`, `m` or `g`.
     pub fn as_str(self) -> &'static str {
         match self {
             Unit::Acceleration => "m/s2",
             Unit::Displacement => "m",
+            Unit::GroundAcceleration => "g",
         }
     }
 }

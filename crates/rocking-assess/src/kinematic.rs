@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! activation (damage state):        ag S ≥ a0*                    fails
-//! linear kinematic (life safety):   ag S / q ≥ a0*                fails
+//! linear kinematic (life safety):   a_g,capacity = q · a_g,capacity(activation)
 //! non-linear kinematic (LS, C):     max_{T ≤ T_LS} SDe(T; ξ) > d_LS  fails, ξ = 8% (SLV), 10% (SLC)
 //! ```
 //!
@@ -55,10 +55,23 @@ pub fn activation_demand(spectrum: &CodeSpectrum, g: f64) -> f64 {
     spectrum.ag() * soil_factor(spectrum) * g
 }
 
-/// The demand of the linear kinematic check, `ag S / q` (m/s²) (Circolare
-/// 2019 §C8.7.1.2.1.7, eq. C8.7.1.9, the mechanism at ground level).
+/// The spectral demand of eq. C8.7.1.9 of the Circolare 2019 (§C8.7.1.2.1.7,
+/// the mechanism at ground level), `ag S / q` (m/s²), to be set against a0*.
+/// The linear kinematic check's capacity is [`linear_kinematic_capacity`];
+/// this demand, with the life-safety spectrum's own `S`, is reported beside it.
 pub fn linear_kinematic_demand(spectrum: &CodeSpectrum, q: f64, g: f64) -> f64 {
     activation_demand(spectrum, g) / q
+}
+
+/// The capacity of the linear kinematic check (Circolare 2019 §C8.7.1.2.1.7):
+/// `a_g,capacity = q · a_g,capacity(activation)` (g), the behaviour factor
+/// times the least `ag` of the damage state at which the mechanism activates;
+/// a lower bound when the activation's is.
+pub fn linear_kinematic_capacity(activation: AgCapacity, q: f64) -> AgCapacity {
+    match activation {
+        AgCapacity::At(ag) => AgCapacity::At(q * ag),
+        AgCapacity::AtLeast(ag) => AgCapacity::AtLeast(q * ag),
+    }
 }
 
 /// The demand of the non-linear kinematic check: the displacement spectrum
@@ -115,22 +128,21 @@ pub fn activation_check(capacity: &Capacity, site: &Site) -> Result<Check, Error
     ))
 }
 
-/// The linear kinematic check of the life-safety state: `a_g,capacity` the
-/// least `ag` with `ag S(ag) / q ≥ a0*`, with the life-safety state's
-/// F0, Tc*, soil and topography. Where `S` does not depend on `ag` (subsoil A,
-/// EN 1998) and the two states share F0, it is `q` times the activation's.
-pub fn linear_kinematic_check(capacity: &Capacity, site: &Site, q: f64) -> Result<Check, Error> {
+/// The linear kinematic check of the life-safety state: its capacity
+/// [`linear_kinematic_capacity`], `q` times the activation's `activation`,
+/// against the life-safety state's `ag`, both in g (demand `ag`, capacity
+/// `q · a_g,capacity(activation)`: the check holds when ζ_E ≥ 1).
+pub fn linear_kinematic_check(site: &Site, q: f64, activation: AgCapacity) -> Result<Check, Error> {
     let q = check_q(q)?;
-    let spectrum = site.spectrum(Role::LifeSafety);
-    let g = capacity.g;
-    let ag_capacity = least_failing_ag(AG_SEARCH_TOP, |ag| Ok(linear_kinematic_demand(&spectrum.with_ag(ag)?, q, g) - capacity.a0_star))?;
+    let ag = site.spectrum(Role::LifeSafety).ag();
+    let ag_capacity = linear_kinematic_capacity(activation, q);
     Ok(Check::new(
         site.limit_state(Role::LifeSafety),
         Method::LinearKinematic,
-        Unit::Acceleration,
-        linear_kinematic_demand(&spectrum, q, g),
-        capacity.a0_star,
-        spectrum.ag(),
+        Unit::GroundAcceleration,
+        ag,
+        ag_capacity.value(),
+        ag,
         ag_capacity,
     ))
 }
@@ -177,7 +189,7 @@ pub fn kinematic_checks(capacity: &Capacity, site: &Site, q: f64) -> Result<Vec<
     let activation = activation_check(capacity, site)?;
     Ok(vec![
         activation,
-        linear_kinematic_check(capacity, site, q)?,
+        linear_kinematic_check(site, q, activation.ag_capacity)?,
         nonlinear_kinematic_check(capacity, site, Role::LifeSafety, activation.ag_capacity)?,
         nonlinear_kinematic_check(capacity, site, Role::Collapse, activation.ag_capacity)?,
     ])

@@ -4,7 +4,8 @@
 //! overturning on its springing level and the checks of the Circolare 21
 //! gennaio 2019 n. 7 (§C8.7.1.2.1, local mechanisms) with the spectra of
 //! NTC 2018 or EN 1998-1: the activation of the mechanism (damage state), the
-//! linear kinematic check with the behaviour factor q (life safety), the
+//! linear kinematic check with the behaviour factor q (life safety: q times
+//! the activation's capacity), the
 //! non-linear kinematic checks on the displacement spectrum (life safety,
 //! collapse). Each check gives the least `ag` at which it stops holding and
 //! `ζ_E = a_g,capacity / a_g`.
@@ -53,8 +54,8 @@ pub use dynamic::{combined_response, dynamic_check, DynamicCheck, LambdaPoint, R
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
 pub use kinematic::{
-    activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_check, linear_kinematic_demand,
-    nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
+    activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_capacity, linear_kinematic_check,
+    linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
 pub use outputs::{
     assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, CAPACITY_HEADER,

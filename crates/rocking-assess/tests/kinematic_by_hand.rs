@@ -91,11 +91,15 @@ fn tower_one_on_subsoil_b() {
     assert_relative_eq!(checks[0].demand, 0.062 * 1.2 * G, max_relative = 1e-14); // SS clamped at 1.2
     assert!(checks[0].holds);
 
-    // SLV linear: ag SS(ag) / 2 = a with SS = 1 (1.4 − 0.988 ag ≤ 1 there): ag = 2a.
-    assert!(1.4 - 0.4 * 2.47 * 2.0 * a <= 1.0);
-    assert_relative_eq!(at(&checks[1]), 2.0 * a, max_relative = TOL);
-    assert_relative_eq!(checks[1].zeta_e, 2.0 * a / 0.155, max_relative = TOL);
-    assert_relative_eq!(checks[1].demand, 0.155 * 1.2 * G / 2.0, max_relative = 1e-14);
+    // SLV linear: q times the activation's, 2·0.20731 = 0.41462 g (the
+    // equation ag S(ag) / q = a0* on the SLV site would give 2a = 0.4938 g, S = 1
+    // there: not the check). Demand and capacity are those two ag in g.
+    assert_relative_eq!(at(&checks[1]), 2.0 * act, max_relative = TOL);
+    assert_relative_eq!(2.0 * act, 0.41462, max_relative = 1e-4); // as written by hand
+    assert_relative_eq!(checks[1].zeta_e, 2.0 * act / 0.155, max_relative = TOL);
+    assert_relative_eq!(checks[1].demand, 0.155, max_relative = 1e-15);
+    assert_relative_eq!(checks[1].capacity, 2.0 * act, max_relative = TOL);
+    assert_eq!(checks[1].unit.as_str(), "g");
 
     // SLV non-linear: T_SLV < TD = 4 ag + 1.6 at the root, SS = 1: on the
     // branch TC ≤ T < TD, SDe = ag η F0 TC g T / 4π², linear in ag.
@@ -137,10 +141,13 @@ fn tower_two_on_subsoil_d_where_ag_s_is_not_monotone() {
     assert_relative_eq!(checks[0].zeta_e, roots[0] / 0.40, max_relative = TOL);
     assert!(!checks[0].holds);
 
-    // SLV linear: ag SS(ag) = 0.74 with SS = clamp(2.4 − 3.6 ag, 0.9, 1.8), whose
-    // parabola peaks at 0.4 g < 0.74: the root is on SS = 0.9, ag = 0.74 / 0.9.
-    assert_relative_eq!(at(&checks[1]), 0.74 / 0.9, max_relative = TOL);
-    assert_relative_eq!(checks[1].zeta_e, 0.74 / 0.9 / 0.45, max_relative = TOL);
+    // SLV linear: q times the activation's least root, 2·0.25890 = 0.51780 g, not
+    // the root 0.74/0.9 = 0.822 g of ag SS(ag) / q = a0* on the SLV site: the
+    // capacity keeps the activation's soil factor (1.43 at 0.2589 g).
+    assert_relative_eq!(at(&checks[1]), 2.0 * roots[0], max_relative = TOL);
+    assert_relative_eq!(2.0 * roots[0], 0.51780, max_relative = 1e-4); // by hand
+    assert_relative_eq!(checks[1].zeta_e, 2.0 * roots[0] / 0.45, max_relative = TOL);
+    assert!(checks[1].holds);
 
     // SLV and SLC non-linear: at the roots SS = 0.9 and T_LS < TD: the branch
     // TC ≤ T < TD, ag = d_LS 4π² / (0.9 η F0 TC g T_LS).
@@ -171,14 +178,17 @@ fn towers_swapped_between_the_sites() {
     let checks = kinematic_checks(&t1, &site(Soil::D, SITE_D), 2.0).unwrap();
     // SS = 1.8 up to ag = 0.6/3.75 = 0.16 g; a / 1.8 = 0.1372 < 0.16.
     assert_relative_eq!(at(&checks[0]), a / 1.8, max_relative = TOL);
+    // The linear check: q = 2 times it, 0.2743 g against the SLV's 0.45 g: fails.
+    assert_relative_eq!(at(&checks[1]), 2.0 * a / 1.8, max_relative = TOL);
+    assert!(!checks[1].holds);
     let t2 = tower(1.85, 5.0, 8.0e4, 1.0);
     let checks = kinematic_checks(&t2, &site(Soil::B, SITE_B), 2.0).unwrap();
     // 1.008 ag² − 1.4 ag + 0.37 = 0, SS = 1.4 − 1.008 ag in [1, 1.2] at the root.
     let act = (1.4 - (1.96f64 - 4.0 * 1.008 * 0.37).sqrt()) / (2.0 * 1.008);
     assert!((1.0..=1.2).contains(&(1.4 - 1.008 * act)));
     assert_relative_eq!(at(&checks[0]), act, max_relative = TOL);
-    // The linear check: ag = 2·0.37 on SS = 1.
-    assert_relative_eq!(at(&checks[1]), 0.74, max_relative = TOL);
+    // The linear check: q = 2 times the activation's.
+    assert_relative_eq!(at(&checks[1]), 2.0 * act, max_relative = TOL);
 }
 
 /// The non-linear check is never below the activation: a tower whose
@@ -268,13 +278,14 @@ fn bad_input_is_refused() {
     let e = Capacity::new(1e5, r, alpha, G, 0.9, CurveKind::Linear).unwrap_err().to_string();
     assert!(e.starts_with("confidence_factor: must be a finite number >= 1"), "{e}");
     let cap = Capacity::new(1e5, r, alpha, G, 1.0, CurveKind::Linear).unwrap();
-    let e = kinematic_checks(&cap, &site(Soil::B, SITE_B), 0.0).unwrap_err().to_string();
-    assert!(e.starts_with("q: must be a finite number > 0"), "{e}");
+    for q in [0.0, -2.0, f64::NAN] {
+        let e = kinematic_checks(&cap, &site(Soil::B, SITE_B), q).unwrap_err().to_string();
+        assert!(e.starts_with("q: must be a finite number > 0"), "{e}");
+    }
 }
 
 /// Tower 1 on an EN 1998-1 site (type 1, ground B: S = 1.2, TC = 0.5 s,
-/// TD = 2 s, none moving with ag): every capacity is a closed form, and the
-/// linear check's is q times the activation's.
+/// TD = 2 s, none moving with ag): every capacity is a closed form.
 #[test]
 fn tower_one_on_an_ec8_site() {
     use rocking_codes::{Ec8Spectrum, Ec8Type};

@@ -74,10 +74,11 @@ fn the_verdict_is_the_hand_computed_one() {
     let act = (1.4 - (1.96 - 4.0 * 1.008 * a).sqrt()) / 2.016;
     close(number(&checks[0], &["ag_capacity_g"]), act, 1e-9);
     close(number(&checks[0], &["zeta_E"]), act / 0.062, 1e-9);
-    // SLV linear: ag = 2 a0*/g on SS = 1; the least ζ_E of the four, so governing.
-    close(number(&checks[1], &["ag_capacity_g"]), 2.0 * a, 1e-9);
+    // SLV linear: q = 2 times the activation's; the least ζ_E of the four, so governing.
+    close(number(&checks[1], &["ag_capacity_g"]), 2.0 * act, 1e-9);
+    close(number(&checks[1], &["zeta_E"]), 2.0 * act / 0.155, 1e-9);
     assert_eq!(json["governing"], checks[1]);
-    assert_eq!(checks[1]["unit"], "m/s2");
+    assert_eq!(checks[1]["unit"], "g");
     assert_eq!(checks[2]["unit"], "m");
     assert!(checks.iter().all(|c| c["holds"] == Value::Bool(true)));
     // capacity.csv: the straight line from (0, a0*) to (d0, 0).
@@ -219,4 +220,31 @@ fn the_dynamic_checks_write_their_tables() {
     assert_eq!(r.code, Some(1));
     assert!(r.stderr.contains("assessment.records") && r.stderr.contains("kt_04.AT2"), "{}", r.stderr);
     assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+}
+
+/// The example's report and assessment.json shown in the docs are what the
+/// command writes for it today (run from the repository's root, as
+/// scripts/docs-assess-report.sh does, which regenerates them).
+#[test]
+fn the_docs_example_report_is_the_generated_one() {
+    let dir = tempdir();
+    let r = rocking(&["assess", "examples/sant-anna-cervino/assess.toml", "--out", arg(dir.path())]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    for name in ["report.html", "assessment.json"] {
+        let committed = read(&root().join("docs/src/figures/assess").join(name));
+        let generated = read(&dir.path().join(name));
+        // Compared line by line so that a failure names the first line that differs.
+        for (i, (c, g)) in committed.lines().zip(generated.lines()).enumerate() {
+            assert!(
+                c == g,
+                "docs/src/figures/assess/{name} line {} differs from what rocking assess writes: run scripts/docs-assess-report.sh",
+                i + 1
+            );
+        }
+        assert_eq!(
+            committed.lines().count(),
+            generated.lines().count(),
+            "docs/src/figures/assess/{name}: run scripts/docs-assess-report.sh"
+        );
+    }
 }

@@ -8,7 +8,7 @@
 
 use crate::format::sig;
 use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, SpectraFigure};
-use rocking_assess::{governing, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role};
+use rocking_assess::{governing, linear_kinematic_demand, soil_factor, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role};
 use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
 use std::fmt::Write;
 
@@ -44,7 +44,7 @@ fn verdict(c: &Check) -> String {
 fn formula(c: &Check, q: f64) -> String {
     match c.method {
         Method::Activation => "a<sub>g</sub> S(a<sub>g</sub>) ≥ a<sub>0</sub>* activates (Circolare 2019 eq. C8.7.1.8)".into(),
-        Method::LinearKinematic => format!("a<sub>g</sub> S(a<sub>g</sub>) / q ≥ a<sub>0</sub>*, q = {q} (§C8.7.1.2.1.7)"),
+        Method::LinearKinematic => format!("a<sub>g</sub> &gt; q · a<sub>g,capacity</sub>(activation), q = {q} (§C8.7.1.2.1.7)"),
         Method::NonlinearKinematic => {
             "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)".into()
         }
@@ -374,6 +374,16 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
     let _ = writeln!(
         out,
         "<p class=\"note\">ζ<sub>E</sub> = a<sub>g,capacity</sub> / a<sub>g</sub>; a check holds when ζ<sub>E</sub> ≥ 1. The non-linear kinematic capacity is not taken below the activation's. “≥” marks a capacity beyond the search (2 g, or the last λ).</p>"
+    );
+    let life_safety = input.site.spectrum(Role::LifeSafety);
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">The linear kinematic check's capacity is q times the activation's, both in g. Eq. C8.7.1.9 with the {} spectrum's own soil factor reads a<sub>g</sub> S / q = {} m/s² against a<sub>0</sub>* = {} m/s² at the site's a<sub>g</sub> = {} g (S = {}); the two differ where S there differs from S at activation (NTC subsoils B–E, where S moves with a<sub>g</sub> and F<sub>0</sub>).</p>",
+        input.site.limit_state(Role::LifeSafety),
+        sig(linear_kinematic_demand(&life_safety, input.file.q, capacity.g), 4),
+        sig(capacity.a0_star, 4),
+        sig(life_safety.ag(), 4),
+        sig(soil_factor(&life_safety), 4)
     );
     let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(capacity, checks)?);
 
