@@ -48,22 +48,7 @@ impl Figure for LineChart {
         DB::ErrorType: 'static,
     {
         let rest = style::title_band(root, &self.title, &self.subtitle)?;
-        let mut entries: Vec<Entry> = self
-            .curves
-            .iter()
-            .filter_map(|c| {
-                c.label.as_ref().map(|l| {
-                    Entry::new(
-                        if c.dashed {
-                            Swatch::Dashed(c.ink_color())
-                        } else {
-                            Swatch::Line(c.ink_color())
-                        },
-                        l.clone(),
-                    )
-                })
-            })
-            .collect();
+        let mut entries: Vec<Entry> = self.curves.iter().filter_map(Curve::legend_entry).collect();
         for m in &self.markers {
             entries.push(Entry::new(
                 if m.fails {
@@ -74,9 +59,7 @@ impl Figure for LineChart {
                 m.label.clone(),
             ));
         }
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, panel) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
         let finite = |v: &f64| v.is_finite();
         let xs = self
             .curves

@@ -47,9 +47,7 @@ impl Figure for FragilityFigure<'_> {
                 Entry::new(Swatch::LineDots(color(k)), label)
             })
             .collect();
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, panel) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
         let levels: Vec<f64> = s.states.iter().flat_map(|st| st.stripes.iter().map(|p| p.level)).collect();
         let x_hi = levels.iter().copied().fold(0.0, f64::max);
         let x_range = scale::padded(0.0, if x_hi > 0.0 { x_hi } else { 1.0 }, 0.03);

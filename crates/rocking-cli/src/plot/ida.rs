@@ -64,9 +64,7 @@ impl Figure for IdaFigure<'_> {
         if s.ida.iter().any(|c| c.points.iter().any(|p| p.2)) {
             entries.push(Entry::new(Swatch::Cross(INK), "overturned"));
         }
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, panel) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
 
         let mut chart = style::xy_chart(&panel, PLOT_LEFT, x_range, (bottom.min(0.0), 1.1 * top))?;
         style::xy_mesh(&mut chart, s.measure_label(), s.ida_field.clone())

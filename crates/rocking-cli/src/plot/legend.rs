@@ -72,7 +72,7 @@ where
 }
 
 /// The height (px) a strip of `entries` needs on `area` between `left` and the right edge.
-pub fn height<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<u32>
+fn height<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<u32>
 where
     DB::ErrorType: 'static,
 {
@@ -85,7 +85,7 @@ where
 }
 
 /// Draws `entries` in `area` (a strip as high as [`height`] says), from `left`.
-pub fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<()>
+fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,
 {
@@ -101,6 +101,17 @@ where
         }
     }
     Ok(())
+}
+
+/// Draws `entries` in a strip at the top of `area`, from `left`, and returns
+/// the rest of `area` below it: the panel the legend describes.
+pub fn above<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, left: i32, entries: &[Entry]) -> anyhow::Result<DrawingArea<DB, Shift>>
+where
+    DB::ErrorType: 'static,
+{
+    let (strip, panel) = area.split_vertically(height(area, left, entries)?);
+    draw(&strip, left, entries)?;
+    Ok(panel)
 }
 
 fn swatch<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, (x, y): (i32, i32), swatch: Swatch) -> anyhow::Result<()>

@@ -82,9 +82,7 @@ impl SlipFigure<'_> {
         let finite = || curve.points.iter().map(|p| p.1 * unit.per_metre).filter(|v| v.is_finite());
         let y = scale::padded(finite().fold(0.0, f64::min), finite().fold(0.0, f64::max), 0.08);
         let entries = timeline::legend_entries(tl, Entry::new(Swatch::Line(curve.color), curve.what), impacts, None);
-        let strip = legend::height(area, PLOT_LEFT, &entries)?;
-        let (top, panel) = area.split_vertically(strip);
-        legend::draw(&top, PLOT_LEFT, &entries)?;
+        let panel = legend::above(area, PLOT_LEFT, &entries)?;
 
         let y_desc = format!("{} ({})", curve.axis, unit.name);
         let mut chart = timeline::time_chart(&panel, tl.range, y, &y_desc, show_time)?;

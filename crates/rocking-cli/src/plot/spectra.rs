@@ -49,6 +49,12 @@ impl Curve {
     pub fn ink_color(&self) -> RGBColor {
         self.ink.color()
     }
+
+    /// Its legend entry, if it has a label: a line, dashed as the curve is.
+    pub fn legend_entry(&self) -> Option<Entry> {
+        let swatch = if self.dashed { Swatch::Dashed(self.ink_color()) } else { Swatch::Line(self.ink_color()) };
+        self.label.as_ref().map(|l| Entry::new(swatch, l.clone()))
+    }
 }
 
 /// One curve of a spectra figure.
@@ -107,31 +113,14 @@ impl Figure for SpectraFigure {
         DB::ErrorType: 'static,
     {
         let rest = style::title_band(root, &self.title, &self.subtitle)?;
-        let mut entries: Vec<Entry> = self
-            .curves
-            .iter()
-            .filter_map(|c| {
-                c.label.as_ref().map(|l| {
-                    Entry::new(
-                        if c.dashed {
-                            Swatch::Dashed(c.ink.color())
-                        } else {
-                            Swatch::Line(c.ink.color())
-                        },
-                        l.clone(),
-                    )
-                })
-            })
-            .collect();
+        let mut entries: Vec<Entry> = self.curves.iter().filter_map(Curve::legend_entry).collect();
         if let Some(band) = &self.band {
             entries.push(Entry::new(Swatch::Band(style::VERMILION, 0.15), band.label.clone()));
         }
         if self.range.is_some() {
             entries.push(Entry::new(Swatch::Tick(GREY), "fitting range"));
         }
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, panel) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
 
         let positive = |v: f64| v.is_finite() && v > 0.0;
         let xs = self.curves.iter().flat_map(|c| c.points.iter().map(|p| p.0)).filter(|x| positive(*x));

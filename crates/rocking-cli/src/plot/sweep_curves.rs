@@ -170,9 +170,7 @@ impl Figure for CurvesFigure<'_> {
         if any_overturned {
             entries.push(Entry::new(Swatch::Cross(INK), "overturned (on the dashed line: off scale)"));
         }
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, panel) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
 
         let mut chart = style::xy_chart(&panel, PLOT_LEFT, x_range, y)?;
         let x_label = |v: &f64| x.label(*v);

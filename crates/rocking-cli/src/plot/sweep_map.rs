@@ -166,9 +166,7 @@ impl Figure for MapFigure<'_> {
         if self.cells.iter().any(|c| c.2 == Cell::Failed) {
             entries.push(Entry::new(Swatch::Square(FAILED), "failed (no result)"));
         }
-        let strip = legend::height(&rest, PLOT_LEFT, &entries)?;
-        let (top_strip, body) = rest.split_vertically(strip);
-        legend::draw(&top_strip, PLOT_LEFT, &entries)?;
+        let body = legend::above(&rest, PLOT_LEFT, &entries)?;
         let (w, _) = body.dim_in_pixel();
         let (map, bar) = body.split_horizontally(w.saturating_sub(BAR_AREA));
         let top = self.top();

@@ -78,9 +78,7 @@ impl ThetaFigure<'_> {
             true,
             bounds.then(|| Entry::new(Swatch::Dashed(GREY), "θ = ±α")),
         );
-        let strip = legend::height(area, PLOT_LEFT, &entries)?;
-        let (top, panel) = area.split_vertically(strip);
-        legend::draw(&top, PLOT_LEFT, &entries)?;
+        let panel = legend::above(area, PLOT_LEFT, &entries)?;
 
         let mut chart = timeline::time_chart(&panel, tl.range, y, "rotation θ/α (–)", false)?;
         timeline::draw_slides(&mut chart, tl, y)?;
@@ -141,9 +139,7 @@ impl ThetaFigure<'_> {
         if let Some(x) = slip {
             entries.push(Entry::new(Swatch::Dashed(ORANGE), format!("±μs = ±{} g: slip", sig(x, 3))));
         }
-        let strip = legend::height(area, PLOT_LEFT, &entries)?;
-        let (top, panel) = area.split_vertically(strip);
-        legend::draw(&top, PLOT_LEFT, &entries)?;
+        let panel = legend::above(area, PLOT_LEFT, &entries)?;
 
         let label = if vertical.is_empty() {
             format!("a_g ({unit})")
