@@ -52,7 +52,11 @@ impl Curve {
 
     /// Its legend entry, if it has a label: a line, dashed as the curve is.
     pub fn legend_entry(&self) -> Option<Entry> {
-        let swatch = if self.dashed { Swatch::Dashed(self.ink_color()) } else { Swatch::Line(self.ink_color()) };
+        let swatch = if self.dashed {
+            Swatch::Dashed(self.ink_color())
+        } else {
+            Swatch::Line(self.ink_color())
+        };
         self.label.as_ref().map(|l| Entry::new(swatch, l.clone()))
     }
 }
