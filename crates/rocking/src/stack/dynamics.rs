@@ -244,3 +244,44 @@ impl Stack {
         (load.moment.abs() - load.normal * self.blocks[k].width / 2.0, load.moment.signum())
     }
 }
+
+impl Stack {
+    /// The mechanical energy of the stack and the building in the ground's
+    /// frame (J): `Σ_i [½ m_i |Ġ_i|² + ½ J_i φ̇_i² + m_i g y_i] + ½ m1 u̇²`,
+    /// `y_i` the height of `G_i` above the springing level. Conserved between
+    /// events with no ground motion and no friction work.
+    pub fn energy(&self, regime: &StackRegime, state: &StackState) -> f64 {
+        let pose = Pose::new(self, regime, state);
+        let slip_vel = if matches!(regime.building, BuildingRegime::Slip(_)) {
+            state.slip_vel
+        } else {
+            0.0
+        };
+        let moving = StackState { slip_vel, ..*state };
+        let mut energy = 0.5 * self.building_mass() * slip_vel * slip_vel;
+        for (i, block) in self.blocks.iter().enumerate() {
+            let v = pose.point_velocity(i, pose.centre(i), &moving);
+            energy +=
+                0.5 * block.mass * dot(v, v) + 0.5 * block.inertia_centre * pose.phi_dot[i] * pose.phi_dot[i] + block.mass * self.gravity * pose.centre(i)[1];
+        }
+        energy
+    }
+
+    /// The horizontal momentum relative to the ground, `m1 u̇ + Σ_i m_i Ẋ_i`
+    /// (kg·m/s): the foundation's friction is its only horizontal force
+    /// besides the ground's motion.
+    pub fn horizontal_momentum(&self, regime: &StackRegime, state: &StackState) -> f64 {
+        let pose = Pose::new(self, regime, state);
+        let slip_vel = if matches!(regime.building, BuildingRegime::Slip(_)) {
+            state.slip_vel
+        } else {
+            0.0
+        };
+        let moving = StackState { slip_vel, ..*state };
+        let mut momentum = self.building_mass() * slip_vel;
+        for (i, block) in self.blocks.iter().enumerate() {
+            momentum += block.mass * pose.point_velocity(i, pose.centre(i), &moving)[0];
+        }
+        momentum
+    }
+}

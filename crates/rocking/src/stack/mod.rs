@@ -21,7 +21,9 @@
 //!   building needs, and the loads an interface carries (its uplift condition);
 //! - [`impact`]: the impact of an interface on its other corner by
 //!   generalised momentum, with the foundation's friction impulse, and the
-//!   impulsive load a seated interface carries meanwhile.
+//!   impulsive load a seated interface carries meanwhile;
+//! - [`run`]: a time-stepper over the regimes, events located by root finding
+//!   on the integrator's dense output.
 //!
 //! For one block on a building these are the tower's equations (T)–(B) and its
 //! impact law; `tests` checks them against the engine's own functions.
@@ -33,6 +35,7 @@ pub mod dynamics;
 pub mod geometry;
 pub mod impact;
 mod linalg;
+pub mod run;
 #[cfg(test)]
 mod tests;
 

@@ -1,0 +1,454 @@
+//! A time-stepper for the stack: DOP853 over the regimes of the stack, each
+//! regime change located by root finding on the dense output.
+//!
+//! Between events the state `(θ_1 … θ_N, θ̇_1 … θ̇_N, u, u̇)` follows Kane's
+//! equations of the current regime ([`Stack::snapshot`]); a stuck interface's
+//! `θ_k` and a sticking building's `u̇` stay 0. The conditions watched in a
+//! regime, each a function that turns from negative to non-negative when its
+//! transition is due:
+//!
+//! | regime | function | transition |
+//! |---|---|---|
+//! | interface `k` rocking on `s_k` | `−s_k θ_k` | impact ([`Stack::impact`]) |
+//! | interface `k` rocking | `|θ_k| − π/2` | overturning: the run stops |
+//! | interface `k` stuck | `|M_k| − N_k B_k/2` | uplift on `s_k = sgn M_k` |
+//! | building sticking | `|F_req| − μs N` | slip, `σ = −sgn F_req` |
+//! | building slipping `σ` | `−σ u̇` | stick, or slip reversed |
+//!
+//! A condition that already holds when a regime is entered switches at once.
+//! An impact that leaves its interface turning slower than
+//! [`REST_ANGULAR_VELOCITY`] seats it (the end of an accumulation of ever
+//! smaller impacts), as the tower's.
+//!
+//! Crossings are found by the signs of each function at the ends of 16 equal
+//! parts of every step, then narrowed by regula falsi: a condition that holds
+//! only for a moment between two of those points is missed. Every step ends
+//! at the next kink of the ground motion.
+
+use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
+use crate::error::Error;
+use crate::ground::GroundMotion;
+use crate::integrator::{find_crossing, DenseOutput, Dop853, StepFailure};
+use crate::regime::{BuildingRegime, Pivot, SlipDirection};
+use crate::simulate::REST_ANGULAR_VELOCITY;
+
+/// How a stack is run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunSettings {
+    /// Duration (s).
+    pub duration: f64,
+    /// Relative tolerance of the integrator.
+    pub rtol: f64,
+    /// Absolute tolerance of the integrator.
+    pub atol: f64,
+    /// Spacing of the recorded samples (s).
+    pub sample_interval: f64,
+}
+
+impl Default for RunSettings {
+    fn default() -> Self {
+        Self {
+            duration: 10.0,
+            rtol: 1e-10,
+            atol: 1e-12,
+            sample_interval: 0.01,
+        }
+    }
+}
+
+/// What happened at an event.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StackEventKind {
+    /// Interface `k` (0-based) started rocking.
+    Uplift(usize),
+    /// Interface `k` landed on its other corner.
+    Impact(usize),
+    /// Interface `k` came to rest: an impact left it seated.
+    Rest(usize),
+    /// Block `k` overturned; the run stopped.
+    Overturn(usize),
+    /// The building started slipping (or reversed).
+    Slip,
+    /// The building stuck.
+    Stick,
+}
+
+/// One regime change.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StackEvent {
+    /// Time (s).
+    pub time: f64,
+    /// What happened.
+    pub kind: StackEventKind,
+    /// The regime before it.
+    pub regime_before: StackRegime,
+    /// The state just before it.
+    pub before: StackState,
+    /// The regime after it.
+    pub regime: StackRegime,
+    /// The state just after it.
+    pub after: StackState,
+    /// For an impact, the largest impulse ratio of a seated interface through it.
+    pub seat_impulse_ratio: f64,
+}
+
+/// The state at one sampling instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StackSample {
+    /// Time (s).
+    pub time: f64,
+    /// The state.
+    pub state: StackState,
+    /// The regime.
+    pub regime: StackRegime,
+}
+
+/// What a run leaves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StackRun {
+    /// The states every `sample_interval` (and at the end).
+    pub samples: Vec<StackSample>,
+    /// Every regime change, in order.
+    pub events: Vec<StackEvent>,
+    /// The block that overturned (0-based), if one did.
+    pub overturned: Option<usize>,
+    /// The largest `|M_imp| / (V_imp B_j / 2)` of a seated interface through
+    /// an impact elsewhere over the run (0 without such impacts).
+    pub max_seat_impulse_ratio: f64,
+}
+
+/// The regime the initial state puts the stack in: an interface leaning or
+/// turning rocks on the side it leans (or turns) to; a building moving slips.
+pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
+    let mut regime = StackRegime::REST;
+    for k in 0..stack.len() {
+        let side = if initial.theta[k] != 0.0 { initial.theta[k] } else { initial.theta_dot[k] };
+        if side != 0.0 {
+            regime.interfaces[k] = Interface::Rocking(Pivot::of_sign(side));
+        }
+    }
+    if stack.building.is_some() && initial.slip_vel != 0.0 {
+        regime.building = BuildingRegime::Slip(SlipDirection::of_sign(initial.slip_vel));
+    }
+    regime
+}
+
+/// Runs `stack` under the horizontal `ground` motion from `initial`.
+pub fn run(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings) -> Result<StackRun, Error> {
+    macro_rules! sized {
+        ($($n:literal => $s:literal),*) => {
+            match stack.len() {
+                $($n => Runner::<$s> { stack, ground, settings }.run(initial),)*
+                _ => unreachable!("a stack has 1 to MAX_BLOCKS blocks"),
+            }
+        };
+    }
+    sized!(1 => 4, 2 => 6, 3 => 8, 4 => 10, 5 => 12, 6 => 14)
+}
+
+const _: () = assert!(MAX_BLOCKS == 6, "the dispatch in `run` lists every size");
+
+/// The watched conditions of a regime.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Watch {
+    Impact(usize),
+    Overturn(usize),
+    Uplift(usize),
+    Slip,
+    Stop,
+}
+
+/// Parts of a step whose ends are checked for a crossing.
+const PARTS: usize = 16;
+
+struct Runner<'a, const S: usize> {
+    stack: &'a Stack,
+    ground: &'a GroundMotion,
+    settings: &'a RunSettings,
+}
+
+impl<const S: usize> Runner<'_, S> {
+    fn n(&self) -> usize {
+        (S - 2) / 2
+    }
+
+    fn pack(&self, state: &StackState) -> [f64; S] {
+        let n = self.n();
+        let mut y = [0.0; S];
+        y[..n].copy_from_slice(&state.theta[..n]);
+        y[n..2 * n].copy_from_slice(&state.theta_dot[..n]);
+        y[2 * n] = state.slip;
+        y[2 * n + 1] = state.slip_vel;
+        y
+    }
+
+    fn unpack(&self, y: &[f64; S]) -> StackState {
+        let n = self.n();
+        let mut state = StackState::default();
+        state.theta[..n].copy_from_slice(&y[..n]);
+        state.theta_dot[..n].copy_from_slice(&y[n..2 * n]);
+        state.slip = y[2 * n];
+        state.slip_vel = y[2 * n + 1];
+        state
+    }
+
+    fn rhs(&self, regime: &StackRegime, t: f64, y: &[f64; S]) -> [f64; S] {
+        let n = self.n();
+        let state = self.unpack(y);
+        let snap = self.stack.snapshot(regime, &state, self.ground.acceleration(t), self.stack.gravity);
+        let mut dy = [0.0; S];
+        for k in 0..n {
+            if regime.interfaces[k] != Interface::Stuck {
+                dy[k] = y[n + k];
+                dy[n + k] = snap.theta_ddot[k];
+            }
+        }
+        if matches!(regime.building, BuildingRegime::Slip(_)) {
+            dy[2 * n] = y[2 * n + 1];
+            dy[2 * n + 1] = snap.slip_acc;
+        }
+        dy
+    }
+
+    fn watches(&self, regime: &StackRegime) -> arrayvec::ArrayVec<Watch, { 2 * MAX_BLOCKS + 1 }> {
+        let mut w = arrayvec::ArrayVec::new();
+        for k in 0..self.n() {
+            if regime.interfaces[k] == Interface::Stuck {
+                w.push(Watch::Uplift(k));
+            } else {
+                w.push(Watch::Impact(k));
+                w.push(Watch::Overturn(k));
+            }
+        }
+        if self.stack.building.is_some() {
+            w.push(match regime.building {
+                BuildingRegime::Stick => Watch::Slip,
+                BuildingRegime::Slip(_) => Watch::Stop,
+            });
+        }
+        w
+    }
+
+    /// The value of a watched condition: negative while its transition is not due.
+    fn value(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> f64 {
+        match watch {
+            Watch::Impact(k) => -regime.interfaces[k].pivot().map_or(0.0, Pivot::sign) * state.theta[k],
+            Watch::Overturn(k) => state.theta[k].abs() - std::f64::consts::FRAC_PI_2,
+            Watch::Uplift(k) => {
+                let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
+                self.stack.uplift_margin(&snap, k).0
+            }
+            Watch::Slip => {
+                let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
+                let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
+                self.stack.friction_force(&snap).abs() - mu_s * self.stack.normal_force(&snap)
+            }
+            Watch::Stop => match regime.building {
+                BuildingRegime::Slip(d) => -d.sign() * state.slip_vel,
+                BuildingRegime::Stick => -1.0,
+            },
+        }
+    }
+
+    /// The building's regime at `u̇ = 0`: stuck if the friction it needs
+    /// stays within `μs N`, else slipping against that need.
+    fn building_at_rest(&self, regime: &StackRegime, t: f64, state: &StackState) -> BuildingRegime {
+        let stuck = StackRegime {
+            building: BuildingRegime::Stick,
+            ..*regime
+        };
+        let snap = self.stack.snapshot(&stuck, state, self.ground.acceleration(t), self.stack.gravity);
+        let demand = self.stack.friction_force(&snap);
+        let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
+        if demand.abs() > mu_s * self.stack.normal_force(&snap) {
+            BuildingRegime::Slip(SlipDirection::of_sign(-demand))
+        } else {
+            BuildingRegime::Stick
+        }
+    }
+
+    /// The transition of `watch`, due at `t`: the new regime and state, the
+    /// event's kind and the seat impulse ratio of an impact.
+    fn switch(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> (StackRegime, StackState, StackEventKind, f64) {
+        let mut state = *state;
+        match watch {
+            Watch::Impact(k) => {
+                let out = self.stack.impact(regime, &state, k);
+                let (mut regime, mut state) = (out.regime, out.state);
+                let mut kind = StackEventKind::Impact(k);
+                if regime.interfaces[k] != Interface::Stuck && state.theta_dot[k].abs() < REST_ANGULAR_VELOCITY {
+                    regime.interfaces[k] = Interface::Stuck;
+                }
+                if regime.interfaces[k] == Interface::Stuck {
+                    state.theta_dot[k] = 0.0;
+                    kind = StackEventKind::Rest(k);
+                }
+                (regime, state, kind, out.seat_impulse_ratio)
+            }
+            Watch::Overturn(k) => (*regime, state, StackEventKind::Overturn(k), 0.0),
+            Watch::Uplift(k) => {
+                let snap = self.stack.snapshot(regime, &state, self.ground.acceleration(t), self.stack.gravity);
+                let corner = self.stack.uplift_margin(&snap, k).1;
+                state.theta[k] = 0.0;
+                state.theta_dot[k] = 0.0;
+                (
+                    regime.with(k, Interface::Rocking(Pivot::of_sign(corner))),
+                    state,
+                    StackEventKind::Uplift(k),
+                    0.0,
+                )
+            }
+            Watch::Slip | Watch::Stop => {
+                state.slip_vel = 0.0;
+                let building = self.building_at_rest(regime, t, &state);
+                let kind = if building == BuildingRegime::Stick {
+                    StackEventKind::Stick
+                } else {
+                    StackEventKind::Slip
+                };
+                (regime.with_building(building), state, kind, 0.0)
+            }
+        }
+    }
+
+    /// The first watched condition that already holds at `t` (one that a
+    /// regime is entered with switches at once).
+    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState) -> Option<Watch> {
+        self.watches(regime).into_iter().find(|&w| match w {
+            // Crossings, not conditions: they are due only when reached from the other side.
+            Watch::Impact(_) | Watch::Stop => false,
+            _ => self.value(regime, w, t, state) > 0.0,
+        })
+    }
+
+    /// The earliest crossing of a watched condition inside the step of `dense`.
+    fn first_crossing(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64) -> Option<(Watch, f64)> {
+        let at = |t: f64| self.unpack(&dense.state(t));
+        let mut best: Option<(Watch, f64)> = None;
+        for watch in self.watches(regime) {
+            let f = |t: f64| self.value(regime, watch, t, &at(t));
+            let mut ta = t0;
+            let mut fa = f(t0);
+            for j in 1..=PARTS {
+                let tb = if j == PARTS { t1 } else { t0 + (t1 - t0) * j as f64 / PARTS as f64 };
+                if best.is_some_and(|(_, t)| t <= ta) {
+                    break;
+                }
+                let fb = f(tb);
+                if fa < 0.0 && fb >= 0.0 {
+                    let bracket = find_crossing(f, ta, fa, tb, fb, 0.0);
+                    if best.is_none_or(|(_, t)| bracket.tb < t) {
+                        best = Some((watch, bracket.tb));
+                    }
+                    break;
+                }
+                (ta, fa) = (tb, fb);
+            }
+        }
+        best
+    }
+
+    fn run(&self, initial: &StackState) -> Result<StackRun, Error> {
+        let settings = self.settings;
+        let mut regime = initial_regime(self.stack, initial);
+        let mut state = *initial;
+        if self.stack.building.is_none() {
+            state.slip_vel = 0.0;
+        }
+        let mut out = StackRun {
+            samples: Vec::new(),
+            events: Vec::new(),
+            overturned: None,
+            max_seat_impulse_ratio: 0.0,
+        };
+        let mut t = 0.0;
+        let mut next_sample = 0usize;
+        let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
+        'run: loop {
+            // Switch at once while a condition already holds.
+            let mut switches = 0;
+            while let Some(watch) = self.due_now(&regime, t, &state) {
+                switches += 1;
+                if switches > 4 * MAX_BLOCKS + 4 {
+                    return Err(Error::Chattering {
+                        time: t,
+                        last: "stack transition",
+                    });
+                }
+                if self.apply(&mut out, &mut regime, &mut state, watch, t) {
+                    break 'run;
+                }
+            }
+            if t >= settings.duration {
+                break;
+            }
+            let y = self.pack(&state);
+            let current = regime;
+            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&current, t, y);
+            stepper.restart(&mut rhs, t, y, settings.duration);
+            loop {
+                let bound = self.ground.segment(t).kink.min(settings.duration);
+                stepper.step(&mut rhs, bound).map_err(|e| match e {
+                    StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
+                    StepFailure::NonFinite { time } => Error::Singular {
+                        time,
+                        reason: "the stack's equations have no solution (Painlevé's paradox of the dynamic normal force)".into(),
+                    },
+                })?;
+                let dense = stepper.dense(&mut rhs);
+                let (t0, t1) = (stepper.t_old, stepper.t);
+                let crossing = self.first_crossing(&regime, &dense, t0, t1);
+                let reached = crossing.map_or(t1, |(_, te)| te);
+                while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {
+                    let ts = next_sample as f64 * settings.sample_interval;
+                    out.samples.push(StackSample {
+                        time: ts,
+                        state: self.unpack(&dense.state(ts)),
+                        regime,
+                    });
+                    next_sample += 1;
+                }
+                t = reached;
+                if let Some((watch, te)) = crossing {
+                    state = self.unpack(&dense.state(te));
+                    if self.apply(&mut out, &mut regime, &mut state, watch, te) {
+                        break 'run;
+                    }
+                    continue 'run;
+                }
+                state = self.unpack(&stepper.y);
+                if t >= settings.duration {
+                    break 'run;
+                }
+                if bound < settings.duration && t >= bound {
+                    // A kink of the input: restart there (conditions may hold at once).
+                    continue 'run;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// Applies the transition of `watch` at `t`, records it, and says whether
+    /// the run ends (an overturning).
+    fn apply(&self, out: &mut StackRun, regime: &mut StackRegime, state: &mut StackState, watch: Watch, t: f64) -> bool {
+        let (next_regime, next_state, kind, ratio) = self.switch(regime, watch, t, state);
+        out.events.push(StackEvent {
+            time: t,
+            kind,
+            regime_before: *regime,
+            before: *state,
+            regime: next_regime,
+            after: next_state,
+            seat_impulse_ratio: ratio,
+        });
+        out.max_seat_impulse_ratio = out.max_seat_impulse_ratio.max(ratio);
+        *regime = next_regime;
+        *state = next_state;
+        if let StackEventKind::Overturn(k) = kind {
+            out.overturned = Some(k);
+            return true;
+        }
+        false
+    }
+}
