@@ -56,6 +56,7 @@
 #![allow(clippy::excessive_precision)]
 
 use crate::equations::Kernel;
+use crate::regime::State;
 use crate::trig::sin;
 
 /// Gauss–Legendre nodes and weights on `[0, 1]`, six points (the classical
@@ -172,12 +173,17 @@ impl Flight {
     /// The state `(θ, θ̇, u, u̇)` at `t` in the flight, from the linearized
     /// equation (module docs): `ψ = (ω/λ) sinh λτ − 2 tan α sinh²(λτ/2)`,
     /// `τ = t − t0`.
-    pub(crate) fn state(&self, t: f64) -> [f64; 4] {
+    pub(crate) fn state(&self, t: f64) -> State {
         let x = self.lambda * (t - self.t0);
         let (sh, ch, sh2) = (libm::sinh(x), libm::cosh(x), libm::sinh(0.5 * x));
         let psi = self.omega / self.lambda * sh - 2.0 * self.tan_alpha * sh2 * sh2;
         let psi_dot = self.omega * ch - self.tan_alpha * self.lambda * sh;
-        [self.s * psi, self.s * psi_dot, self.slip, 0.0]
+        State {
+            theta: self.s * psi,
+            theta_dot: self.s * psi_dot,
+            slip: self.slip,
+            slip_vel: 0.0,
+        }
     }
 }
 
@@ -265,10 +271,14 @@ mod tests {
         let omega = 1e-3;
         let f = k.free_flight(-1.0, 2.0, omega, 0.0, 1.0).unwrap_or_else(|| panic!("{omega}"));
         let start = f.state(f.t0);
-        assert_eq!((start[0], start[1]), (0.0, -omega));
+        assert_eq!((start.theta, start.theta_dot), (0.0, -omega));
         let end = f.state(f.t0 + f.duration);
-        assert!(end[0].abs() < 1e-15 && (end[1] - omega).abs() < 1e-12 * omega, "{end:?}");
+        assert!(end.theta.abs() < 1e-15 && (end.theta_dot - omega).abs() < 1e-12 * omega, "{end:?}");
         let mid = f.state(f.t0 + 0.5 * f.duration);
-        assert!((-mid[0] / f.apex - 1.0).abs() < 1e-6 && mid[1].abs() < 1e-9, "{mid:?} against {}", f.apex);
+        assert!(
+            (-mid.theta / f.apex - 1.0).abs() < 1e-6 && mid.theta_dot.abs() < 1e-9,
+            "{mid:?} against {}",
+            f.apex
+        );
     }
 }

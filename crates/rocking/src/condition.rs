@@ -3,8 +3,8 @@
 //! change, evaluated on `f64` or, with its exact time derivative, on [`Jet`].
 
 use crate::equations::Kernel;
-use crate::jet::{Jet, Real};
-use crate::regime::{BuildingRegime, Regime, TowerRegime};
+use crate::jet::Real;
+use crate::regime::{BuildingRegime, Regime, State, TowerRegime};
 use std::f64::consts::FRAC_PI_2;
 
 /// A condition for leaving the current regime.
@@ -77,16 +77,10 @@ pub(crate) fn pivot_sign(regime: Regime) -> f64 {
     }
 }
 
-/// The state `(θ, θ̇, u, u̇)` as jets along the solution: each component with
-/// its time derivative (`θ̇`, `θ̈`, `u̇`, `ü`).
-pub(crate) fn state_jets(y: &[f64; 4], theta_ddot: f64, slip_acc: f64) -> [Jet; 4] {
-    [Jet::new(y[0], y[1]), Jet::new(y[1], theta_ddot), Jet::new(y[2], y[3]), Jet::new(y[3], slip_acc)]
-}
-
 impl Condition {
     /// The value of the condition in `regime`: negative while the regime holds.
     #[inline]
-    pub(crate) fn value<T: Real>(self, kernel: &Kernel, regime: Regime, a_g: T, g_e: T, y: &[T; 4]) -> T {
+    pub(crate) fn value<T: Real>(self, kernel: &Kernel, regime: Regime, a_g: T, g_e: T, y: &State<T>) -> T {
         let s = pivot_sign(regime);
         match self {
             Condition::UpliftNegative | Condition::UpliftPositive => {
@@ -94,13 +88,13 @@ impl Condition {
                 let toward = if self == Condition::UpliftNegative { acc_pivot } else { -acc_pivot };
                 toward - kernel.uplift_threshold(g_e)
             }
-            Condition::Impact | Condition::Overturn => self.theta_margin(s, y[0]),
+            Condition::Impact | Condition::Overturn => self.theta_margin(s, y.theta),
             Condition::SlipNegative | Condition::SlipPositive => {
-                let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y[0], y[1]);
+                let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y.theta, y.theta_dot);
                 self.slip_margin(force, normal, kernel.mu_s)
             }
             Condition::SlipStop => match regime.building {
-                BuildingRegime::Slip(dir) => -(y[3] * dir.sign()),
+                BuildingRegime::Slip(dir) => -(y.slip_vel * dir.sign()),
                 BuildingRegime::Stick => T::from(-1.0),
             },
         }

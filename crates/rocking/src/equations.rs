@@ -129,6 +129,28 @@ impl Kernel {
         -(g_e * lean.sin_phi * lean.s + acc_pivot * lean.cos_phi) * self.k
     }
 
+    /// A bound of `|θ̈|` from (T) with `Ẍ_p = a_g` (a stuck building or a
+    /// fixed base), given upper bounds of `g_e` and `|a_g|`:
+    /// `|θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²)` (Cauchy–Schwarz).
+    /// Returns `(k sqrt(g_e² + a_g²), sqrt(g_e² + a_g²))`: the bound and the
+    /// reach [`Kernel::tower_jerk_bound`] needs.
+    #[inline(always)]
+    pub(crate) fn tower_acceleration_bound(&self, g_e: f64, a_max: f64) -> (f64, f64) {
+        let reach = (g_e * g_e + a_max * a_max).sqrt();
+        (self.k * reach, reach)
+    }
+
+    /// A bound of `|θ⃛|` from (T) with `Ẍ_p = a_g`: differentiating along
+    /// the motion (`φ̇ = −s θ̇`),
+    /// `θ⃛ = −k [(s ġ_e sin φ + ȧ_g cos φ) + θ̇ (s a_g sin φ − g_e cos φ)]`, so
+    /// `|θ⃛| <= k [sqrt(ġ_e² + ȧ_g²) + max|θ̇| sqrt(g_e² + a_g²)]`, given upper
+    /// bounds of `|ġ_e|`, `|ȧ_g|` and `|θ̇|`; `reach` is the second root, from
+    /// [`Kernel::tower_acceleration_bound`].
+    #[inline(always)]
+    pub(crate) fn tower_jerk_bound(&self, reach: f64, g_rate: f64, a_rate: f64, theta_dot_max: f64) -> f64 {
+        self.k * ((g_rate * g_rate + a_rate * a_rate).sqrt() + theta_dot_max * reach)
+    }
+
     /// (B) solved for the friction force: `F = M Ẍ_p + m2 R (cos φ θ̈ + s sin φ θ̇²)`.
     #[inline(always)]
     pub(crate) fn building_equation<T: Real>(&self, lean: Lean<T>, theta_dot: T, theta_ddot: T, acc_pivot: T) -> T {
@@ -154,12 +176,35 @@ impl Kernel {
         g_e * self.tan_alpha
     }
 
+    /// The kinetic friction law (Coulomb): the horizontal force of the
+    /// foundation on a building sliding in the direction `σ = sgn u̇` under
+    /// the normal force `normal`, `F = −μk σ N`. The one place the law is
+    /// written: the sliding right-hand sides, the impact law (with the normal
+    /// impulse for `N`) and the bounds the step's screening uses all call it.
+    /// The callers rely on it being proportional to `N` (they divide it by a
+    /// mass or factor it out of a linear system): a law `F = −μ(…) σ N` with
+    /// any other dependence fits them unchanged.
+    #[inline(always)]
+    pub(crate) fn kinetic_friction<T: Real>(&self, sigma: f64, normal: T) -> T {
+        normal * (-self.mu_k * sigma)
+    }
+
     /// The pivot line's acceleration `Ẍ_p` of a sliding building with the tower
-    /// standing on it: (B) with `θ̇ = θ̈ = 0` and `F = −μk σ N`, `N = M g_e` for
-    /// both normal-force laws, so `Ẍ_p = −μk σ g_e`.
+    /// standing on it: (B) with `θ̇ = θ̈ = 0` and the kinetic friction of
+    /// `N = M g_e` (both normal-force laws), divided by `M`.
     #[inline(always)]
     pub(crate) fn resting_slide<T: Real>(&self, sigma: f64, g_e: T) -> T {
-        g_e * (-self.mu_k * sigma)
+        self.kinetic_friction(sigma, g_e)
+    }
+
+    /// Bounds of `|ü|` and `|u⃛|` over a step for a building sliding under a
+    /// standing tower, `ü = Ẍ_p − a_g` with `Ẍ_p` from [`Kernel::resting_slide`]
+    /// (proportional to `g_e`): `|ü| <= |Ẍ_p(g_e max)| + max|a_g|` and
+    /// `|u⃛| <= |Ẍ_p(max|ġ_e|)| + max|ȧ_g|`, given upper bounds of `g_e`,
+    /// `|ġ_e|`, `|a_g|` and `|ȧ_g|` on the step.
+    #[inline(always)]
+    pub(crate) fn resting_slide_bounds(&self, g_e: f64, g_rate: f64, a_max: f64, a_rate: f64) -> (f64, f64) {
+        (self.resting_slide(1.0, g_e).abs() + a_max, self.resting_slide(1.0, g_rate).abs() + a_rate)
     }
 
     /// The pivot line's acceleration `Ẍ_p` under a standing tower: the ground's
@@ -239,17 +284,18 @@ impl Kernel {
     #[inline(always)]
     pub(crate) fn rocking_on_sliding_building<T: Real>(&self, lean: Lean<T>, sigma: f64, theta_dot: T, g_e: T) -> (T, T) {
         let s = lean.s;
-        let friction = self.mu_k * sigma;
+        // F / N: the kinetic friction law is proportional to N.
+        let per_normal = self.kinetic_friction(sigma, 1.0);
         let w2 = theta_dot * theta_dot;
         // (T):  I θ̈ + c Ẍ_p = t_rhs, with c = m2 R cos φ.
         let c = lean.cos_phi * self.m2r;
         let t_rhs = -(lean.sin_phi * g_e * (s * self.m2r));
-        // (B) with F = −μk σ N, N from (N) split into its θ̈ term and the rest:
-        //   (c + [dyn] μk σ s m2 R sin φ) θ̈ + M Ẍ_p = −s m2 R sin φ θ̇² − μk σ N₀.
+        // (B) with F = (F/N) N, N from (N) split into its θ̈ term and the rest:
+        //   (c − [dyn] (F/N) s m2 R sin φ) θ̈ + M Ẍ_p = −s m2 R sin φ θ̇² + F(N₀).
         let zero_acc = T::from(0.0);
         let n0 = self.normal_force(lean, theta_dot, zero_acc, g_e);
-        let a21 = if self.dynamic { c + lean.sin_phi * (friction * s * self.m2r) } else { c };
-        let b_rhs = -(lean.sin_phi * w2 * (s * self.m2r)) - n0 * friction;
+        let a21 = if self.dynamic { c - lean.sin_phi * (per_normal * s * self.m2r) } else { c };
+        let b_rhs = -(lean.sin_phi * w2 * (s * self.m2r)) + self.kinetic_friction(sigma, n0);
         let det = T::from(self.inertia * self.total) - c * a21;
         if det.value() <= 0.0 {
             return (T::from(f64::NAN), T::from(f64::NAN));
@@ -287,5 +333,109 @@ impl Kernel {
         let lever = cos_t * y - sin_t * xr;
         let centripetal = cos_t * xr + sin_t * y;
         (dx, acc_pivot + lever * theta_ddot - centripetal * theta_dot * theta_dot)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The bounds the step's screening relies on, against the equations they
+    //! come from: random states and inputs, each equation evaluated with its
+    //! exact time derivative (on jets), must stay inside. A bound that is too
+    //! tight fails here, not by skipping a transition in a run. Each bound is
+    //! also shown to be reached (to 1e-6) where the equation says it is, so a
+    //! loose bound is seen as well.
+
+    use super::*;
+    use crate::jet::Jet;
+    use crate::reference::solid_block;
+    use crate::regime::SlipDirection;
+    use crate::{Building, NormalForce};
+    use proptest::prelude::*;
+
+    const G: f64 = 9.81;
+
+    fn kernel(width: f64, height: f64, mu_k: f64) -> Kernel {
+        let building = Building::new(2.0e6, 1.25, mu_k, NormalForce::Constant).unwrap_or_else(|e| panic!("{e}"));
+        Kernel::new(&Model::new(Some(solid_block(width, height)), Some(building), G).unwrap_or_else(|e| panic!("{e}")))
+    }
+
+    /// Rounding of the bound against that of the equation: a few operations
+    /// on numbers of the same size, each within half an ulp; the screening
+    /// pads every bound by a relative 1e-9 on top.
+    const ROUNDING: f64 = 1e-14;
+
+    proptest! {
+        /// (T) with `Ẍ_p = a_g`: `|θ̈|` and `|θ⃛|` inside
+        /// [`Kernel::tower_acceleration_bound`] and [`Kernel::tower_jerk_bound`]
+        /// for every lean, pivot, velocity and input within the given maxima.
+        #[test]
+        fn tower_equation_stays_inside_its_bounds(
+            width in 0.2..4.0f64, slender in 1.5..8.0f64,
+            theta in -1.5..1.5f64, theta_dot in -3.0..3.0f64, positive in any::<bool>(),
+            a_g in -1.0..1.0f64, a_rate in -1.0..1.0f64, g_e in 0.2..1.0f64, g_rate in -1.0..1.0f64,
+            a_max in 0.0..20.0f64, a_rate_max in 0.0..500.0f64, g_max in 9.81..20.0f64, g_rate_max in 0.0..500.0f64,
+        ) {
+            let k = kernel(width, slender * width, 0.5);
+            let s = if positive { 1.0 } else { -1.0 };
+            let lean = k.lean(s, Jet::new(theta, theta_dot));
+            let theta_ddot = k.tower_equation(lean, Jet::new(a_g * a_max, a_rate * a_rate_max), Jet::new(g_e * g_max, g_rate * g_rate_max));
+            let (bound, reach) = k.tower_acceleration_bound(g_max, a_max);
+            prop_assert!(theta_ddot.v.abs() <= bound * (1.0 + ROUNDING), "θ̈ = {} > {bound}", theta_ddot.v);
+            let jerk = k.tower_jerk_bound(reach, g_rate_max, a_rate_max, theta_dot.abs());
+            prop_assert!(theta_ddot.d.abs() <= jerk * (1.0 + ROUNDING), "θ⃛ = {} > {jerk}", theta_ddot.d);
+        }
+
+        /// A building sliding under a standing tower: `|ü|` and `|u⃛|` inside
+        /// [`Kernel::resting_slide_bounds`], both directions of slip.
+        #[test]
+        fn resting_slide_stays_inside_its_bounds(
+            mu_k in 0.0..1.2f64, positive in any::<bool>(),
+            a_g in -1.0..1.0f64, a_rate in -1.0..1.0f64, g_e in 0.2..1.0f64, g_rate in -1.0..1.0f64,
+            a_max in 0.0..20.0f64, a_rate_max in 0.0..500.0f64, g_max in 9.81..20.0f64, g_rate_max in 0.0..500.0f64,
+        ) {
+            let k = kernel(1.0, 4.0, mu_k);
+            let dir = if positive { SlipDirection::Positive } else { SlipDirection::Negative };
+            let regime = Regime { tower: TowerRegime::Rest, building: BuildingRegime::Slip(dir) };
+            let zero = Jet::from(0.0);
+            let acc = k.accelerations(regime, Jet::new(a_g * a_max, a_rate * a_rate_max), Jet::new(g_e * g_max, g_rate * g_rate_max), zero, zero);
+            let (bound, rate_bound) = k.resting_slide_bounds(g_max, g_rate_max, a_max, a_rate_max);
+            prop_assert!(acc.slip.v.abs() <= bound * (1.0 + ROUNDING), "ü = {} > {bound}", acc.slip.v);
+            prop_assert!(acc.slip.d.abs() <= rate_bound * (1.0 + ROUNDING), "u⃛ = {} > {rate_bound}", acc.slip.d);
+        }
+    }
+
+    /// The bounds are reached: (T)'s `|θ̈|` where `(sin φ, cos φ)` is parallel
+    /// to `(s g_e, a_g)`, and the resting slide's `|ü|` where the friction and
+    /// the ground push the same way, and each term of `|θ⃛|`'s bound where it
+    /// alone acts. A bound made looser than the equation by
+    /// more than 1e-6 fails here.
+    #[test]
+    fn the_bounds_are_sharp() {
+        let k = kernel(1.0, 4.0, 0.6);
+        let (g_e, a_g, s) = (G, 3.0, 1.0);
+        // φ = atan2(s g_e, a_g), so θ = s (α − φ).
+        let phi = (s * g_e).atan2(a_g);
+        let theta_ddot = k.tower_equation(k.lean(s, s * (k.alpha - phi)), a_g, g_e);
+        let (bound, reach) = k.tower_acceleration_bound(g_e, a_g);
+        assert!((theta_ddot.abs() / bound - 1.0).abs() < 1e-6, "{theta_ddot} against {bound}");
+        // θ⃛'s first term alone (θ̇ = 0): φ = atan2(s ġ_e, ȧ_g).
+        let (g_rate, a_rate) = (40.0, 30.0);
+        let phi = (s * g_rate).atan2(a_rate);
+        let jet = k.tower_equation(k.lean(s, Jet::from(s * (k.alpha - phi))), Jet::new(a_g, a_rate), Jet::new(g_e, g_rate));
+        let jerk = k.tower_jerk_bound(reach, g_rate, a_rate, 0.0);
+        assert!((jet.d.abs() / jerk - 1.0).abs() < 1e-6, "{} against {jerk}", jet.d);
+        // Its second alone (constant inputs): φ = atan2(−s a_g, g_e).
+        let theta_dot = 2.0;
+        let phi = (-s * a_g).atan2(g_e);
+        let jet = k.tower_equation(k.lean(s, Jet::new(s * (k.alpha - phi), theta_dot)), Jet::from(a_g), Jet::from(g_e));
+        let jerk = k.tower_jerk_bound(reach, 0.0, 0.0, theta_dot);
+        assert!((jet.d.abs() / jerk - 1.0).abs() < 1e-6, "{} against {jerk}", jet.d);
+        let regime = Regime {
+            tower: TowerRegime::Rest,
+            building: BuildingRegime::Slip(SlipDirection::Positive),
+        };
+        let acc = k.accelerations(regime, a_g, g_e, 0.0, 0.0);
+        let (bound, _) = k.resting_slide_bounds(g_e, 0.0, a_g, 0.0);
+        assert!((acc.slip.abs() / bound - 1.0).abs() < 1e-12, "{} against {bound}", acc.slip);
     }
 }

@@ -13,7 +13,8 @@
 //!
 //! Coulomb's law for impulses: the building sticks through the impact
 //! (`u̇⁺ = 0`) when the impulse that needs satisfies `|P| ≤ μs N_imp`; otherwise
-//! it slides with `P = −μk σ N_imp`, `σ = sgn u̇⁺ = −sgn P_stick`. On a fixed
+//! it slides with the kinetic friction of `N_imp`
+//! ([`Kernel::kinetic_friction`], `P = −μk σ N_imp`), `σ = sgn u̇⁺ = −sgn P_stick`. On a fixed
 //! base, or a building that stays stuck from rest, this is Housner's
 //! `θ̇⁺ = r θ̇⁻`. `r` is the ratio of angular velocities (the ratio of kinetic
 //! energies is `r²`).
@@ -117,11 +118,12 @@ impl Kernel {
         let m2h = self.m2 * 0.5 * self.height;
         let m2b = self.m2 * self.half_width;
         let total = self.total;
-        // Slide: P = −μk σ N_imp = c (θ̇⁺ + θ̇⁻) with c = μk σ s m2 b, so
+        // Slide: P is the kinetic friction of N_imp = −s m2 b (θ̇⁺ + θ̇⁻),
+        // P = c (θ̇⁺ + θ̇⁻) with c the friction of N = −s m2 b, so
         //   I θ̇⁺ + m2 h u̇⁺ = angular,
         //   (m2 h − c) θ̇⁺ + M u̇⁺ = M u̇⁻ + (m2 h + c) θ̇⁻.
         let sigma = -p_stick.signum();
-        let c = self.mu_k * sigma * s * m2b;
+        let c = self.kinetic_friction(sigma, -s * m2b);
         let q = total * slip_vel + (m2h + c) * theta_dot;
         let det = inertia * total - m2h * (m2h - c);
         let theta_after = (angular * total - m2h * q) / det;
@@ -156,7 +158,7 @@ impl Kernel {
             };
         }
         let sigma = -p_stick.signum();
-        let impulse = -self.mu_k * sigma * n_imp;
+        let impulse = self.kinetic_friction(sigma, n_imp);
         AfterImpact {
             theta_dot: 0.0,
             slip_vel: slip_vel + (m2h * theta_dot + impulse) / self.total,

@@ -76,7 +76,7 @@ impl<O: Observer + ?Sized> Observer for &mut O {
 #[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Interpolant {
-    Constant([f64; 4]),
+    Constant(State),
     Dense(DenseOutput<4>),
     /// A free flight of the impact cascade in closed form (`cascade.rs`).
     Flight(Flight),
@@ -127,12 +127,12 @@ impl Step<'_> {
     pub fn sample(&self, t: f64) -> Sample {
         let y = match self.interpolant {
             Interpolant::Constant(y) => y,
-            Interpolant::Dense(d) => d.state(t),
+            Interpolant::Dense(d) => State::from_components(&d.state(t)),
             Interpolant::Flight(f) => f.state(t),
         };
         let a_g = self.piece.eval(t);
         let a_v = self.vpiece.eval(t);
-        let acc = self.kernel.accelerations(self.regime, a_g, self.kernel.g + a_v, y[0], y[1]);
+        let acc = self.kernel.accelerations(self.regime, a_g, self.kernel.g + a_v, y.theta, y.theta_dot);
         let pivot = match self.regime.tower {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
@@ -140,8 +140,8 @@ impl Step<'_> {
         let (top_dx, top_abs_acc) = self.kernel.point_kinematics(
             pivot.map(Pivot::sign),
             (0.0, self.kernel.height),
-            crate::trig::sin_cos(y[0]),
-            y[1],
+            crate::trig::sin_cos(y.theta),
+            y.theta_dot,
             acc.theta,
             a_g + acc.slip,
         );
@@ -149,7 +149,7 @@ impl Step<'_> {
             t,
             ground_acc: a_g,
             ground_acc_v: a_v,
-            state: State::from_array(y),
+            state: y,
             theta_ddot: acc.theta,
             slip_acc: acc.slip,
             top_dx,

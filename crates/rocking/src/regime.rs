@@ -1,5 +1,8 @@
 //! The regimes of the two bodies (docs/src/model.md, "Regimes and transitions") and the state.
 
+use crate::equations::Accelerations;
+use crate::jet::Jet;
+
 /// Side of the base corner the tower pivots on, `s = sgn θ`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Pivot {
@@ -142,27 +145,68 @@ impl Regime {
 }
 
 /// The state of the two bodies: the tower's rotation relative to the building
-/// and the building's slip relative to the ground.
+/// and the building's slip relative to the ground. Inside the engine the same
+/// four names carry other numbers too: the state's time derivative
+/// `(θ̇, θ̈, u̇, ü)`, or each component with its own derivative (a jet).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct State {
+pub struct State<T = f64> {
     /// Rotation `θ` (rad), positive leaning towards `+x`.
-    pub theta: f64,
+    pub theta: T,
     /// Angular velocity `θ̇` (rad/s).
-    pub theta_dot: f64,
+    pub theta_dot: T,
     /// Slip `u` (m), positive towards `+x`.
-    pub slip: f64,
+    pub slip: T,
     /// Slip velocity `u̇` (m/s).
-    pub slip_vel: f64,
+    pub slip_vel: T,
 }
 
 impl State {
-    #[inline]
-    pub(crate) fn from_array(y: [f64; 4]) -> Self {
+    /// The state from the components the integrator carries: the first `N`
+    /// of `(θ, θ̇, u, u̇)` (2 on a fixed base, 4 on a building), the others zero.
+    #[inline(always)]
+    pub(crate) fn from_components<const N: usize>(y: &[f64; N]) -> Self {
+        let c = |i: usize| if i < N { y[i] } else { 0.0 };
         Self {
-            theta: y[0],
-            theta_dot: y[1],
-            slip: y[2],
-            slip_vel: y[3],
+            theta: c(0),
+            theta_dot: c(1),
+            slip: c(2),
+            slip_vel: c(3),
         }
+    }
+
+    /// The first `N` components of `(θ, θ̇, u, u̇)`: what the integrator carries.
+    #[inline(always)]
+    pub(crate) fn components<const N: usize>(self) -> [f64; N] {
+        let all = [self.theta, self.theta_dot, self.slip, self.slip_vel];
+        std::array::from_fn(|i| all[i])
+    }
+
+    /// The time derivative `(θ̇, θ̈, u̇, ü)` of the state, given its accelerations.
+    #[inline(always)]
+    pub(crate) fn rate(self, acc: Accelerations<f64>) -> Self {
+        Self {
+            theta: self.theta_dot,
+            theta_dot: acc.theta,
+            slip: self.slip_vel,
+            slip_vel: acc.slip,
+        }
+    }
+
+    /// Each component with its time derivative along the solution.
+    #[inline(always)]
+    pub(crate) fn jets(self, acc: Accelerations<f64>) -> State<Jet> {
+        State {
+            theta: Jet::new(self.theta, self.theta_dot),
+            theta_dot: Jet::new(self.theta_dot, acc.theta),
+            slip: Jet::new(self.slip, self.slip_vel),
+            slip_vel: Jet::new(self.slip_vel, acc.slip),
+        }
+    }
+
+    /// Whether two states are the same bit for bit (what a cache may rely on).
+    #[inline(always)]
+    pub(crate) fn same_bits(self, other: Self) -> bool {
+        let bits = |s: Self| [s.theta, s.theta_dot, s.slip, s.slip_vel].map(f64::to_bits);
+        bits(self) == bits(other)
     }
 }

@@ -1,7 +1,7 @@
 //! The summary of a run: peaks located on the dense output, counts and times.
 
 use crate::equations::Kernel;
-use crate::regime::{Motion, Regime, TowerRegime};
+use crate::regime::{Motion, Regime, State, TowerRegime};
 
 /// Why a run ended (diffsol's `OdeSolverStopReason`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -204,8 +204,8 @@ impl Tracker {
     /// The response at an instant (an event or the start): displacements, top
     /// acceleration and pivot reactions.
     #[inline]
-    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, g_e: f64, y: &[f64; 4]) {
-        self.displacement(y[0], y[2]);
+    pub(crate) fn instant(&mut self, kernel: &Kernel, regime: Regime, a_g: f64, g_e: f64, y: &State) {
+        self.displacement(y.theta, y.slip);
         if !kernel.has_tower {
             return;
         }
@@ -213,12 +213,12 @@ impl Tracker {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p.sign()),
         };
-        let lean = s.map(|s| kernel.lean(s, y[0]));
-        let acc = kernel.accelerations_leaning(regime.building, lean, a_g, g_e, y[1]);
+        let lean = s.map(|s| kernel.lean(s, y.theta));
+        let acc = kernel.accelerations_leaning(regime.building, lean, a_g, g_e, y.theta_dot);
         let acc_pivot = a_g + acc.slip;
         let rotation = lean.map_or((0.0, 1.0), |lean| kernel.rotation(lean));
-        let top = kernel.point_kinematics(s, (0.0, kernel.height), rotation, y[1], acc.theta, acc_pivot).1;
-        let (fx, fy) = kernel.pivot_reactions(lean, y[1], acc.theta, acc_pivot, g_e);
+        let top = kernel.point_kinematics(s, (0.0, kernel.height), rotation, y.theta_dot, acc.theta, acc_pivot).1;
+        let (fx, fy) = kernel.pivot_reactions(lean, y.theta_dot, acc.theta, acc_pivot, g_e);
         self.top(top);
         self.pivot(fx, fy);
     }
@@ -230,11 +230,11 @@ impl Tracker {
     }
 
     /// Closes the summary at the end of the run.
-    pub(crate) fn finish(mut self, kernel: &Kernel, t: f64, y: &[f64; 4]) -> Summary {
-        self.displacement(y[0], y[2]);
+    pub(crate) fn finish(mut self, kernel: &Kernel, t: f64, y: &State) -> Summary {
+        self.displacement(y.theta, y.slip);
         let s = &mut self.summary;
         s.end_time = t;
-        s.final_slip = y[2];
+        s.final_slip = y.slip;
         // The top displacement relative to the building grows monotonically with θ
         // for |θ| < π/2, so its peaks are at the extremes of θ.
         let top = |theta: f64| {

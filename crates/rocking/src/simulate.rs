@@ -28,7 +28,7 @@
 //! exact derivatives.
 
 use crate::cascade::Flight;
-use crate::condition::{conditions, pivot_sign, state_jets, Condition, MAX_CONDITIONS};
+use crate::condition::{conditions, pivot_sign, Condition, MAX_CONDITIONS};
 use crate::equations::{Accelerations, Kernel};
 use crate::error::{positive, Error, Parameter};
 use crate::event::{Event, EventKind};
@@ -199,7 +199,11 @@ fn run<O: Observer, const N: usize>(
             building: BuildingRegime::Stick,
         },
         t: 0.0,
-        y: [initial.theta, initial.theta_dot, 0.0, 0.0],
+        y: State {
+            theta: initial.theta,
+            theta_dot: initial.theta_dot,
+            ..State::default()
+        },
         segment: ground.segment(0.0),
         vsegment: NO_MOTION.segment(0.0),
         free_fall: f64::INFINITY,
@@ -238,16 +242,7 @@ struct Watched {
 /// depend on `θ̇`).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn watched(
-    kernel: &Kernel,
-    regime: Regime,
-    piece: &Piece,
-    vpiece: &Piece,
-    list: &[Condition],
-    t: f64,
-    y: &[f64; 4],
-    acc: Option<Accelerations<f64>>,
-) -> Watched {
+fn watched(kernel: &Kernel, regime: Regime, piece: &Piece, vpiece: &Piece, list: &[Condition], t: f64, y: &State, acc: Option<Accelerations<f64>>) -> Watched {
     let a_g = piece.eval_jet(t);
     // No vertical input (a constant piece) spares a call per instant.
     let g_e = match *vpiece {
@@ -256,68 +251,74 @@ fn watched(
     };
     let mut w = Watched::default();
     let TowerRegime::Rocking(pivot) = regime.tower else {
-        let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y[0], y[1]));
-        let yj = state_jets(y, acc.theta, acc.slip);
+        let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y.theta, y.theta_dot));
+        let yj = y.jets(acc);
         for (slot, c) in w.conditions.iter_mut().zip(list) {
             *slot = c.value(kernel, regime, a_g, g_e, &yj);
         }
         return w;
     };
     let s = pivot.sign();
-    let lean = kernel.lean(s, Jet::new(y[0], y[1]));
+    let lean = kernel.lean(s, Jet::new(y.theta, y.theta_dot));
     let mut yj;
     let (theta_ddot, acc_pivot) = match regime.building {
         BuildingRegime::Stick => {
             let theta_ddot = kernel.tower_equation(lean, a_g, g_e);
-            yj = state_jets(y, theta_ddot.v, 0.0);
+            yj = y.jets(Accelerations {
+                theta: theta_ddot.v,
+                slip: 0.0,
+            });
             (theta_ddot, a_g)
         }
         BuildingRegime::Slip(dir) => {
-            let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y[0], y[1]));
-            yj = state_jets(y, acc.theta, acc.slip);
-            kernel.rocking_on_sliding_building(lean, dir.sign(), yj[1], g_e)
+            let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y.theta, y.theta_dot));
+            yj = y.jets(acc);
+            kernel.rocking_on_sliding_building(lean, dir.sign(), yj.theta_dot, g_e)
         }
     };
-    yj[0] = Jet::new(y[0], y[1]);
+    yj.theta = Jet::new(y.theta, y.theta_dot);
     let demand = (!list.is_empty() && regime.building == BuildingRegime::Stick && kernel.has_building)
-        .then(|| kernel.rocking_stick_demand(lean, yj[1], theta_ddot, a_g, g_e));
+        .then(|| kernel.rocking_stick_demand(lean, yj.theta_dot, theta_ddot, a_g, g_e));
     for (slot, &c) in w.conditions.iter_mut().zip(list) {
         *slot = match (c, demand) {
             // What `value` gives, without its call (not inlined: inlining it
             // everywhere cost 7 M instructions of the sweep, the call here 2.7 M).
-            (Condition::Impact | Condition::Overturn, _) => c.theta_margin(s, yj[0]),
+            (Condition::Impact | Condition::Overturn, _) => c.theta_margin(s, yj.theta),
             (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(force, normal, kernel.mu_s),
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
     }
     w.top = kernel
-        .point_kinematics(Some(s), (0.0, kernel.height), kernel.rotation(lean), yj[1], theta_ddot, acc_pivot)
+        .point_kinematics(Some(s), (0.0, kernel.height), kernel.rotation(lean), yj.theta_dot, theta_ddot, acc_pivot)
         .1;
-    (w.fx, w.fy) = kernel.pivot_reactions(Some(lean), yj[1], theta_ddot, acc_pivot, g_e);
+    (w.fx, w.fy) = kernel.pivot_reactions(Some(lean), yj.theta_dot, theta_ddot, acc_pivot, g_e);
     w
 }
 
 /// [`Watched`] at `t` on a step's dense output.
 #[inline]
 fn watched_on<const N: usize>(kernel: &Kernel, regime: Regime, pieces: (&Piece, &Piece), list: &[Condition], d: &DenseOutput<N>, t: f64) -> Watched {
-    watched(kernel, regime, pieces.0, pieces.1, list, t, &wide(&d.state(t)), None)
+    watched(kernel, regime, pieces.0, pieces.1, list, t, &State::from_components(&d.state(t)), None)
 }
 
 /// The one condition `c` with its time derivative at `t` on a step's dense
 /// output (root finding on it needs nothing else [`watched`] computes).
 #[inline]
 fn condition_on<const N: usize>(kernel: &Kernel, regime: Regime, pieces: (&Piece, &Piece), c: Condition, d: &DenseOutput<N>, t: f64) -> Jet {
-    let y = wide(&d.state(t));
+    let y = State::from_components(&d.state(t));
     let a_g = pieces.0.eval_jet(t);
     let g_e = Jet::from(kernel.g) + pieces.1.eval_jet(t);
-    let acc = kernel.accelerations(regime, a_g.v, g_e.v, y[0], y[1]);
-    c.value(kernel, regime, a_g, g_e, &state_jets(&y, acc.theta, acc.slip))
+    let acc = kernel.accelerations(regime, a_g.v, g_e.v, y.theta, y.theta_dot);
+    c.value(kernel, regime, a_g, g_e, &y.jets(acc))
 }
 
 /// The accelerations in a right-hand side `f = (θ̇, θ̈, u̇, ü)`.
 #[inline(always)]
-fn accelerations_of(f: &[f64; 4]) -> Accelerations<f64> {
-    Accelerations { theta: f[1], slip: f[3] }
+fn accelerations_of(f: &State) -> Accelerations<f64> {
+    Accelerations {
+        theta: f.theta_dot,
+        slip: f.slip_vel,
+    }
 }
 
 /// Whether a velocity `v` (θ̇ or u̇) with end values and exact slopes `v0`,
@@ -436,7 +437,7 @@ struct Run<'a, O: Observer, const N: usize> {
     end: f64,
     regime: Regime,
     t: f64,
-    y: [f64; 4],
+    y: State,
     /// The ground's segment that holds `t` (right-continuous).
     segment: Segment,
     /// The vertical input's segment that holds `t`.
@@ -472,14 +473,14 @@ struct Run<'a, O: Observer, const N: usize> {
 #[derive(Debug, Clone, Copy)]
 struct Settled {
     t: f64,
-    y: [f64; 4],
+    y: State,
     regime: Regime,
     pieces: (Piece, Piece),
     acc: Accelerations<f64>,
 }
 
 /// An instant for the tracker: regime, `a_g`, `g_e` and state.
-type Instant = (Regime, f64, f64, [f64; 4]);
+type Instant = (Regime, f64, f64, State);
 
 /// Feeds `tracker` the response at `instant`.
 fn track(tracker: &mut Tracker, kernel: &Kernel, (regime, a_g, g_e, y): Instant) {
@@ -507,18 +508,6 @@ impl Deferred {
         self.next = 0;
         self.items.iter_mut().filter_map(Option::take)
     }
-}
-
-/// `(θ, θ̇, u, u̇)` from the integrated components (the others are zero).
-#[inline(always)]
-fn wide<const N: usize>(y: &[f64; N]) -> [f64; 4] {
-    std::array::from_fn(|i| if i < N { y[i] } else { 0.0 })
-}
-
-/// The integrated components of `(θ, θ̇, u, u̇)`.
-#[inline(always)]
-fn narrow<const N: usize>(y: [f64; 4]) -> [f64; N] {
-    std::array::from_fn(|i| y[i])
 }
 
 /// The error of a failed step; `dynamic`: the building has the dynamic normal force.
@@ -569,7 +558,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// ([`free_motion_overturns`]; unknown while input remains or the building slides).
     fn end_verdict(&self) -> (EndState, Option<bool>) {
         let k = self.kernel;
-        let (theta, theta_dot) = (self.y[0], self.y[1]);
+        let (theta, theta_dot) = (self.y.theta, self.y.theta_dot);
         let state = match self.regime.tower {
             _ if self.tracker.summary.end_reason == EndReason::Overturned => EndState::Overturned,
             _ if !k.has_tower => EndState::Rest,
@@ -664,7 +653,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// The accelerations at the current instant.
     fn accelerations_now(&self) -> Accelerations<f64> {
-        self.kernel.accelerations(self.regime, self.a_g(self.t), self.g_e(self.t), self.y[0], self.y[1])
+        self.kernel
+            .accelerations(self.regime, self.a_g(self.t), self.g_e(self.t), self.y.theta, self.y.theta_dot)
     }
 
     /// Moves to the next segment end, or to the first instant on the way where a
@@ -686,7 +676,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // `a_g` and `g + a_v` together need not be: its extrema, located
                 // on the exact derivatives of both pieces, split it into
                 // monotone parts.
-                let yj = state_jets(&y, 0.0, 0.0);
+                let yj = y.jets(Accelerations::default());
                 let jet = |t: f64| c.value(kernel, regime, piece.eval_jet(t), Jet::from(kernel.g) + vpiece.eval_jet(t), &yj);
                 let mut points = Points::default();
                 points.push((self.t, v0));
@@ -780,27 +770,24 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (kernel, regime, piece, vpiece) = (self.kernel, self.regime, self.segment.piece, self.vsegment.piece);
         let g = kernel.g;
         let mut rhs = |t: f64, y: &[f64; N]| {
-            let y = wide(y);
-            let acc = accelerations(t, y[0], y[1]);
-            narrow([y[1], acc.theta, y[3], acc.slip])
+            let y = State::from_components(y);
+            y.rate(accelerations(t, y.theta, y.theta_dot)).components()
         };
         let (list, n) = conditions(kernel, regime);
         let list = &list[..n];
         if self.restart {
             // Bit for bit what `settle` saw, or nothing is reused.
-            let same = |c: &Settled| {
-                c.t.to_bits() == self.t.to_bits() && c.y.map(f64::to_bits) == self.y.map(f64::to_bits) && c.regime == regime && c.pieces == (piece, vpiece)
-            };
+            let same = |c: &Settled| c.t.to_bits() == self.t.to_bits() && c.y.same_bits(self.y) && c.regime == regime && c.pieces == (piece, vpiece);
             match self.settled.take().filter(same) {
                 Some(c) => {
                     // `settle` left `watch` computed there.
                     let y = self.y;
                     self.stepper
-                        .restart_with(&mut rhs, self.t, narrow(y), narrow([y[1], c.acc.theta, y[3], c.acc.slip]), self.end);
+                        .restart_with(&mut rhs, self.t, y.components(), y.rate(c.acc).components(), self.end);
                 }
                 None => {
-                    self.stepper.restart(&mut rhs, self.t, narrow(self.y), self.end);
-                    let f = wide(&self.stepper.f);
+                    self.stepper.restart(&mut rhs, self.t, self.y.components(), self.end);
+                    let f = State::from_components(&self.stepper.f);
                     self.watch = watched(kernel, regime, &piece, &vpiece, list, self.t, &self.y, Some(accelerations_of(&f)));
                 }
             }
@@ -810,9 +797,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let bound = self.segment.kink.min(self.vsegment.kink).min(self.free_fall).min(self.end);
         self.stepper.step(&mut rhs, bound).map_err(|e| step_error(e, kernel.dynamic))?;
         let (t0, t1) = (self.stepper.t_old, self.stepper.t);
-        let (y0, y1) = (wide(&self.stepper.y_old), wide(&self.stepper.y));
+        let (y0, y1) = (State::from_components(&self.stepper.y_old), State::from_components(&self.stepper.y));
         // The right-hand side at both ends: the velocities' exact slopes.
-        let (f0, f1) = (wide(&self.stepper.f_old()), wide(&self.stepper.f));
+        let (f0, f1) = (State::from_components(&self.stepper.f_old()), State::from_components(&self.stepper.f));
         let h = t1 - t0;
         let w0 = self.watch;
         let w1 = watched(kernel, regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&f1)));
@@ -844,17 +831,21 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // which the dense output also interpolates: the enclosure is
                 // that of the computed motion, to the step's local error.
                 BuildingRegime::Stick => {
-                    let reach = (g_e * g_e + a_max * a_max).sqrt();
-                    let rate_bound = kernel.k * reach;
-                    let w_max = 0.5 * (y0[1].abs() + y1[1].abs() + rate_bound * h);
-                    let third_bound = kernel.k * ((g_rate * g_rate + a_rate * a_rate).sqrt() + w_max * reach);
-                    !free_of_roots(Jet::new(y0[1], f0[1]), Jet::new(y1[1], f1[1]), h, rate_bound, third_bound)
-                        && !theta_proved_inside(
-                            taylor_enclosure([y0[0], y0[1], f0[1]], [y1[0], y1[1], f1[1]], h, third_bound),
-                            self.tracker.summary.theta_range,
-                            list,
-                            s,
-                        )
+                    let (rate_bound, reach) = kernel.tower_acceleration_bound(g_e, a_max);
+                    let w_max = 0.5 * (y0.theta_dot.abs() + y1.theta_dot.abs() + rate_bound * h);
+                    let third_bound = kernel.tower_jerk_bound(reach, g_rate, a_rate, w_max);
+                    !free_of_roots(
+                        Jet::new(y0.theta_dot, f0.theta_dot),
+                        Jet::new(y1.theta_dot, f1.theta_dot),
+                        h,
+                        rate_bound,
+                        third_bound,
+                    ) && !theta_proved_inside(
+                        taylor_enclosure([y0.theta, y0.theta_dot, f0.theta_dot], [y1.theta, y1.theta_dot, f1.theta_dot], h, third_bound),
+                        self.tracker.summary.theta_range,
+                        list,
+                        s,
+                    )
                 }
                 BuildingRegime::Slip(_) => true,
             };
@@ -862,13 +853,16 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             && match (regime.tower, regime.building) {
                 // The complex slides as one body: ü = −μk σ g_e − a_g, so
                 // |ü| <= μk g_e + max|a_g| and |u⃛| <= μk max|ġ_e| + max|ȧ_g|.
-                (TowerRegime::Rest, BuildingRegime::Slip(_)) => !free_of_roots(
-                    Jet::new(y0[3], f0[3]),
-                    Jet::new(y1[3], f1[3]),
-                    h,
-                    kernel.mu_k * g_e + a_max,
-                    kernel.mu_k * g_rate + a_rate,
-                ),
+                (TowerRegime::Rest, BuildingRegime::Slip(_)) => {
+                    let (rate_bound, curvature_bound) = kernel.resting_slide_bounds(g_e, g_rate, a_max, a_rate);
+                    !free_of_roots(
+                        Jet::new(y0.slip_vel, f0.slip_vel),
+                        Jet::new(y1.slip_vel, f1.slip_vel),
+                        h,
+                        rate_bound,
+                        curvature_bound,
+                    )
+                }
                 (TowerRegime::Rocking(_), BuildingRegime::Slip(_)) => true,
                 (_, BuildingRegime::Stick) => false,
             };
@@ -964,7 +958,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             } else {
                 let value = |t: f64| {
                     dense.as_ref().map_or(v1, |d| {
-                        let y = wide(&d.state(t));
+                        let y = State::from_components(&d.state(t));
                         let (a_g, g_e) = if c.uses_ground() { (piece.eval(t), g + vpiece.eval(t)) } else { (0.0, g) };
                         c.value(kernel, regime, a_g, g_e, &y)
                     })
@@ -1043,7 +1037,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.emit_step(interpolant, t_stop)?;
         if let (Some((tb, c)), Some(d)) = (first, dense) {
             self.t = tb;
-            self.y = if tb >= t1 { y1 } else { wide(&d.state(tb)) };
+            self.y = if tb >= t1 { y1 } else { State::from_components(&d.state(tb)) };
             self.restart = true;
             self.record_instant();
             self.switch(c)?;
@@ -1052,7 +1046,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.t = t1;
         self.y = y1;
         self.watch = w1;
-        self.tracker.displacement(y1[0], y1[2]);
+        self.tracker.displacement(y1.theta, y1.slip);
         if rocking {
             self.tracker.top(w1.top.v);
             self.tracker.pivot(w1.fx.v, w1.fy.v);
@@ -1079,12 +1073,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         }
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return None };
         let s = pivot.sign();
-        let omega = s * self.y[1];
+        let omega = s * self.y.theta_dot;
         let input_over = |segment: &Segment| segment.kink == f64::INFINITY && matches!(segment.piece, Piece::Constant(a) if a == 0.0);
-        if self.y[0] != 0.0 || omega <= 0.0 || !input_over(&self.segment) || !input_over(&self.vsegment) {
+        if self.y.theta != 0.0 || omega <= 0.0 || !input_over(&self.segment) || !input_over(&self.vsegment) {
             return None;
         }
-        let flight = self.kernel.free_flight(s, self.t, omega, self.y[2], 0.1 * self.rtol.sqrt())?;
+        let flight = self.kernel.free_flight(s, self.t, omega, self.y.slip, 0.1 * self.rtol.sqrt())?;
         if self.t + flight.duration >= self.end {
             return None;
         }
@@ -1097,7 +1091,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             // demand inside departs from these by a relative `ψm² / 8`.
             let margin = 1e-6 * self.kernel.mu_s * self.kernel.total * self.kernel.g;
             let (list, n) = conditions(self.kernel, self.regime);
-            let ends = [self.y, [s * flight.apex, 0.0, self.y[2], 0.0]];
+            let apex = State {
+                theta: s * flight.apex,
+                theta_dot: 0.0,
+                slip: self.y.slip,
+                slip_vel: 0.0,
+            };
+            let ends = [self.y, apex];
             let holds = ends.iter().all(|y| {
                 list[..n]
                     .iter()
@@ -1140,10 +1140,20 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             if let Err(e) = self.emit_step(|| Interpolant::Flight(flight), t1) {
                 break Err(e);
             }
-            let apex = [flight.s * flight.apex, 0.0, flight.slip, 0.0];
+            let apex = State {
+                theta: flight.s * flight.apex,
+                theta_dot: 0.0,
+                slip: flight.slip,
+                slip_vel: 0.0,
+            };
             self.note_instant(0.0, self.kernel.g, apex);
             self.t = t1;
-            self.y = [0.0, -flight.s * flight.omega, flight.slip, 0.0];
+            self.y = State {
+                theta: 0.0,
+                theta_dot: -flight.s * flight.omega,
+                slip: flight.slip,
+                slip_vel: 0.0,
+            };
             self.restart = true;
             self.note_instant(self.a_g(self.t), self.g_e(self.t), self.y);
             if let Err(e) = self.switch(Condition::Impact).and_then(|()| self.next_instant()) {
@@ -1164,7 +1174,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Feeds the tracker the response at `y` in the current regime, or keeps
     /// it among the last instants of a cascade (see [`Self::advance_free_flight`]).
-    fn note_instant(&mut self, a_g: f64, g_e: f64, y: [f64; 4]) {
+    fn note_instant(&mut self, a_g: f64, g_e: f64, y: State) {
         let instant = (self.regime, a_g, g_e, y);
         if self.deferring {
             self.deferred.push(instant);
@@ -1212,7 +1222,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // Conditions on θ alone (a rocking tower on a fixed base): the
                 // value is θ's and the derivative θ̇'s, with no ground motion,
                 // lean or acceleration to evaluate (one of these per impact).
-                let (s, theta) = (pivot_sign(self.regime), Jet::new(self.y[0], self.y[1]));
+                let (s, theta) = (pivot_sign(self.regime), Jet::new(self.y.theta, self.y.theta_dot));
                 let mut conditions = [Jet::default(); MAX_CONDITIONS];
                 for (slot, c) in conditions.iter_mut().zip(&list[..n]) {
                     *slot = c.theta_margin(s, theta);
@@ -1305,7 +1315,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// uplift located on the input, `θ̈` is zero to rounding).
     fn falls_back(&self) -> bool {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return false };
-        if self.y[0] != 0.0 || self.y[1] != 0.0 {
+        if self.y.theta != 0.0 || self.y.theta_dot != 0.0 {
             return false;
         }
         let lifts = match pivot {
@@ -1373,8 +1383,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 EventKind::Slip
             }
             Condition::SlipStop => {
-                self.y[3] = 0.0;
-                let (force, normal) = self.kernel.stick_demand(self.regime.tower, a_g, self.g_e(self.t), self.y[0], self.y[1]);
+                self.y.slip_vel = 0.0;
+                let (force, normal) = self
+                    .kernel
+                    .stick_demand(self.regime.tower, a_g, self.g_e(self.t), self.y.theta, self.y.theta_dot);
                 let old = self.regime.building;
                 if force.abs() <= self.kernel.mu_s * normal {
                     self.regime.building = BuildingRegime::Stick;
@@ -1400,10 +1412,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     fn impact(&mut self) -> Result<(), Error> {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return Ok(()) };
         let before = self.y;
-        let after = self.kernel.impact_law(pivot.sign(), self.y[1], self.y[3], self.regime.building);
-        self.y[0] = 0.0;
-        self.y[1] = after.theta_dot;
-        self.y[3] = after.slip_vel;
+        let after = self.kernel.impact_law(pivot.sign(), self.y.theta_dot, self.y.slip_vel, self.regime.building);
+        self.y.theta = 0.0;
+        self.y.theta_dot = after.theta_dot;
+        self.y.slip_vel = after.slip_vel;
         self.tracker.summary.impacts += 1;
         self.regime.tower = TowerRegime::Rocking(pivot.flipped());
         let old = self.regime.building;
@@ -1421,9 +1433,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let at = self.y;
             self.emit(kind, at)?;
         }
-        if self.y[1].abs() < REST_ANGULAR_VELOCITY {
+        if self.y.theta_dot.abs() < REST_ANGULAR_VELOCITY {
             let before = self.y;
-            self.y[1] = 0.0;
+            self.y.theta_dot = 0.0;
             self.regime.tower = TowerRegime::Rest;
             let g_e = self.g_e(self.t);
             let acc_pivot = self.kernel.pivot_acceleration_at_rest(self.regime.building, self.a_g(self.t), g_e);
@@ -1435,13 +1447,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         Ok(())
     }
 
-    fn emit(&mut self, kind: EventKind, before: [f64; 4]) -> Result<(), Error> {
+    fn emit(&mut self, kind: EventKind, before: State) -> Result<(), Error> {
         self.tracker.summary.events += 1;
         let event = Event {
             time: self.t,
             kind,
-            before: State::from_array(before),
-            after: State::from_array(self.y),
+            before,
+            after: self.y,
             regime: self.regime,
         };
         if let ControlFlow::Break(halt) = self.observer.on_event(&event) {
