@@ -22,8 +22,10 @@
 //!
 //! Crossings are found by the signs of each function at the ends of 16 equal
 //! parts of every step, then narrowed by regula falsi: a condition that holds
-//! only for a moment between two of those points is missed. Every step ends
-//! at the next kink of the ground motion.
+//! only for a moment between two of those points is missed, except a return
+//! to the zero a step starts on (a small rebound after an impact), which is
+//! looked for by halving the first part. Every step ends at the next kink of
+//! the ground motion.
 
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::error::Error;
@@ -335,6 +337,22 @@ impl<const S: usize> Runner<'_, S> {
                     break;
                 }
                 let fb = f(tb);
+                if j == 1 && fa >= 0.0 && fb >= 0.0 {
+                    // The step starts on the condition's zero (an impact or a
+                    // slip has just reset θ_k or u̇): the function leaves it
+                    // negative and may come back inside this first part, as a
+                    // block's small rebound does. Look for the negative side
+                    // by halving towards the start.
+                    let mut t = tb;
+                    for _ in 0..60 {
+                        t = t0 + 0.5 * (t - t0);
+                        let ft = f(t);
+                        if ft < 0.0 {
+                            (ta, fa) = (t, ft);
+                            break;
+                        }
+                    }
+                }
                 if fa < 0.0 && fb >= 0.0 {
                     let bracket = find_crossing(f, ta, fa, tb, fb, 0.0);
                     if best.is_none_or(|(_, t)| bracket.tb < t) {
