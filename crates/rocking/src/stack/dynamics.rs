@@ -49,6 +49,7 @@ pub struct Frame {
 
 impl Frame {
     /// The frame of `pose` in `coords`.
+    #[inline]
     pub fn new(coords: Coordinates, pose: Pose) -> Self {
         let mut jac = [[[0.0; 2]; MAX_COORDINATES]; MAX_BLOCKS];
         let mut rot = [[0.0; MAX_COORDINATES]; MAX_BLOCKS];
@@ -99,15 +100,32 @@ pub struct InterfaceLoad {
     pub moment: f64,
 }
 
+/// `θ̈_k` by interface and `ü` from the accelerations of `coords`.
+#[inline]
+fn split(coords: &Coordinates, q_ddot: &[f64; MAX_COORDINATES]) -> ([f64; MAX_BLOCKS], f64) {
+    let mut theta_ddot = [0.0; MAX_BLOCKS];
+    let mut slip_acc = 0.0;
+    for (a, c) in coords.list().iter().enumerate() {
+        match *c {
+            Coordinate::Slip => slip_acc = q_ddot[a],
+            Coordinate::Theta(k) => theta_ddot[k] = q_ddot[a],
+        }
+    }
+    (theta_ddot, slip_acc)
+}
+
 impl Stack {
     /// Mass matrix and forces `M q̈ = f` of Kane's equations for `frame`,
     /// including the foundation's kinetic friction when `coords` has the slip
     /// (`sigma` its direction).
-    pub(crate) fn kane_system(&self, frame: &Frame, sigma: f64, a_g: f64, g_e: f64) -> (Matrix, [f64; MAX_COORDINATES]) {
+    #[inline]
+    pub(crate) fn kane_system(&self, frame: &Frame, sigma: f64, a_g: f64, g_e: f64, m: &mut Matrix, f: &mut [f64; MAX_COORDINATES]) {
         let coords = frame.coords.list();
         let n = coords.len();
-        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
-        let mut f = [0.0; MAX_COORDINATES];
+        for row in m.iter_mut().take(n) {
+            row[..n].fill(0.0);
+        }
+        f[..n].fill(0.0);
         let m1 = self.building_mass();
         for (i, block) in self.blocks.iter().enumerate() {
             let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
@@ -141,36 +159,50 @@ impl Stack {
                 f[u] -= friction * weight;
             }
         }
-        (m, f)
     }
 
     pub(crate) fn dynamic_normal_force(&self) -> bool {
         self.building.is_some_and(|b| b.normal_force() == NormalForce::Dynamic)
     }
 
-    /// Everything about the motion at one instant: `q̈` from Kane's equations
-    /// of `regime` (NaN where the system has no solution: Painlevé's paradox
-    /// of the dynamic normal force, a light building under high friction),
-    /// and the bodies' accelerations.
-    pub fn snapshot(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> Snapshot {
-        let coords = Coordinates::of(self, regime);
-        let frame = Frame::new(coords, Pose::new(self, regime, state));
+    /// `q̈` from Kane's equations of `regime` in `frame`, NaN where the system
+    /// has no solution (Painlevé's paradox of the dynamic normal force, a
+    /// light building under high friction).
+    #[inline]
+    fn solve_kane(&self, frame: &Frame, regime: &StackRegime, a_g: f64, g_e: f64) -> [f64; MAX_COORDINATES] {
         let sigma = match regime.building {
             BuildingRegime::Slip(d) => d.sign(),
             BuildingRegime::Stick => 0.0,
         };
-        let n = frame.coords.len();
-        let (m, f) = self.kane_system(&frame, sigma, a_g, g_e);
-        let (q_ddot, det) = solve(m, f, n);
-        let q_ddot = if det > 0.0 { q_ddot } else { [f64::NAN; MAX_COORDINATES] };
-        let mut theta_ddot = [0.0; MAX_BLOCKS];
-        let mut slip_acc = 0.0;
-        for (a, c) in frame.coords.list().iter().enumerate() {
-            match *c {
-                Coordinate::Slip => slip_acc = q_ddot[a],
-                Coordinate::Theta(k) => theta_ddot[k] = q_ddot[a],
-            }
+        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
+        let mut q_ddot = [0.0; MAX_COORDINATES];
+        self.kane_system(frame, sigma, a_g, g_e, &mut m, &mut q_ddot);
+        if solve(&mut m, &mut q_ddot, frame.coords.len()) > 0.0 {
+            q_ddot
+        } else {
+            [f64::NAN; MAX_COORDINATES]
         }
+    }
+
+    /// `θ̈_k` (0 for a stuck interface) and `ü` of `regime` at `state`: the
+    /// right-hand side of a run, without the bodies' accelerations of
+    /// [`Stack::snapshot`].
+    #[inline]
+    pub fn accelerations(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
+        let frame = Frame::new(Coordinates::of(self, regime), Pose::new(self, regime, state));
+        let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
+        split(&frame.coords, &q_ddot)
+    }
+
+    /// Everything about the motion at one instant: `q̈` from Kane's equations
+    /// of `regime` (NaN where the system has no solution) and the bodies'
+    /// accelerations.
+    #[inline]
+    pub fn snapshot(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> Snapshot {
+        let frame = Frame::new(Coordinates::of(self, regime), Pose::new(self, regime, state));
+        let n = frame.coords.len();
+        let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
+        let (theta_ddot, slip_acc) = split(&frame.coords, &q_ddot);
         let mut centre_acc = [[0.0; 2]; MAX_BLOCKS];
         let mut rotation_acc = [0.0; MAX_BLOCKS];
         for i in 0..self.len() {

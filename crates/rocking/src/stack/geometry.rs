@@ -101,6 +101,7 @@ impl Coordinates {
     }
 
     /// The rocking interfaces of `regime`, with the slip or without it.
+    #[inline]
     pub fn with_slip(stack: &Stack, regime: &StackRegime, slip: bool) -> Self {
         let mut list = ArrayVec::new();
         if slip {
@@ -167,6 +168,7 @@ pub struct Pose {
 impl Pose {
     /// The pose of `stack` in `regime` and `state` (a stuck interface's `θ_k`
     /// and `θ̇_k` are taken as 0 whatever the state holds).
+    #[inline]
     pub fn new(stack: &Stack, regime: &StackRegime, state: &StackState) -> Self {
         let n = stack.len();
         let mut pose = Self {

@@ -153,7 +153,8 @@ impl Stack {
         let has_building = self.building.is_some();
         let frame = Frame::new(Coordinates::with_slip(self, after, has_building), Pose::new(self, after, at));
         let n = frame.coords.len();
-        let (m, _) = self.kane_system(&frame, 0.0, 0.0, 0.0);
+        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
+        self.kane_system(&frame, 0.0, 0.0, 0.0, &mut m, &mut [0.0; MAX_COORDINATES]);
         // Generalised momenta before, the vertical momentum before, and the
         // vertical momentum per unit of each new velocity.
         let mut p = [0.0; MAX_COORDINATES];
@@ -168,7 +169,8 @@ impl Stack {
         }
         let vertical_impulse = |q: &[f64; MAX_COORDINATES]| (0..n).map(|a| vertical_per[a] * q[a]).sum::<f64>() - vertical_before;
         let Some(building) = self.building else {
-            let (q, _) = solve(m, p, n);
+            let mut q = p;
+            solve(&mut m, &mut q, n);
             return Balance {
                 normal_impulse: vertical_impulse(&q),
                 velocities: q,
@@ -187,9 +189,9 @@ impl Stack {
                 reduced[a - 1][b - 1] = m[a][b];
             }
         }
-        let (q_reduced, _) = solve(reduced, reduced_p, n - 1);
+        solve(&mut reduced, &mut reduced_p, n - 1);
         let mut stick = [0.0; MAX_COORDINATES];
-        stick[1..n].copy_from_slice(&q_reduced[..n - 1]);
+        stick[1..n].copy_from_slice(&reduced_p[..n - 1]);
         let p_stick = (1..n).map(|b| m[0][b] * stick[b]).sum::<f64>() - p[0];
         let n_stick = vertical_impulse(&stick);
         let stuck = Balance {
@@ -210,7 +212,8 @@ impl Stack {
         }
         let mut ps = p;
         ps[0] += friction * vertical_before;
-        let (q, det) = solve(ms, ps, n);
+        let mut q = ps;
+        let det = solve(&mut ms, &mut q, n);
         if !(det > 0.0 && q[0] * sigma > 0.0 && q[..n].iter().all(|v| v.is_finite())) {
             // The sliding solution contradicts its own direction: Coulomb's
             // law admits only the stuck one.

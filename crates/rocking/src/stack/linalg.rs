@@ -9,9 +9,10 @@ use super::geometry::MAX_COORDINATES;
 pub(crate) type Matrix = [[f64; MAX_COORDINATES]; MAX_COORDINATES];
 
 /// Solves `a x = b` for the leading `n × n` block by elimination with partial
-/// pivoting. Returns `x` and the determinant of `a` (0 where a pivot vanishes,
-/// and then `x` is NaN).
-pub(crate) fn solve(mut a: Matrix, mut b: [f64; MAX_COORDINATES], n: usize) -> ([f64; MAX_COORDINATES], f64) {
+/// pivoting, in place: `b` becomes `x`, `a` is overwritten. Returns the
+/// determinant of `a` (0 where a pivot vanishes, and then `x` is NaN).
+#[inline]
+pub(crate) fn solve(a: &mut Matrix, b: &mut [f64; MAX_COORDINATES], n: usize) -> f64 {
     let mut det = 1.0;
     for col in 0..n {
         let mut best = col;
@@ -21,7 +22,8 @@ pub(crate) fn solve(mut a: Matrix, mut b: [f64; MAX_COORDINATES], n: usize) -> (
             }
         }
         if a[best][col] == 0.0 || !a[best][col].is_finite() {
-            return ([f64::NAN; MAX_COORDINATES], 0.0);
+            *b = [f64::NAN; MAX_COORDINATES];
+            return 0.0;
         }
         if best != col {
             a.swap(best, col);
@@ -40,15 +42,14 @@ pub(crate) fn solve(mut a: Matrix, mut b: [f64; MAX_COORDINATES], n: usize) -> (
             }
         }
     }
-    let mut x = [0.0; MAX_COORDINATES];
     for row in (0..n).rev() {
         let mut sum = b[row];
         for j in row + 1..n {
-            sum -= a[row][j] * x[j];
+            sum -= a[row][j] * b[j];
         }
-        x[row] = sum / a[row][row];
+        b[row] = sum / a[row][row];
     }
-    (x, det)
+    det
 }
 
 #[cfg(test)]
@@ -67,10 +68,10 @@ mod tests {
         a[2][..3].copy_from_slice(&[2.0, 0.0, 3.0]);
         let mut b = [0.0; MAX_COORDINATES];
         b[..3].copy_from_slice(&[7.0, 3.0, 11.0]);
-        let (x, det) = solve(a, b, 3);
+        let det = solve(&mut a, &mut b, 3);
         // Small integers through a few eliminations: exact to a few ulps.
-        for (got, want) in x.iter().zip([1.0, 2.0, 3.0]) {
-            assert!((got - want).abs() < 1e-14, "{x:?}");
+        for (got, want) in b.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((got - want).abs() < 1e-14, "{b:?}");
         }
         assert!((det + 8.0).abs() < 1e-13, "{det}");
     }

@@ -197,17 +197,17 @@ impl<const S: usize> Runner<'_, S> {
     fn rhs(&self, regime: &StackRegime, t: f64, y: &[f64; S]) -> [f64; S] {
         let n = self.n();
         let state = self.unpack(y);
-        let snap = self.stack.snapshot(regime, &state, self.ground.acceleration(t), self.stack.gravity);
+        let (theta_ddot, slip_acc) = self.stack.accelerations(regime, &state, self.ground.acceleration(t), self.stack.gravity);
         let mut dy = [0.0; S];
         for k in 0..n {
             if regime.interfaces[k] != Interface::Stuck {
                 dy[k] = y[n + k];
-                dy[n + k] = snap.theta_ddot[k];
+                dy[n + k] = theta_ddot[k];
             }
         }
         if matches!(regime.building, BuildingRegime::Slip(_)) {
             dy[2 * n] = y[2 * n + 1];
-            dy[2 * n + 1] = snap.slip_acc;
+            dy[2 * n + 1] = slip_acc;
         }
         dy
     }

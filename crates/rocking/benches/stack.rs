@@ -1,0 +1,64 @@
+//! Speed of the stack's stepper against the engine: the 0.5 m × 2 m block of
+//! `housner.rs` (20 s of 0.5 g at 2 Hz, rtol 1e-8, atol 1e-10) run by the
+//! engine and as a one-block stack, and the same block carrying a 0.3 m ×
+//! 0.6 m block of the same density, on a fixed base and on a sliding building.
+//!
+//! `cargo bench -p rocking --bench stack`.
+
+// criterion_group! generates an undocumented function.
+#![allow(missing_docs)]
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rocking::stack::run::{run, RunSettings};
+use rocking::stack::{Block, Stack, StackState};
+use rocking::{reference::solid_block, simulate, Building, GroundMotion, Harmonic, Initial, Model, NormalForce, Settings};
+use std::hint::black_box;
+
+const G: f64 = 9.81;
+
+fn ok<T, E: std::fmt::Display>(r: Result<T, E>) -> T {
+    match r {
+        Ok(v) => v,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+fn stacks(c: &mut Criterion) {
+    let ground = GroundMotion::Harmonic(ok(Harmonic::new(0.5 * G, 2.0, 20.0, 0.0)));
+    let settings = Settings {
+        duration: 20.0,
+        rtol: 1e-8,
+        atol: 1e-10,
+    };
+    // Samples only at the start and the end: the engine's run records nothing either.
+    let stack_settings = RunSettings {
+        duration: 20.0,
+        rtol: 1e-8,
+        atol: 1e-10,
+        sample_interval: 20.0,
+    };
+    let tower = solid_block(0.5, 2.0);
+    let lower = Block::from_tower(&tower);
+    // Density of the 0.5 m × 2 m block of 1000 kg, 1000 kg/m² in the plane.
+    let upper = ok(Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6));
+    for (name, building) in [
+        ("fixed_base", None),
+        ("sliding_building", Some(ok(Building::new(2.0e4, 0.3, 0.25, NormalForce::Dynamic)))),
+    ] {
+        let model = ok(Model::new(Some(tower), building, G));
+        c.bench_function(&format!("engine_one_block_{name}"), |b| {
+            b.iter(|| simulate(black_box(&model), black_box(&ground), Initial::default(), &settings, &mut ()).map(|s| s.max_abs_theta()))
+        });
+        let one = ok(Stack::new(&[lower], building, G));
+        c.bench_function(&format!("stack_one_block_{name}"), |b| {
+            b.iter(|| run(black_box(&one), black_box(&ground), &StackState::default(), &stack_settings).map(|r| r.events.len()))
+        });
+        let two = ok(Stack::new(&[lower, upper], building, G));
+        c.bench_function(&format!("stack_two_blocks_{name}"), |b| {
+            b.iter(|| run(black_box(&two), black_box(&ground), &StackState::default(), &stack_settings).map(|r| r.events.len()))
+        });
+    }
+}
+
+criterion_group!(benches, stacks);
+criterion_main!(benches);
