@@ -39,6 +39,11 @@ fn uplift_thresholds_of_a_standing_stack() {
     let (m1, m2) = (3.2e5, 4.0e4);
     let thresholds = [G * 2.0 * (m1 + m2) / (m1 * 10.0 + m2 * 23.0), G * 1.5 / 3.0];
     assert!(thresholds[0] < thresholds[1], "the shaft lifts first here");
+    // The thresholds the stack reports (for `rocking check`): a few products
+    // and one ratio each.
+    for (got, want) in stack.uplift_thresholds().iter().zip(thresholds) {
+        assert!((got - want).abs() < 1e-14 * want, "{got} vs {want}");
+    }
     for (k, threshold) in thresholds.into_iter().enumerate() {
         for sign in [1.0, -1.0] {
             // 1e-9 either side: far above the rounding of a few products (1e-15),

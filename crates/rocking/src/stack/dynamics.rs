@@ -33,6 +33,7 @@ use super::linalg::{solve, Matrix};
 use super::{Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::body::NormalForce;
 use crate::regime::BuildingRegime;
+use arrayvec::ArrayVec;
 
 /// The kinematics of one instant in one set of coordinates: the pose, and for
 /// each block `∂G_i/∂q`, `∂φ_i/∂q` and the velocity-squared part of `G̈_i`.
@@ -112,6 +113,21 @@ fn split(coords: &Coordinates, q_ddot: &[f64; MAX_COORDINATES]) -> ([f64; MAX_BL
         }
     }
     (theta_ddot, slip_acc)
+}
+
+impl InterfaceLoad {
+    /// The friction the interface needs, `|T'| / N'` (along and normal to the
+    /// supporting surface): blocks never slide on one another in the model,
+    /// so a demand above the interface's friction coefficient is reported,
+    /// not acted on (for the tower, Shenton's `|f_x| / f_y`). Infinite where
+    /// `N' ≤ 0`: the blocks above are in free flight.
+    pub fn friction_demand(&self) -> f64 {
+        if self.normal > 0.0 {
+            self.tangential.abs() / self.normal
+        } else {
+            f64::INFINITY
+        }
+    }
 }
 
 impl Stack {
@@ -274,6 +290,24 @@ impl Stack {
     pub fn uplift_margin(&self, snap: &Snapshot, k: usize) -> (f64, f64) {
         let load = self.interface_load(snap, k);
         (load.moment.abs() - load.normal * self.blocks[k].width / 2.0, load.moment.signum())
+    }
+
+    /// The horizontal ground acceleration (m/s², in either direction) that
+    /// lifts each interface of the stack standing at rest on a sticking
+    /// building (or a fixed base), from [`Stack::uplift_margin`]: at rest
+    /// every block moves with the ground, so `M_k` is linear in `a_g` and
+    /// `N_k` does not depend on it; the threshold is where `|M_k| = N_k B_k/2`.
+    /// For one block, `g tan α`.
+    pub fn uplift_thresholds(&self) -> ArrayVec<f64, MAX_BLOCKS> {
+        let rest = StackState::default();
+        let still = self.snapshot(&StackRegime::REST, &rest, 0.0, self.gravity);
+        let pushed = self.snapshot(&StackRegime::REST, &rest, 1.0, self.gravity);
+        (0..self.len())
+            .map(|k| {
+                let (at0, at1) = (self.interface_load(&still, k), self.interface_load(&pushed, k));
+                (at0.normal * self.blocks[k].width / 2.0 - at0.moment.abs()) / (at1.moment - at0.moment).abs()
+            })
+            .collect()
     }
 }
 

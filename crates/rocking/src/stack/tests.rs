@@ -123,6 +123,44 @@ fn one_block_stick_demand_is_the_engines() {
     }
 }
 
+/// The load on interface 1 (the tower on the building) is the tower's pivot
+/// reaction: `(T, V) = m2 (f_x, f_y)` of the engine, and its friction demand
+/// Shenton's `|f_x| / f_y`.
+#[test]
+fn one_block_interface_load_is_the_pivot_reaction() {
+    let (kernel, stack) = pair(NormalForce::Dynamic, 0.5, 0.4);
+    for &(theta, theta_dot) in &STATES {
+        for &a_g in &GROUND {
+            let pivot = crate::regime::Pivot::of_sign(theta);
+            let lean = kernel.lean(pivot.sign(), theta);
+            for building_regime in [BuildingRegime::Stick, BuildingRegime::Slip(SlipDirection::Negative)] {
+                let engine = kernel.accelerations(
+                    Regime {
+                        tower: TowerRegime::Rocking(pivot),
+                        building: building_regime,
+                    },
+                    a_g,
+                    G,
+                    theta,
+                    theta_dot,
+                );
+                let (fx, fy) = kernel.pivot_reactions(Some(lean), theta_dot, engine.theta, a_g + engine.slip, G);
+                let snap = stack.snapshot(
+                    &one_block_regime(TowerRegime::Rocking(pivot), building_regime),
+                    &state(theta, theta_dot, 0.0),
+                    a_g,
+                    G,
+                );
+                let load = stack.interface_load(&snap, 0);
+                let scale = G + a_g.abs() + kernel.radius * (theta_dot * theta_dot + engine.theta.abs());
+                close(load.tangential / kernel.m2, fx, scale, "f_x");
+                close(load.normal / kernel.m2, fy, scale, "f_y");
+                close(load.friction_demand(), fx.abs() / fy, scale / fy, "demand");
+            }
+        }
+    }
+}
+
 /// The impact law: the stack's generalised-momentum balance against the
 /// engine's one-tower law, on a building sticking or sliding before the
 /// impact, with friction that lets it stick, slide, or (a sliding building
