@@ -44,6 +44,38 @@ fn one_line_per_key() {
     assert!(listed.contains(&"tower.width") && listed.contains(&"simulation.atol"), "{listed:?}");
 }
 
+/// `--json` describes the keys `rocking keys` lists, in the same order, with
+/// the symbols and units of a hand-checked sample (those of the key
+/// reference and of the figures' legends).
+#[test]
+fn json_describes_every_listed_key() {
+    let json = rocking(&["keys", "--json"]);
+    assert_eq!(json.code, Some(0), "{}", json.stderr);
+    let value: serde_json::Value = serde_json::from_str(&json.stdout).unwrap_or_else(|e| panic!("{e}: {}", json.stdout));
+    let described: Vec<&serde_json::Value> = ["scenario", "assessment"]
+        .iter()
+        .flat_map(|part| value[part].as_array().into_iter().flatten())
+        .collect();
+    let keys: Vec<&str> = described.iter().filter_map(|k| k["key"].as_str()).collect();
+    let lines = rocking(&["keys"]);
+    let listed: Vec<&str> = lines.stdout.lines().filter_map(|l| l.split_whitespace().next()).collect();
+    assert_eq!(keys, listed);
+    let of = |key: &str| {
+        described
+            .iter()
+            .find(|k| k["key"] == key)
+            .map(|k| (k["symbol"].clone(), k["unit"].clone(), k["sweepable"].clone()))
+    };
+    let expect = |symbol: &str, unit: &str, sweepable: bool| Some((symbol.into(), unit.into(), sweepable.into()));
+    assert_eq!(of("tower.height"), expect("H", "m", true));
+    assert_eq!(of("ground.frequency"), expect("f", "Hz", true));
+    assert_eq!(of("building.mu_kinetic"), expect("μk", "", true));
+    assert_eq!(of("initial.theta_dot"), expect("θ̇0", "rad/s", true));
+    assert_eq!(of("tower.points"), expect("points", "m", false));
+    let units = described.iter().find(|k| k["key"] == "ground.units").map(|k| k["choices"].clone());
+    assert_eq!(units, Some(serde_json::json!(["g", "m/s2", "cm/s2"])));
+}
+
 /// `--version` prints the name and the version of the package's manifest, exit 0.
 #[test]
 fn version() {

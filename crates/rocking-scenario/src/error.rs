@@ -137,39 +137,18 @@ fn did_you_mean(s: &Option<&'static str>) -> String {
     s.map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
 }
 
-/// The scenario key of each parameter of the library: the one table where the
-/// library's typed names meet the file's keys.
+/// The scenario key of each parameter of the library: the key whose
+/// description ([`crate::SCENARIO_KEYS`]) says it sets the parameter; the
+/// bodies of the model are the `[tower]` (with or without a building).
 pub fn key_of(parameter: rocking::Parameter) -> &'static str {
-    use rocking::Parameter as P;
-    match parameter {
-        P::TowerWidth => "tower.width",
-        P::TowerHeight => "tower.height",
-        P::TowerDepth => "tower.depth",
-        P::TowerWallThickness => "tower.wall_thickness",
-        P::TowerMass => "tower.mass",
-        P::TowerDensity => "tower.density",
-        P::TowerInertiaPivot => "tower.inertia_pivot",
-        P::TowerRadius => "tower.radius",
-        P::TowerAlpha => "tower.alpha",
-        P::TowerRestitution => "tower.restitution",
-        P::BuildingMass => "building.mass",
-        P::BuildingMuStatic => "building.mu_static",
-        P::BuildingMuKinetic => "building.mu_kinetic",
-        P::GroundAmplitude => "ground.amplitude",
-        P::GroundFrequency => "ground.frequency",
-        P::GroundDuration => "ground.duration",
-        P::GroundPhase => "ground.phase",
-        P::GroundRickerCentre => "ground.t0",
-        P::Gravity => "simulation.g",
-        P::Duration => "simulation.duration",
-        P::RelativeTolerance => "simulation.rtol",
-        P::AbsoluteTolerance => "simulation.atol",
-        P::InitialTheta => "initial.theta",
-        P::InitialThetaDot => "initial.theta_dot",
-        P::Bodies => "tower",
-        // A parameter added to the library without a key here: named in words.
-        _ => "(parameter)",
+    if parameter == rocking::Parameter::Bodies {
+        return "tower";
     }
+    crate::SCENARIO_KEYS
+        .iter()
+        .find(|k| k.parameter == Some(parameter))
+        // A parameter added to the library without a key: named in words.
+        .map_or("(parameter)", |k| k.key)
 }
 
 impl From<rocking::Error> for Fault {
@@ -251,12 +230,23 @@ mod tests {
         assert_eq!(closest("colour", &["width", "height"]), None);
     }
 
-    /// Every parameter of the library has its own scenario key.
+    /// Every parameter of the library has its own scenario key, set by one
+    /// key of the description; a hand-checked sample.
     #[test]
     fn every_parameter_has_a_distinct_key() {
-        let keys: std::collections::BTreeSet<&str> = rocking::Parameter::ALL.iter().map(|&p| key_of(p)).collect();
-        assert_eq!(keys.len(), rocking::Parameter::ALL.len());
+        use rocking::Parameter as P;
+        let keys: std::collections::BTreeSet<&str> = P::ALL.iter().map(|&p| key_of(p)).collect();
+        assert_eq!(keys.len(), P::ALL.len());
         assert!(!keys.contains("(parameter)"));
+        let setting: Vec<P> = crate::SCENARIO_KEYS.iter().filter_map(|k| k.parameter).collect();
+        // All but the bodies (a section, not a key), each once.
+        assert_eq!(setting.len(), P::ALL.len() - 1);
+        assert!(P::ALL.iter().all(|p| *p == P::Bodies || setting.contains(p)));
+        assert_eq!(key_of(P::TowerWidth), "tower.width");
+        assert_eq!(key_of(P::GroundRickerCentre), "ground.t0");
+        assert_eq!(key_of(P::Gravity), "simulation.g");
+        assert_eq!(key_of(P::InitialThetaDot), "initial.theta_dot");
+        assert_eq!(key_of(P::Bodies), "tower");
     }
 
     #[test]

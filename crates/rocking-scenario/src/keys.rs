@@ -55,6 +55,26 @@ pub struct KeyDoc {
     pub meaning: &'static str,
     /// A value as written in a scenario file (TOML).
     pub example: &'static str,
+    /// Its symbol, in a plot's legend (`A = 0.5 g`) and beside a
+    /// dimensionless field of the page's form (`μs`); its name where it has none.
+    pub symbol: &'static str,
+    /// Its name in words, for a plot's axis (`ground frequency`, shown as
+    /// `ground frequency (Hz)`).
+    pub label: &'static str,
+    /// The default as a field of the page's form shows it when the key is
+    /// absent (`0`, `= width`); empty where the key is required or one of
+    /// two alternatives. For a key with [`choices`](Self::choices), a
+    /// non-empty placeholder is an extra first choice, "absent" (`(guess)`).
+    pub placeholder: &'static str,
+    /// The values of a string key that takes one of a fixed set, in the
+    /// order the parser lists them; empty for any other key.
+    pub choices: &'static [&'static str],
+    /// The library's parameter this key sets: an error of the library about
+    /// it names this key ([`crate::key_of`]).
+    pub parameter: Option<rocking::Parameter>,
+    /// Whether the page's form has a field for it (the page takes a record
+    /// by its own button, and a tower by its geometry).
+    pub on_form: bool,
 }
 
 impl KeyDoc {
@@ -65,6 +85,33 @@ impl KeyDoc {
     /// The key within its section (`"width"`).
     pub fn name(&self) -> &'static str {
         self.key.split_once('.').map_or(self.key, |(_, k)| k)
+    }
+    /// Whether a sweep can vary it: a number or a string (not a list or a table).
+    pub fn is_sweepable(&self) -> bool {
+        matches!(self.kind, KeyKind::Number | KeyKind::Text)
+    }
+    /// With its symbol and its words for a plot (see [`symbol`](Self::symbol), [`label`](Self::label)).
+    pub(crate) const fn shown(self, symbol: &'static str, label: &'static str) -> Self {
+        Self { symbol, label, ..self }
+    }
+    /// With the default a form's field shows (see [`placeholder`](Self::placeholder)).
+    pub(crate) const fn placeholder(self, placeholder: &'static str) -> Self {
+        Self { placeholder, ..self }
+    }
+    /// Taking one of `choices`.
+    pub(crate) const fn choices(self, choices: &'static [&'static str]) -> Self {
+        Self { choices, ..self }
+    }
+    /// Setting the library's `parameter`.
+    pub(crate) const fn sets(self, parameter: rocking::Parameter) -> Self {
+        Self {
+            parameter: Some(parameter),
+            ..self
+        }
+    }
+    /// Without a field on the page's form.
+    pub(crate) const fn off_form(self) -> Self {
+        Self { on_form: false, ..self }
     }
 }
 
@@ -85,9 +132,16 @@ pub(crate) const fn key(
         range,
         meaning,
         example,
+        symbol: "",
+        label: "",
+        placeholder: "",
+        choices: &[],
+        parameter: None,
+        on_form: true,
     }
 }
 
+use rocking::Parameter as P;
 use KeyKind::{Number, Points, Table, Text};
 
 /// Every key of a scenario, section by section, in the order the parser lists
@@ -101,7 +155,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "any string",
         "A name for the scenario, repeated in the outputs.",
         "\"tower on church\"",
-    ),
+    ).shown("name", "scenario name").off_form(),
     // [tower]
     key(
         "tower.width",
@@ -111,7 +165,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Width B of the tower in the plane of rocking.",
         "4.0",
-    ),
+    ).shown("B", "tower width B").sets(P::TowerWidth),
     key(
         "tower.height",
         Number,
@@ -120,8 +174,8 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Height H of the tower above the springing level.",
         "12.0",
-    ),
-    key("tower.mass", Number, "kg", "required (or density)", "> 0", "Mass m2 of the tower.", "1.5e5"),
+    ).shown("H", "tower height H").sets(P::TowerHeight),
+    key("tower.mass", Number, "kg", "required (or density)", "> 0", "Mass m2 of the tower.", "1.5e5").shown("m2", "tower mass m2").sets(P::TowerMass),
     key(
         "tower.density",
         Number,
@@ -130,8 +184,8 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; not with mass",
         "Density of the masonry: the mass is density × volume of the section.",
         "1800.0",
-    ),
-    key("tower.depth", Number, "m", "= width", "> 0", "Depth D out of the plane of rocking.", "4.0"),
+    ).shown("ρ", "tower density").sets(P::TowerDensity),
+    key("tower.depth", Number, "m", "= width", "> 0", "Depth D out of the plane of rocking.", "4.0").shown("depth", "tower depth").placeholder("= width").sets(P::TowerDepth),
     key(
         "tower.section",
         Text,
@@ -140,7 +194,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"solid\" or \"hollow\"",
         "A uniform prism, or a tube open at both ends (outer B × D, wall thickness t).",
         "\"hollow\"",
-    ),
+    ).shown("section", "tower section").choices(&["solid", "hollow"]),
     key(
         "tower.wall_thickness",
         Number,
@@ -149,7 +203,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0 and 2t < min(width, depth)",
         "Wall thickness t of a hollow section.",
         "0.8",
-    ),
+    ).shown("t", "tower wall thickness").sets(P::TowerWallThickness),
     key(
         "tower.inertia_pivot",
         Number,
@@ -158,7 +212,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> m2 R²; required with radius and alpha",
         "Moment of inertia I_O about a base corner; overrides the section's value.",
         "1.2e7",
-    ),
+    ).shown("I_O", "moment of inertia I_O").placeholder("the section's").sets(P::TowerInertiaPivot),
     key(
         "tower.restitution",
         Number,
@@ -167,7 +221,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "0 ≤ r ≤ 1",
         "Ratio r of the angular velocities after and before an impact (not the energy ratio r²).",
         "0.85",
-    ),
+    ).shown("r", "restitution r").placeholder("Housner's").sets(P::TowerRestitution),
     key(
         "tower.points",
         Points,
@@ -176,7 +230,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "finite coordinates",
         "Extra points (x, y) in tower coordinates (origin at the base centre) whose motion is reported.",
         "[[0.0, 12.0], [2.0, 6.0]]",
-    ),
+    ).shown("points", "extra tower points"),
     key(
         "tower.radius",
         Number,
@@ -185,7 +239,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; with mass, inertia_pivot and alpha",
         "R, the distance from a base corner to the centre of mass.",
         "6.32",
-    ),
+    ).shown("R", "tower radius R").sets(P::TowerRadius).off_form(),
     key(
         "tower.alpha",
         Number,
@@ -194,7 +248,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "0 < α < π/2; with mass, inertia_pivot and radius",
         "Slenderness angle α = atan(b/h).",
         "0.3217",
-    ),
+    ).shown("α", "slenderness angle α").sets(P::TowerAlpha).off_form(),
     // [building]
     key(
         "building.mass",
@@ -204,7 +258,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Mass m1 of the building without the tower.",
         "2.0e6",
-    ),
+    ).shown("m1", "building mass m1").sets(P::BuildingMass),
     key(
         "building.mu_static",
         Number,
@@ -213,7 +267,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "≥ 0",
         "Static friction coefficient μs of the foundation.",
         "1.25",
-    ),
+    ).shown("μs", "static friction μs").sets(P::BuildingMuStatic),
     key(
         "building.mu_kinetic",
         Number,
@@ -222,7 +276,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "0 ≤ μk ≤ μs",
         "Kinetic friction coefficient μk of the foundation.",
         "1.0",
-    ),
+    ).shown("μk", "kinetic friction μk").placeholder("= μs").sets(P::BuildingMuKinetic),
     key(
         "building.normal_force",
         Text,
@@ -231,7 +285,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"constant\" or \"dynamic\"",
         "Normal force on the foundation: M g (the paper's), or M g plus the tower's inertial term.",
         "\"dynamic\"",
-    ),
+    ).shown("normal force", "normal force").choices(&["constant", "dynamic"]),
     // [ground]
     key(
         "ground.type",
@@ -241,7 +295,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"harmonic\", \"sine-pulse\", \"cosine-pulse\", \"rectangular-pulse\", \"ricker\", \"record\", \"none\"",
         "The kind of horizontal ground acceleration.",
         "\"harmonic\"",
-    ),
+    ).shown("type", "ground motion type").choices(&["harmonic", "sine-pulse", "cosine-pulse", "rectangular-pulse", "ricker", "record", "none"]),
     key(
         "ground.amplitude",
         Number,
@@ -250,7 +304,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "≥ 0 for a harmonic (its phase gives the sign); any finite value for a pulse",
         "Peak ground acceleration A, in units of simulation.g.",
         "0.5",
-    ),
+    ).shown("A", "ground amplitude").sets(P::GroundAmplitude),
     key(
         "ground.amplitude_ratio",
         Number,
@@ -259,7 +313,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "as amplitude; needs a [tower]",
         "A / tan α: the amplitude as a multiple of the tower's uplift acceleration g tan α.",
         "1.5",
-    ),
+    ).shown("a_p/(g tan α)", "amplitude ratio a_p/(g tan α)"),
     key(
         "ground.frequency",
         Number,
@@ -268,7 +322,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Frequency f of the harmonic or of the pulse.",
         "5.0",
-    ),
+    ).shown("f", "ground frequency").sets(P::GroundFrequency),
     key(
         "ground.frequency_ratio",
         Number,
@@ -277,7 +331,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; needs a [tower]",
         "ω / p with ω = 2π f: the frequency as a multiple of the tower's frequency parameter p.",
         "2.0",
-    ),
+    ).shown("ω/p", "frequency ratio ω/p"),
     key(
         "ground.duration",
         Number,
@@ -286,7 +340,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "How long the harmonic shakes, or how long the rectangular pulse lasts; then a_g = 0.",
         "10.0",
-    ),
+    ).shown("duration", "shaking duration").sets(P::GroundDuration),
     key(
         "ground.phase",
         Number,
@@ -295,7 +349,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "finite",
         "Phase φ of the harmonic: a_g = A g sin(2π f t + φ).",
         "1.5708",
-    ),
+    ).shown("φ", "ground phase").placeholder("0").sets(P::GroundPhase),
     key(
         "ground.t0",
         Number,
@@ -304,7 +358,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Centre t0 of the Ricker wavelet, which lasts 0 ≤ t ≤ 2 t0.",
         "0.3",
-    ),
+    ).shown("t0", "pulse centre t0").placeholder("1.5 / f").sets(P::GroundRickerCentre),
     key(
         "ground.file",
         Text,
@@ -313,7 +367,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "a non-empty path, relative to the scenario file's folder",
         "The accelerogram to read.",
         "\"../../data/records/elcentro_1940_ns.AT2\"",
-    ),
+    ).shown("file", "record file").off_form(),
     key(
         "ground.text",
         Text,
@@ -322,7 +376,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "the content of a record file (AT2, ESM or CSV)",
         "The accelerogram itself, for callers without files (the page in the browser); errors name it `<text>`.",
         "\"time,acceleration\\n0,0\\n0.01,0.1\\n\"",
-    ),
+    ).shown("text", "record text").off_form(),
     key(
         "ground.format",
         Text,
@@ -331,7 +385,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"at2\", \"esm\" or \"csv\"",
         "Layout of the record: PEER NGA AT2, ESM/ITACA ASCII, or CSV.",
         "\"at2\"",
-    ),
+    ).shown("format", "record format").placeholder("guess").choices(&["at2", "esm", "csv"]),
     key(
         "ground.scale",
         Number,
@@ -340,7 +394,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "finite (negative mirrors the record)",
         "Factor applied to every sample of the record.",
         "1.5",
-    ),
+    ).shown("scale", "record scale").placeholder("1"),
     key(
         "ground.units",
         Text,
@@ -349,7 +403,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"g\", \"m/s2\" or \"cm/s2\"; CSV only",
         "Units of the acceleration column of a CSV record.",
         "\"cm/s2\"",
-    ),
+    ).shown("units", "record units").placeholder("g").choices(&["g", "m/s2", "cm/s2"]),
     key(
         "ground.dt",
         Number,
@@ -358,7 +412,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; CSV only",
         "Time step of a CSV record that has one acceleration column.",
         "0.01",
-    ),
+    ).shown("dt", "record time step"),
     key(
         "ground.vertical",
         Table,
@@ -367,7 +421,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "a table with the keys of [ground] above, but vertical",
         "Vertical ground acceleration a_v, positive upwards, written `[ground.vertical]`: any type, with the same keys, units and ranges as the horizontal motion (amplitudes in g). Gravity becomes g + a_v in the tower's equation, the normal force, the uplift and slip thresholds and the pivot reactions; where g + a_v reaches 0 the run stops with an error giving the instant. Its keys sweep as `ground.vertical.KEY`.",
         "{ type = \"harmonic\", amplitude = 0.2, frequency = 8.0 }",
-    ),
+    ).shown("a_v", "vertical ground motion"),
     // [initial]
     key(
         "initial.theta",
@@ -377,7 +431,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "|θ| < π/2; not with theta_over_alpha",
         "Initial rotation θ of the tower (> 0 leans towards +x).",
         "0.05",
-    ),
+    ).shown("θ0", "initial rotation θ0").placeholder("0").sets(P::InitialTheta),
     key(
         "initial.theta_over_alpha",
         Number,
@@ -386,7 +440,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "|ratio · α| < π/2; needs a [tower]",
         "Initial rotation as a multiple of α.",
         "0.5",
-    ),
+    ).shown("θ0/α", "initial rotation θ0/α").placeholder("0"),
     key(
         "initial.theta_dot",
         Number,
@@ -395,7 +449,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "finite; non-zero needs a [tower]",
         "Initial angular velocity θ̇ of the tower.",
         "0.0",
-    ),
+    ).shown("θ̇0", "initial angular velocity").placeholder("0").sets(P::InitialThetaDot),
     // [simulation]
     key(
         "simulation.duration",
@@ -405,7 +459,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Simulated time, shaking and free motion after it.",
         "20.0",
-    ),
+    ).shown("duration", "duration").placeholder("20").sets(P::Duration),
     key(
         "simulation.g",
         Number,
@@ -414,7 +468,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Gravity; also the unit of every acceleration given in g.",
         "9.81",
-    ),
+    ).shown("g", "gravity g").placeholder("9.81").sets(P::Gravity),
     key(
         "simulation.output_dt",
         Number,
@@ -423,7 +477,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0 and duration / output_dt ≤ 1e7",
         "Spacing of the rows of history.csv (events are written at their exact instants).",
         "0.005",
-    ),
+    ).shown("output_dt", "output interval").placeholder("0.005"),
     key(
         "simulation.rtol",
         Number,
@@ -432,7 +486,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Relative tolerance of the integrator (DOP853), per step.",
         "1e-8",
-    ),
+    ).shown("rtol", "relative tolerance").placeholder("1e-8").sets(P::RelativeTolerance),
     key(
         "simulation.atol",
         Number,
@@ -441,8 +495,69 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Absolute tolerance of the integrator (rad, rad/s, m, m/s).",
         "1e-10",
-    ),
+    ).shown("atol", "absolute tolerance").placeholder("1e-10").sets(P::AbsoluteTolerance),
 ];
+
+/// The keys of the vertical motion start so (`ground.vertical.amplitude`):
+/// each is the key of `[ground]` after it, for the vertical motion.
+pub const VERTICAL_PREFIX: &str = "ground.vertical.";
+
+/// A dotted key found in [`SCENARIO_KEYS`]: its description, and whether it
+/// is a key of the vertical motion (`ground.vertical.KEY`, described by
+/// `ground.KEY`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct KeyRef {
+    /// The description (of the horizontal key, for a vertical one).
+    pub doc: &'static KeyDoc,
+    /// Whether the key is of the vertical motion.
+    pub vertical: bool,
+}
+
+impl KeyRef {
+    /// The words of a plot's axis: the description's, `vertical ` before a key of the vertical motion.
+    pub fn label(&self) -> String {
+        if self.vertical {
+            format!("vertical {}", self.doc.label)
+        } else {
+            self.doc.label.to_string()
+        }
+    }
+    /// The symbol of a plot's legend: the description's, ` (vertical)` after a key of the vertical motion.
+    pub fn symbol(&self) -> String {
+        if self.vertical {
+            format!("{} (vertical)", self.doc.symbol)
+        } else {
+            self.doc.symbol.to_string()
+        }
+    }
+}
+
+/// The description of a dotted key (`tower.width`, `ground.vertical.amplitude`), if it is a scenario key.
+pub fn describe_key(key: &str) -> Option<KeyRef> {
+    let find = |key: &str| SCENARIO_KEYS.iter().find(|k| k.key == key);
+    match key.strip_prefix(VERTICAL_PREFIX) {
+        Some(name) => find(&format!("ground.{name}")).map(|doc| KeyRef { doc, vertical: true }),
+        None => find(key).map(|doc| KeyRef { doc, vertical: false }),
+    }
+}
+
+/// The keys a sweep can vary, in table order: the scalar keys (every one but
+/// lists and tables), those of `[ground]` again for the vertical motion where
+/// the table `ground.vertical` stands.
+pub(crate) fn sweepable_keys() -> Vec<&'static str> {
+    let mut keys = Vec::new();
+    for doc in SCENARIO_KEYS {
+        if doc.is_sweepable() {
+            keys.push(doc.key);
+        } else if doc.key == VERTICAL_PREFIX.trim_end_matches('.') {
+            // Built once (SWEEPABLE_KEYS holds them for the life of the
+            // program), so leaking the few names costs nothing.
+            let ground = SCENARIO_KEYS.iter().filter(|k| k.section() == Some("ground") && k.is_sweepable());
+            keys.extend(ground.map(|k| &*Box::leak(format!("{VERTICAL_PREFIX}{}", k.name()).into_boxed_str())));
+        }
+    }
+    keys
+}
 
 /// The keys of `section` (`"tower"`), without the section, in table order:
 /// what the parser accepts there.
@@ -465,6 +580,41 @@ fn ground_types_of(name: &str) -> Vec<&'static str> {
         .filter(|(_, kind)| kind.keys().contains(&name) && *kind != GroundKind::None || name == "type" || name == crate::ground::VERTICAL)
         .map(|(type_name, _)| *type_name)
         .collect()
+}
+
+/// Every key as JSON (`rocking keys --json`, and the page, which builds its
+/// form from it): `{ "scenario": [key, …], "assessment": [key, …] }`, each key
+/// an object with every field of its [`KeyDoc`] (`kind` as the reference
+/// writes it, `parameter` left out), `sweepable`, and for a key of
+/// `[ground]` the ground types that take it (`types`).
+pub fn keys_json() -> serde_json::Value {
+    let doc_json = |doc: &KeyDoc| {
+        let mut value = serde_json::json!({
+            "key": doc.key,
+            "section": doc.section(),
+            "name": doc.name(),
+            "kind": doc.kind.as_str(),
+            "unit": doc.unit,
+            "symbol": doc.symbol,
+            "label": doc.label,
+            "default": doc.default,
+            "placeholder": doc.placeholder,
+            "range": doc.range,
+            "meaning": doc.meaning,
+            "example": doc.example,
+            "choices": doc.choices,
+            "sweepable": doc.is_sweepable(),
+            "on_form": doc.on_form,
+        });
+        if doc.section() == Some("ground") {
+            value["types"] = serde_json::json!(ground_types_of(doc.name()));
+        }
+        value
+    };
+    serde_json::json!({
+        "scenario": SCENARIO_KEYS.iter().map(doc_json).collect::<Vec<_>>(),
+        "assessment": crate::assessment::ASSESSMENT_KEY_DOCS.iter().map(doc_json).collect::<Vec<_>>(),
+    })
 }
 
 /// Escapes `|` for a Markdown table cell.
@@ -609,7 +759,6 @@ fn key_row(out: &mut String, doc: &KeyDoc, types: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::axis::STRING_KEYS;
 
     /// The sections of the table are the parser's sections, in the same order,
     /// and its top-level keys are the parser's.
@@ -662,25 +811,50 @@ mod tests {
         }
     }
 
-    /// The sweepable keys are the scalar keys of the table, and the string
-    /// axes its string keys.
+    /// Every scenario key has its symbol and its words, no two keys the
+    /// same words; a hand-checked sample against the reference's units.
     #[test]
-    fn sweepable_and_string_keys_follow_the_table() {
-        // The scalar keys, and those of [ground] again under ground.vertical.
-        let scalar = |kind: Option<KeyKind>| -> Vec<String> {
-            let of_kind = |k: &&KeyDoc| k.kind != Points && k.kind != Table && kind.is_none_or(|kind| k.kind == kind);
-            let mut keys: Vec<String> = SCENARIO_KEYS.iter().filter(of_kind).map(|k| k.key.to_string()).collect();
-            let vertical = SCENARIO_KEYS.iter().filter(of_kind).filter(|k| k.section() == Some("ground"));
-            keys.extend(vertical.map(|k| format!("ground.vertical.{}", k.name())));
-            keys.sort_unstable();
-            keys
-        };
-        let mut sweepable: Vec<String> = SWEEPABLE_KEYS.iter().map(|k| k.to_string()).collect();
-        sweepable.sort_unstable();
-        assert_eq!(sweepable, scalar(None));
-        let mut strings: Vec<String> = STRING_KEYS.iter().map(|k| k.to_string()).collect();
-        strings.sort_unstable();
-        assert_eq!(strings, scalar(Some(Text)));
+    fn every_key_has_a_symbol_and_a_label() {
+        for doc in SCENARIO_KEYS {
+            assert!(!doc.symbol.is_empty() && !doc.label.is_empty(), "{}", doc.key);
+            assert_eq!(SCENARIO_KEYS.iter().filter(|k| k.label == doc.label).count(), 1, "{}", doc.label);
+        }
+        let shown = |key: &str| describe_key(key).map(|k| (k.symbol(), k.label(), k.doc.unit));
+        assert_eq!(shown("tower.width"), Some(("B".into(), "tower width B".into(), "m")));
+        assert_eq!(shown("building.mu_static"), Some(("μs".into(), "static friction μs".into(), "")));
+        assert_eq!(
+            shown("ground.vertical.frequency"),
+            Some(("f (vertical)".into(), "vertical ground frequency".into(), "Hz"))
+        );
+        assert_eq!(shown("simulation.g"), Some(("g".into(), "gravity g".into(), "m/s²")));
+        assert_eq!(shown("tower.points.x"), None);
+    }
+
+    /// The sweepable keys, counted by hand from the table: `name`, 11 of
+    /// `[tower]` (all but `points`), 4 of `[building]`, 14 of `[ground]` and
+    /// the same 14 of `[ground.vertical]`, 3 of `[initial]`, 5 of
+    /// `[simulation]`; a sample of each kind is typed as its description
+    /// says. (Their order is that of the committed reference page, which
+    /// lists them: see the CLI's keys_reference test.)
+    #[test]
+    fn sweepable_keys_are_the_scalar_keys_of_the_table() {
+        use crate::sweep::axis::{check_key, KeyType};
+        assert_eq!(SWEEPABLE_KEYS.len(), 1 + 11 + 4 + 14 + 14 + 3 + 5);
+        let vertical: Vec<&str> = SWEEPABLE_KEYS.iter().filter_map(|k| k.strip_prefix(VERTICAL_PREFIX)).collect();
+        assert_eq!(vertical, section_keys("ground").into_iter().filter(|k| *k != "vertical").collect::<Vec<_>>());
+        for (key, expected) in [
+            ("name", KeyType::Text),
+            ("tower.section", KeyType::Text),
+            ("ground.vertical.units", KeyType::Text),
+            ("tower.width", KeyType::Number),
+            ("ground.vertical.t0", KeyType::Number),
+            ("simulation.atol", KeyType::Number),
+        ] {
+            assert_eq!(check_key(key).ok(), Some(expected), "{key}");
+        }
+        for refused in ["tower.points", "ground.vertical", "ground.vertical.vertical", "ground.vertical.points", "tower"] {
+            assert!(check_key(refused).is_err() && !SWEEPABLE_KEYS.contains(&refused), "{refused}");
+        }
     }
 
     /// Every example value is accepted where it stands: each key's example,

@@ -111,7 +111,7 @@ pub use assessment::{
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
 pub use error::{key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
-pub use keys::{keys_markdown, KeyDoc, KeyKind, SCENARIO_KEYS};
+pub use keys::{describe_key, keys_json, keys_markdown, KeyDoc, KeyKind, KeyRef, SCENARIO_KEYS, VERTICAL_PREFIX};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};

@@ -662,3 +662,66 @@ fn a_record_given_as_text_runs_as_the_same_file() {
     let line = e.map(|e| e.to_string()).unwrap_or_default();
     assert!(line.contains("ground.text: ") && line.contains("line 3") && !line.contains('\n'), "{line}");
 }
+
+/// The errors offer every key of the description (crate::SCENARIO_KEYS): a
+/// key misspelt (one letter added) is refused with the key in the valid
+/// list, and suggested where the suggestion rule allows (a key of more than
+/// one letter), the vertical motion's keys included.
+#[test]
+fn a_misspelt_key_of_the_description_is_suggested() {
+    let keys = crate::SCENARIO_KEYS.iter().filter(|k| k.section().is_some());
+    let vertical_keys = crate::SCENARIO_KEYS.iter().filter(|k| k.section() == Some("ground") && k.is_sweepable());
+    let all: Vec<(String, &str)> = keys
+        .map(|k| (k.key.to_string(), k.name()))
+        .chain(vertical_keys.map(|k| (format!("{}{}", crate::VERTICAL_PREFIX, k.name()), k.name())))
+        .collect();
+    assert_eq!(all.len(), 39 + 14, "the table's keys in sections, and [ground]'s scalar keys again");
+    for (key, name) in all {
+        let typo = format!("{key}x");
+        let mut edits = vec![(typo.clone(), Some("1".to_string()))];
+        // A motion lists the keys of its type: one that takes the key, without the base's keys it does not take.
+        let motion = ["ground.vertical.", "ground."].into_iter().find(|m| key.starts_with(m));
+        if let Some(motion) = motion {
+            let (type_name, kind) = crate::ground::KINDS
+                .iter()
+                .find(|(_, kind)| kind.keys().contains(&name))
+                .unwrap_or(&crate::ground::KINDS[0]);
+            edits.push((format!("{motion}type"), Some(format!("\"{type_name}\""))));
+            for base in ["amplitude", "frequency", "duration"] {
+                let given = kind.keys().contains(&base) && (motion == "ground." || base == "amplitude");
+                edits.push((format!("{motion}{base}"), given.then(|| "0.1".to_string())));
+            }
+        }
+        let edits: Vec<(&str, Option<&str>)> = edits.iter().map(|(k, v)| (k.as_str(), v.as_deref())).collect();
+        let msg = fails(&edits, &typo);
+        let valid = msg.split("valid keys: ").nth(1).unwrap_or_else(|| panic!("{typo}: {msg}"));
+        assert!(valid.split(", ").any(|k| k == name), "{typo}: {msg}");
+        if name.chars().count() > 1 {
+            assert!(msg.starts_with(&format!("unknown key (did you mean `{name}`?)")), "{typo}: {msg}");
+        }
+    }
+}
+
+/// The choices of the description are the parser's: a value outside them is
+/// refused with the parser's own list, which is the description's.
+#[test]
+fn the_choices_of_the_description_are_the_parsers() {
+    let record: [(&str, Option<&str>); 5] = [
+        ("ground.type", Some("\"record\"")),
+        ("ground.file", Some("\"x.csv\"")),
+        ("ground.amplitude", None),
+        ("ground.frequency", None),
+        ("ground.duration", None),
+    ];
+    let with_choices: Vec<_> = crate::SCENARIO_KEYS.iter().filter(|k| !k.choices.is_empty()).collect();
+    let keys: Vec<&str> = with_choices.iter().map(|k| k.key).collect();
+    assert_eq!(keys, ["tower.section", "building.normal_force", "ground.type", "ground.format", "ground.units"]);
+    for doc in with_choices {
+        let mut edits = vec![(doc.key, Some("\"nonsense\""))];
+        if doc.key == "ground.format" || doc.key == "ground.units" {
+            edits.extend(record);
+        }
+        let listed: Vec<String> = doc.choices.iter().map(|c| format!("\"{c}\"")).collect();
+        assert_eq!(fails(&edits, doc.key), format!("\"nonsense\" is not one of {}", listed.join(", ")));
+    }
+}

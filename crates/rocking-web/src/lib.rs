@@ -145,7 +145,7 @@ pub fn json_to_toml_js(text: &str) -> Result<String, JsError> {
 /// The keys a sweep can vary (dotted).
 #[wasm_bindgen(js_name = sweepableKeys)]
 pub fn sweepable_keys() -> String {
-    json!(rocking_scenario::SWEEPABLE_KEYS).to_string()
+    json!(*rocking_scenario::SWEEPABLE_KEYS).to_string()
 }
 
 /// The summary's fields as the outputs reference describes them: the JSON

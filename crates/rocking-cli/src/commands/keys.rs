@@ -1,22 +1,30 @@
-//! `rocking keys [--markdown]`: every scenario key (and assessment-file key) with its unit, default and
+//! `rocking keys [--markdown | --json]`: every scenario key (and assessment-file key) with its unit, default and
 //! valid range, from the table the parser checks keys against. `--markdown`
-//! prints the reference page of the documentation (`docs/src/reference/keys.md`).
+//! prints the reference page of the documentation (`docs/src/reference/keys.md`);
+//! `--json` the whole description of each key (symbol, choices, …), as the page reads it.
 
-use rocking_scenario::{keys_markdown, ASSESSMENT_KEY_DOCS, SCENARIO_KEYS};
+use rocking_scenario::{keys_json, keys_markdown, ASSESSMENT_KEY_DOCS, SCENARIO_KEYS};
 use std::fmt::Write;
 
 /// Arguments of `rocking keys`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Print the documentation's reference page (Markdown) instead of one line per key.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "json")]
     pub markdown: bool,
+    /// Print every key's description as JSON: `{ "scenario": [...], "assessment": [...] }`, each key with its
+    /// unit, symbol, label, default, valid values, meaning, example, choices and whether a sweep can vary it.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Prints the keys.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
     if args.markdown {
         return super::print(&keys_markdown());
+    }
+    if args.json {
+        return super::print(&format!("{:#}\n", keys_json()));
     }
     // The scenario's keys, then those of an assessment file's [site] and [assessment].
     let keys = || SCENARIO_KEYS.iter().chain(ASSESSMENT_KEY_DOCS);

@@ -2,86 +2,20 @@
 //! or as an evenly spaced range (docs/src/reference/keys.md, "[sweep]"); the rules are on [`AxisSpec`].
 
 use crate::error::{closest, ErrorKind, Fault};
+use crate::keys::KeyKind;
 use crate::read::{as_number, with_article};
+use std::sync::LazyLock;
 use toml::Value;
 
 /// At most this many values on one axis (a `step` far too small for its range
 /// is an error, not an allocation of gigabytes).
 pub const MAX_AXIS_VALUES: usize = 1_000_000;
 
-/// The scalar keys of a scenario that a sweep can vary, as dotted keys. A unit
-/// test checks this list against the keys every section accepts.
-pub const SWEEPABLE_KEYS: &[&str] = &[
-    "name",
-    "tower.width",
-    "tower.height",
-    "tower.mass",
-    "tower.density",
-    "tower.depth",
-    "tower.section",
-    "tower.wall_thickness",
-    "tower.inertia_pivot",
-    "tower.restitution",
-    "tower.radius",
-    "tower.alpha",
-    "building.mass",
-    "building.mu_static",
-    "building.mu_kinetic",
-    "building.normal_force",
-    "ground.type",
-    "ground.amplitude",
-    "ground.amplitude_ratio",
-    "ground.frequency",
-    "ground.frequency_ratio",
-    "ground.duration",
-    "ground.phase",
-    "ground.t0",
-    "ground.file",
-    "ground.text",
-    "ground.format",
-    "ground.scale",
-    "ground.units",
-    "ground.dt",
-    "ground.vertical.type",
-    "ground.vertical.amplitude",
-    "ground.vertical.amplitude_ratio",
-    "ground.vertical.frequency",
-    "ground.vertical.frequency_ratio",
-    "ground.vertical.duration",
-    "ground.vertical.phase",
-    "ground.vertical.t0",
-    "ground.vertical.file",
-    "ground.vertical.text",
-    "ground.vertical.format",
-    "ground.vertical.scale",
-    "ground.vertical.units",
-    "ground.vertical.dt",
-    "initial.theta",
-    "initial.theta_over_alpha",
-    "initial.theta_dot",
-    "simulation.duration",
-    "simulation.g",
-    "simulation.output_dt",
-    "simulation.rtol",
-    "simulation.atol",
-];
-
-/// The sweepable keys whose values are strings; every other one takes a number.
-pub(crate) const STRING_KEYS: &[&str] = &[
-    "name",
-    "ground.text",
-    "tower.section",
-    "building.normal_force",
-    "ground.type",
-    "ground.file",
-    "ground.format",
-    "ground.units",
-    "ground.vertical.type",
-    "ground.vertical.file",
-    "ground.vertical.text",
-    "ground.vertical.format",
-    "ground.vertical.units",
-];
+/// The scalar keys of a scenario that a sweep can vary, as dotted keys, in
+/// the order of the key reference: read from [`crate::SCENARIO_KEYS`] (every
+/// key but a list or a table, and the keys of `[ground]` again as
+/// `ground.vertical.KEY`).
+pub static SWEEPABLE_KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(crate::keys::sweepable_keys);
 
 /// Keys that are alternatives of each other: an axis on one removes the other
 /// from the base scenario (a scenario giving `amplitude` can be swept over
@@ -188,8 +122,10 @@ pub(crate) fn axis_name(key: &str) -> String {
 
 /// Checks that `key` is a scalar scenario key and says what it takes.
 pub(crate) fn check_key(key: &str) -> Result<KeyType, Fault> {
-    if SWEEPABLE_KEYS.contains(&key) {
-        return Ok(if STRING_KEYS.contains(&key) { KeyType::Text } else { KeyType::Number });
+    match crate::keys::describe_key(key).map(|k| k.doc.kind) {
+        Some(KeyKind::Number) => return Ok(KeyType::Number),
+        Some(KeyKind::Text) => return Ok(KeyType::Text),
+        _ => {}
     }
     let name = axis_name(key);
     if key == "tower.points" {
