@@ -47,6 +47,21 @@ def run(scenario, files=None, history=False, events=False):
         return out[0] if len(out) == 1 else tuple(out)
 
 
+def sweep(scenario, key, values):
+    """Runs `rocking sweep` on the TOML text `scenario` with `key` taking each
+    of `values`; returns the rows of sweep.csv (dicts), one per value, in order."""
+    listed = ", ".join(repr(float(v)) for v in values)
+    with tempfile.TemporaryDirectory(prefix="rocking-validation-") as folder:
+        folder = pathlib.Path(folder)
+        (folder / "sweep.toml").write_text(f'{scenario}\n[sweep]\n"{key}" = [{listed}]\n')
+        done = subprocess.run([CLI, "sweep", str(folder / "sweep.toml"), "--out", str(folder / "out")], capture_output=True, text=True)
+        if done.returncode != 0:
+            sys.exit(f"rocking sweep failed ({done.returncode}): {done.stderr.strip()}\n{scenario}")
+        rows = _rows(folder / "out" / "sweep.csv")
+    by_value = {row[key]: row for row in rows}
+    return [by_value[float(v)] for v in values]
+
+
 def _rows(path):
     with open(path, newline="") as f:
         return [{k: _number(v) for k, v in row.items()} for row in csv.DictReader(f)]
@@ -91,14 +106,17 @@ def write_table(name, columns, rows, caption=None, csv_only=()):
         cells = []
         for key, _, fmt in columns:
             value = row[key]
-            cells.append(format(value, fmt) if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value))
+            if isinstance(value, float) and value != value:  # NaN: not applicable
+                cells.append("—")
+            else:
+                cells.append(format(value, fmt) if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value))
         lines.append("| " + " | ".join(cells) + " |")
     (RESULTS / f"{name}.md").write_text("\n".join(lines) + "\n")
 
 
 def _plain(value):
-    if isinstance(value, float):
-        return repr(value)
+    if isinstance(value, float):  # numpy's floats too, written as plain numbers
+        return repr(float(value))
     return value
 
 

@@ -30,13 +30,14 @@ import matplotlib.pyplot as plt
 import mujoco
 import numpy as np
 
+import mjcf
 from common import check, finish, run, save_figure, write_table
 
 G = 9.81
 B, H = 4.0, 12.0  # m, the tower of examples/tower-on-church.toml
 M2, M1 = 1.5e5, 2.0e6  # kg, tower and church
 ALPHA = math.atan(B / H)
-RHO = 1e-3  # m, radius of the corner spheres
+RHO = mjcf.RHO
 LEVELS = ((4e-3, 2e-4), (2e-3, 1e-4), (1e-3, 5e-5))  # (contact time constant, step) in s
 SETTLE = 0.5  # s of MuJoCo before t = 0, for the contacts to settle under gravity
 SHAKING, DURATION = 5.0, 10.0  # s
@@ -82,28 +83,7 @@ TOL_THETA_ABS = 1e-3
 
 
 def xml(mu, fixed, tc, dt, width=B, height=H):
-    b, h = width / 2, height / 2
-    friction = f'frictionloss="{mu * (M1 + M2) * G!r}" solreffriction="{tc!r} 1" solimpfriction="0.99 0.99 0.001"'
-    joint = "" if fixed else f'<joint name="u" type="slide" axis="1 0 0" {friction}/>'
-    return f"""<mujoco>
-<option timestep="{dt!r}" gravity="0 0 {-G!r}" cone="elliptic" integrator="implicitfast">
-  <flag filterparent="disable"/>
-</option>
-<default><geom solref="{tc!r} 1" solimp="0.99 0.99 0.001" friction="10 0.005 0.0001"/></default>
-<worldbody>
- <body name="building">
-  {joint}
-  <geom name="church" type="box" size="20 5 5" pos="0 0 -5" mass="{M1!r}"/>
-  <body name="tower">
-   <joint name="x" type="slide" axis="1 0 0"/>
-   <joint name="z" type="slide" axis="0 0 1"/>
-   <joint name="theta" type="hinge" axis="0 1 0"/>
-   <geom type="box" size="{b!r} {b!r} {h!r}" pos="0 0 {h!r}" mass="{M2!r}" contype="0" conaffinity="0"/>
-   <geom name="left" type="sphere" size="{RHO!r}" pos="{-b + RHO!r} 0 {RHO!r}" mass="0.001"/>
-   <geom name="right" type="sphere" size="{RHO!r}" pos="{b - RHO!r} 0 {RHO!r}" mass="0.001"/>
-  </body>
- </body>
-</worldbody></mujoco>"""
+    return mjcf.model(tc, dt, M1, None if fixed else mu, M1 + M2, mjcf.block("tower", "", width, height, M2))
 
 
 def mujoco_run(mu, amplitude, frequency, theta0_over_alpha, tc, dt, fixed=False, duration=DURATION, every=0.005, width=B, height=H):

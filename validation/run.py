@@ -21,7 +21,7 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent
-SCRIPTS = ["slammer", "housner", "mujoco_tower"]
+SCRIPTS = ["slammer", "housner", "makris", "mujoco_tower", "stack_impacts", "mujoco_stack"]
 
 
 def environment():
