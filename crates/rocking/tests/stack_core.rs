@@ -11,17 +11,9 @@ use rocking::{Building, BuildingRegime, NormalForce, Pivot};
 
 #[path = "support/stack_two.rs"]
 mod two;
-use two::{balance, Two};
+use two::{balance, belfry, shaft, Two};
 
 const G: f64 = 9.81;
-
-/// A shaft 4 m × 20 m of 3.2e5 kg and a belfry 3 m × 6 m of 4e4 kg, solid.
-fn shaft() -> Block {
-    Block::solid(1, 4.0, 20.0, 3.2e5).expect("a valid shaft")
-}
-fn belfry() -> Block {
-    Block::solid(2, 3.0, 6.0, 4.0e4).expect("a valid belfry")
-}
 
 fn fixed(blocks: &[Block]) -> Stack {
     Stack::new(blocks, None, G).expect("a valid stack")

@@ -4,23 +4,15 @@
 //! frictionless building, mirror symmetry, independence of the sampling, and a
 //! belfry that cannot rock equal to one block of the combined shape.
 
-mod common;
 #[path = "support/stack_two.rs"]
 mod two;
 
 use rocking::stack::run::{run, RunSettings, StackEventKind, StackRun};
 use rocking::stack::{Block, Interface, Stack, StackState};
 use rocking::{simulate, Building, GroundMotion, Harmonic, History, Initial, Model, NormalForce, Pivot, Settings, Tower};
-use two::{balance, Two};
+use two::{balance, belfry, shaft, Two};
 
 const G: f64 = 9.81;
-
-fn shaft() -> Block {
-    Block::solid(1, 4.0, 20.0, 3.2e5).expect("a valid shaft")
-}
-fn belfry() -> Block {
-    Block::solid(2, 3.0, 6.0, 4.0e4).expect("a valid belfry")
-}
 
 fn tight(duration: f64) -> RunSettings {
     RunSettings {

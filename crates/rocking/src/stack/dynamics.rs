@@ -312,11 +312,9 @@ impl Stack {
 }
 
 impl Stack {
-    /// The mechanical energy of the stack and the building in the ground's
-    /// frame (J): `Σ_i [½ m_i |Ġ_i|² + ½ J_i φ̇_i² + m_i g y_i] + ½ m1 u̇²`,
-    /// `y_i` the height of `G_i` above the springing level. Conserved between
-    /// events with no ground motion and no friction work.
-    pub fn energy(&self, regime: &StackRegime, state: &StackState) -> f64 {
+    /// The pose, the building's slip velocity (0 unless it slips) and the
+    /// velocity `Ġ_i` of every block relative to the ground.
+    fn velocities(&self, regime: &StackRegime, state: &StackState) -> (Pose, f64, [Vec2; MAX_BLOCKS]) {
         let pose = Pose::new(self, regime, state);
         let slip_vel = if matches!(regime.building, BuildingRegime::Slip(_)) {
             state.slip_vel
@@ -324,11 +322,23 @@ impl Stack {
             0.0
         };
         let moving = StackState { slip_vel, ..*state };
+        let mut v = [[0.0; 2]; MAX_BLOCKS];
+        for (i, vi) in v.iter_mut().enumerate().take(self.len()) {
+            *vi = pose.point_velocity(i, pose.centre(i), &moving);
+        }
+        (pose, slip_vel, v)
+    }
+
+    /// The mechanical energy of the stack and the building in the ground's
+    /// frame (J): `Σ_i [½ m_i |Ġ_i|² + ½ J_i φ̇_i² + m_i g y_i] + ½ m1 u̇²`,
+    /// `y_i` the height of `G_i` above the springing level. Conserved between
+    /// events with no ground motion and no friction work.
+    pub fn energy(&self, regime: &StackRegime, state: &StackState) -> f64 {
+        let (pose, slip_vel, v) = self.velocities(regime, state);
         let mut energy = 0.5 * self.building_mass() * slip_vel * slip_vel;
         for (i, block) in self.blocks.iter().enumerate() {
-            let v = pose.point_velocity(i, pose.centre(i), &moving);
-            energy +=
-                0.5 * block.mass * dot(v, v) + 0.5 * block.inertia_centre * pose.phi_dot[i] * pose.phi_dot[i] + block.mass * self.gravity * pose.centre(i)[1];
+            let spin = pose.phi_dot[i];
+            energy += 0.5 * block.mass * dot(v[i], v[i]) + 0.5 * block.inertia_centre * spin * spin + block.mass * self.gravity * pose.centre(i)[1];
         }
         energy
     }
@@ -337,17 +347,7 @@ impl Stack {
     /// (kg·m/s): the foundation's friction is its only horizontal force
     /// besides the ground's motion.
     pub fn horizontal_momentum(&self, regime: &StackRegime, state: &StackState) -> f64 {
-        let pose = Pose::new(self, regime, state);
-        let slip_vel = if matches!(regime.building, BuildingRegime::Slip(_)) {
-            state.slip_vel
-        } else {
-            0.0
-        };
-        let moving = StackState { slip_vel, ..*state };
-        let mut momentum = self.building_mass() * slip_vel;
-        for (i, block) in self.blocks.iter().enumerate() {
-            momentum += block.mass * pose.point_velocity(i, pose.centre(i), &moving)[0];
-        }
-        momentum
+        let (_, slip_vel, v) = self.velocities(regime, state);
+        self.building_mass() * slip_vel + self.blocks.iter().zip(&v).map(|(b, vi)| b.mass * vi[0]).sum::<f64>()
     }
 }

@@ -1,5 +1,5 @@
-//! Hand kinematics of a two-block stack on a fixed base, for the impact and
-//! run tests, written independently of the library's geometry: block 1 on its
+//! The shaft and belfry of the stack tests, and the hand kinematics of a
+//! two-block stack on a fixed base for the impact and run tests, written independently of the library's geometry: block 1 on its
 //! corner `O_1 = (s_1 b_1, 0)` at `θ_1`, block 2 on the corner `O_2` of block
 //! 1's top at `θ_2` relative to it; velocities by the rigid-body rule
 //! `v(P) = ω (P − O)^⊥`, `(x, y)^⊥ = (y, −x)` for a clockwise `ω`.
@@ -16,6 +16,16 @@
 #![allow(dead_code)]
 
 use rocking::stack::Block;
+
+/// The shaft of the stack tests: 4 m × 20 m, 3.2e5 kg, solid.
+pub fn shaft() -> Block {
+    Block::solid(1, 4.0, 20.0, 3.2e5).expect("a valid shaft")
+}
+
+/// The belfry of the stack tests: 3 m × 6 m, 4e4 kg, solid.
+pub fn belfry() -> Block {
+    Block::solid(2, 3.0, 6.0, 4.0e4).expect("a valid belfry")
+}
 
 pub struct Two {
     pub m: [f64; 2],
