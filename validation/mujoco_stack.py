@@ -50,6 +50,13 @@ SHAFT = (4.0, 12.0, 1.5e5)  # m, m, kg: the tower of examples/tower-on-church.to
 BELFRY = (2.4, 6.0, 6.0e4)
 SLENDER = (0.8, 4.0, 3.0e4)
 CHURCH = 2.0e6  # kg
+# A seated belfry when its shaft lands at -0.05 rad/s: the slender belfry above, and
+# the shaft of examples/sant-anna-cervino (4 m x 4 m x 14 m, 1800 kg/m^3) with a
+# belfry 1.2 m x 1.2 m x 5 m of the same masonry (stack_impacts.py)
+SEATED = {
+    "belfry 0.8 m × 4 m, 3e4 kg on the shaft 4 m × 12 m, 1.5e5 kg": (SHAFT, SLENDER),
+    "belfry 1.2 m × 5 m, 1.30e4 kg on the shaft 4 m × 14 m, 4.03e5 kg": ((4.0, 14.0, 1800.0 * 4 * 4 * 14), (1.2, 5.0, 1800.0 * 1.2 * 1.2 * 5)),
+}
 
 SCENARIOS = (
     {"name": "belfry on a rocking shaft, fixed base, 0.4 g 1 Hz", "blocks": (SHAFT, BELFRY), "mu": None, "amplitude": 0.4, "frequency": 1.0, "shaking": 3.0, "duration": 6.0},
@@ -97,10 +104,10 @@ def ground(scenario):
     return (lambda t: amplitude * G * math.sin(omega * t) if t < shaking else 0.0), (shaking,)
 
 
-def reference_stack(scenario, impulsive_friction=True):
+def reference_stack(scenario, impulsive_friction=True, seat="vertical"):
     a_g, kinks = ground(scenario)
     building = None if scenario["mu"] is None else (CHURCH, scenario["mu"], scenario["mu"])
-    return Stack(list(scenario["blocks"]), building=building, ground=a_g, kinks=kinks, g=G, impulsive_friction=impulsive_friction)
+    return Stack(list(scenario["blocks"]), building=building, ground=a_g, kinks=kinks, g=G, impulsive_friction=impulsive_friction, seat=seat)
 
 
 def reference_demand(scenario, t, k, impulsive_friction=True):
@@ -118,10 +125,12 @@ def reference_demand(scenario, t, k, impulsive_friction=True):
     return abs(M) / (V * stack.B[k] / 2.0)
 
 
-def reference_result(scenario, impulsive_friction=True):
+def reference_result(scenario, impulsive_friction=True, seat="vertical"):
     """The model, or with impulsive_friction=False the model with no friction impulse
-    at the impacts (the foundation's friction bounding forces only, as MuJoCo's does)."""
-    stack = reference_stack(scenario, impulsive_friction)
+    at the impacts (the foundation's friction bounding forces only, as MuJoCo's does),
+    or with seat="normal" the seat's moment bounded by the force normal to the top
+    of the block below instead of the vertical force."""
+    stack = reference_stack(scenario, impulsive_friction, seat)
     history, events, summary = stack.run(scenario["duration"])
     return {
         "first_uplift": summary["first_uplift"],
@@ -218,7 +227,7 @@ IMPLEMENTATIONS = {"MuJoCo": mujoco_result}
 # --- a seated belfry when its shaft lands -------------------------------------------------
 
 
-def seated_landing(blocks=(SHAFT, SLENDER), w=-0.05, later=0.01, theta0=1e-5):
+def seated_landing(blocks, w=-0.05, later=0.01, theta0=1e-5):
     """The shaft landing at w (from its +x corner) with the belfry seated and turning
     with it: the seat impulse ratio of the impact (the model keeps the belfry seated
     through it) and the belfry's theta_2 dot `later` s after, in the reference (the
@@ -347,8 +356,38 @@ def main():
             results[scenario["name"]][name] = out
             rows += compare(name, scenario, model, ref, out, LEVELS[-1][0])
         print(f"{scenario['name']}: peaks θ/α, model {model['peak_over_alpha']}, MuJoCo {results[scenario['name']]['MuJoCo']['peak_over_alpha']}")
-    seated = seated_landing()
-    print(f"seated belfry: seat impulse ratio {seated['seat_ratio']:.4f}; θ2 rate 10 ms after landing: model {seated['model_rate']:.5f}, MuJoCo {seated['mujoco_rate']:.5f} rad/s")
+    # The model bounds a seat's moment by the vertical force V of the blocks above; on a
+    # tilted shaft the force normal to its top is V cos(phi) + T sin(phi)
+    tilted = []
+    for scenario in SCENARIOS:
+        normal = reference_result(scenario, seat="normal")
+        model = results[scenario["name"]]["model"]
+        tilted.append(
+            {
+                "scenario": scenario["name"],
+                "uplift_vertical": model["first_uplift"][1],
+                "uplift_normal": normal["first_uplift"][1],
+                "uplift_mujoco": results[scenario["name"]]["MuJoCo"]["first_uplift"][1],
+                "peak_vertical": model["peak_over_alpha"][1] if model["overturned"] != 1 else float("nan"),
+                "peak_normal": normal["peak_over_alpha"][1] if normal["overturned"] != 1 else float("nan"),
+            }
+        )
+    write_table(
+        "mujoco-stack-seat-normal",
+        [
+            ("scenario", "stack", ""),
+            ("uplift_vertical", "belfry's first uplift, model: V (s)", ".5f"),
+            ("uplift_normal", "with the seat's normal force (s)", ".5f"),
+            ("uplift_mujoco", "MuJoCo, tc = 1 ms (s)", ".5f"),
+            ("peak_vertical", "belfry's largest θ/α, model", ".5f"),
+            ("peak_normal", "with the seat's normal force", ".5f"),
+        ],
+        tilted,
+    )
+    seated = []
+    for case, blocks in SEATED.items():
+        seated.append({"case": case, **seated_landing(blocks)})
+        print(f"{case}: seat impulse ratio {seated[-1]['seat_ratio']:.4f}; θ2 rate 10 ms after landing: model {seated[-1]['model_rate']:.5f}, MuJoCo {seated[-1]['mujoco_rate']:.5f} rad/s")
     plain = lambda v: v if isinstance(v, str) else float(v)
     write_table(
         "mujoco-stack",
@@ -381,13 +420,13 @@ def main():
     write_table(
         "mujoco-stack-seated",
         [
-            ("case", "case", ""),
+            ("case", "seated belfry; the shaft lands at −0.05 rad/s on a fixed base", ""),
             ("seat_ratio", "seat impulse ratio M_imp / (V_imp B2/2)", ".4f"),
             ("shaft_after", "shaft θ̇1⁺ (rad/s)", ".5f"),
             ("model_rate", "belfry θ̇2 10 ms after the landing, model (rad/s)", ".5f"),
             ("mujoco_rate", "MuJoCo, tc = 1 ms (rad/s)", ".5f"),
         ],
-        [{"case": "slender belfry 0.8 m × 4 m, 3e4 kg, seated on the 4 m × 12 m shaft landing at −0.05 rad/s", **seated}],
+        seated,
     )
     figure(results)
     finish("mujoco_stack")
