@@ -105,9 +105,23 @@ pub struct StackSample {
     pub regime: StackRegime,
 }
 
+/// What a run says of one block.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BlockSummary {
+    /// The largest `|θ_k|` (rad), located where `θ̇_k` changes sign inside a
+    /// step (by root finding on the dense output) or at an event.
+    pub max_abs_theta: f64,
+    /// Impacts of the interface (those that seat it included).
+    pub impacts: usize,
+    /// The time (s) of the interface's first uplift, if one happened.
+    pub first_uplift_time: Option<f64>,
+}
+
 /// What a run leaves.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StackRun {
+    /// Each block's summary, block 1 first.
+    pub blocks: Vec<BlockSummary>,
     /// The states every `sample_interval` (and at the end).
     pub samples: Vec<StackSample>,
     /// Every regime change, in order.
@@ -117,6 +131,8 @@ pub struct StackRun {
     /// The largest `|M_imp| / (V_imp B_j / 2)` of a seated interface through
     /// an impact elsewhere over the run (0 without such impacts).
     pub max_seat_impulse_ratio: f64,
+    /// Right-hand side evaluations of the stepping (not of event location).
+    pub evaluations: u64,
 }
 
 /// The regime the initial state puts the stack in: an interface leaning or
@@ -374,10 +390,17 @@ impl<const S: usize> Runner<'_, S> {
             state.slip_vel = 0.0;
         }
         let mut out = StackRun {
+            blocks: (0..self.n())
+                .map(|k| BlockSummary {
+                    max_abs_theta: state.theta[k].abs(),
+                    ..BlockSummary::default()
+                })
+                .collect(),
             samples: Vec::new(),
             events: Vec::new(),
             overturned: None,
             max_seat_impulse_ratio: 0.0,
+            evaluations: 0,
         };
         let mut t = 0.0;
         let mut next_sample = 0usize;
@@ -417,6 +440,7 @@ impl<const S: usize> Runner<'_, S> {
                 let (t0, t1) = (stepper.t_old, stepper.t);
                 let crossing = self.first_crossing(&regime, &dense, t0, t1);
                 let reached = crossing.map_or(t1, |(_, te)| te);
+                self.track_peaks(&mut out, &regime, &dense, t0, reached);
                 while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {
                     let ts = next_sample as f64 * settings.sample_interval;
                     out.samples.push(StackSample {
@@ -444,7 +468,37 @@ impl<const S: usize> Runner<'_, S> {
                 }
             }
         }
+        out.evaluations = stepper.evaluations;
         Ok(out)
+    }
+
+    /// Raises each rocking block's largest `|θ_k|` to the extremes of the
+    /// step `[t0, t1]`: its ends and every instant where `θ̇_k` changes sign
+    /// between the points that event location examines, found by root
+    /// finding.
+    fn track_peaks(&self, out: &mut StackRun, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64) {
+        let n = self.n();
+        for k in 0..n {
+            if regime.interfaces[k] == Interface::Stuck {
+                continue;
+            }
+            let theta = |t: f64| dense.state(t)[k];
+            let rate = |t: f64| dense.state(t)[n + k];
+            let mut peak = theta(t0).abs().max(theta(t1).abs());
+            let (mut ta, mut fa) = (t0, rate(t0));
+            for j in 1..=PARTS {
+                let tb = if j == PARTS { t1 } else { t0 + (t1 - t0) * j as f64 / PARTS as f64 };
+                let fb = rate(tb);
+                if fa * fb < 0.0 {
+                    // Orient the bracket so that the function rises through 0.
+                    let sign = fb.signum();
+                    let at = find_crossing(|t| sign * rate(t), ta, sign * fa, tb, sign * fb, 0.0);
+                    peak = peak.max(theta(at.ta).abs()).max(theta(at.tb).abs());
+                }
+                (ta, fa) = (tb, fb);
+            }
+            out.blocks[k].max_abs_theta = out.blocks[k].max_abs_theta.max(peak);
+        }
     }
 
     /// Applies the transition of `watch` at `t`, records it, and says whether
@@ -461,6 +515,16 @@ impl<const S: usize> Runner<'_, S> {
             seat_impulse_ratio: ratio,
         });
         out.max_seat_impulse_ratio = out.max_seat_impulse_ratio.max(ratio);
+        match kind {
+            StackEventKind::Impact(k) | StackEventKind::Rest(k) => out.blocks[k].impacts += 1,
+            StackEventKind::Uplift(k) => {
+                out.blocks[k].first_uplift_time.get_or_insert(t);
+            }
+            _ => {}
+        }
+        for (k, block) in out.blocks.iter_mut().enumerate() {
+            block.max_abs_theta = block.max_abs_theta.max(state.theta[k].abs());
+        }
         *regime = next_regime;
         *state = next_state;
         if let StackEventKind::Overturn(k) = kind {
