@@ -8,7 +8,7 @@ use crate::dynamic::{dynamic_check, DynamicCheck, RecordSet};
 use crate::input::AssessmentInput;
 use crate::outputs::{assessment_json, capacity_csv, records_csv, spectra_csv};
 use crate::site::Role;
-use rocking_scenario::Error;
+use rocking_scenario::{Error, RecordCache};
 
 /// The outcome of an assessment.
 #[derive(Debug, Clone)]
@@ -26,12 +26,18 @@ pub struct Assessment {
 impl Assessment {
     /// Runs every check of `input` (the dynamic ones on rayon's current pool).
     pub fn run(input: &AssessmentInput) -> Result<Self, Error> {
+        Self::run_cached(input, &RecordCache::with_capacity(input.file.records.len()))
+    }
+
+    /// As [`Assessment::run`], the records taken from `cache` when read before
+    /// (one read of each record file for all the towers of an inventory).
+    pub fn run_cached(input: &AssessmentInput, cache: &RecordCache) -> Result<Self, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
         let (set, dynamic) = if input.file.records.is_empty() {
             (None, Vec::new())
         } else {
-            let set = RecordSet::read(input, capacity.t_slc)?;
+            let set = RecordSet::read_cached(input, capacity.t_slc, cache)?;
             let dynamic = [Role::LifeSafety, Role::Collapse]
                 .into_iter()
                 .map(|role| dynamic_check(input, &set, &capacity, role))

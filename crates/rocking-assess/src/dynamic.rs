@@ -20,7 +20,7 @@ use crate::site::Role;
 use rayon::prelude::*;
 use rocking::{GroundMotion, Record};
 use rocking_codes::{default_period_range, fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT};
-use rocking_scenario::{Case, Error, Fault, RunOptions, Scenario};
+use rocking_scenario::{Case, Error, Fault, RecordCache, RunOptions, Scenario};
 
 /// The bisection of λ stops when the bracket is this narrow.
 pub const LAMBDA_TOLERANCE: f64 = 1e-3;
@@ -130,6 +130,12 @@ impl RecordSet {
     /// format guessed) and computes their spectra. `t_slc` (s) stretches the
     /// default fitting range.
     pub fn read(input: &AssessmentInput, t_slc: f64) -> Result<Self, Error> {
+        Self::read_cached(input, t_slc, &RecordCache::with_capacity(input.file.records.len()))
+    }
+
+    /// As [`RecordSet::read`], each record taken from `cache` when it was read
+    /// before (the towers of an inventory read each record file once).
+    pub fn read_cached(input: &AssessmentInput, t_slc: f64, cache: &RecordCache) -> Result<Self, Error> {
         let origin = input.origin();
         let range = input.file.period_range.unwrap_or_else(|| default_period_range(Some(t_slc)));
         let periods = periods(range.1).map_err(|e| Fault::invalid("assessment.period_range", e.to_string()).in_file(origin))?;
@@ -142,7 +148,7 @@ impl RecordSet {
                 // The record's duration is not known before it is read: a first case reads it.
                 let read = |duration: f64| {
                     Scenario::from_table(input.record_table(path, duration), origin)
-                        .and_then(|s| s.build())
+                        .and_then(|s| s.build_cached(cache))
                         .map_err(|mut e| {
                             e.fault.key = Some("assessment.records".into());
                             e

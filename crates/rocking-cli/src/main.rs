@@ -6,7 +6,7 @@
 //! rocking sweep SWEEP.toml [--out DIR] [--plot] [--threads N]   # a parametric study
 //! rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]   # a fragility study
 //! rocking assess ASSESS.toml [--out DIR]           # the checks of the code (Circolare 2019, EC8)
-//! rocking inventory TOWERS.csv --assess ASSESS.toml [--out DIR] [--threads N]   # every tower of a town, ranked by ζ_E
+//! rocking inventory TOWERS.csv --assess ASSESS.toml [--out DIR] [--plot] [--threads N] [--shard K/N]   # every tower of a town, ranked by ζ_E
 //! rocking check SCENARIO.toml                      # validate, print derived quantities
 //! rocking spectrum RECORD... [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]   # response spectra
 //! rocking spectrum --site ASSESS.toml [--out DIR] [--plot]   # code spectra, the record set fitted
@@ -46,13 +46,13 @@ enum Command {
     Run(commands::run::Args),
     /// Run a parametric sweep: every combination of the [sweep] values is one case, one row of sweep.csv.
     Sweep(commands::sweep::Args),
-    /// Merge the folders of `rocking sweep --shard K/N` into one sweep.csv, identical to the unsharded one.
+    /// Merge the folders of `rocking sweep --shard K/N` (or `rocking inventory --shard K/N`) into one sweep.csv (inventory.csv), identical to the unsharded one.
     Merge(commands::merge::Args),
     /// Run a fragility study: a suite of records scaled to levels of an intensity measure; stripes, fitted fragility curves.
     Fragility(commands::fragility::Args),
     /// Assess a tower to the code (Circolare 2019 §C8.7.1.2.1, NTC 2018 or EN 1998): capacity, checks, ζ_E; writes assessment.json, capacity.csv, records.csv and spectra.csv with a record set, and report.html.
     Assess(commands::assess::Args),
-    /// Assess every tower of a town (one row of a CSV each) with the kinematic checks; writes inventory.csv and inventory.geojson.
+    /// Assess every tower of a town (one row of a CSV each) as `rocking assess` does; writes inventory.csv and inventory.geojson, ranked by ζ_E.
     Inventory(commands::inventory::Args),
     /// Validate a scenario and print its derived quantities (α, R, p, r, uplift and slip thresholds, ground motion).
     Check(commands::check::Args),

@@ -85,7 +85,7 @@ impl Manifest {
         let path = dir.join(SHARD_JSON);
         let text = rocking_scenario::file::read_text(&path, MAX_MANIFEST_BYTES).with_context(|| {
             format!(
-                "cannot read {} (is {} a folder written by `rocking sweep --shard K/N`?)",
+                "cannot read {} (is {} a folder written by `rocking sweep --shard K/N` or `rocking inventory --shard K/N`?)",
                 path.display(),
                 dir.display()
             )

@@ -211,3 +211,45 @@ fn the_geojson_reads_back_as_points_with_the_csv_properties() {
         assert!(feature.property("error").is_some_and(|v| v.is_null()));
     }
 }
+
+#[test]
+fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
+    let dir = tempdir();
+    let whole = dir.path().join("whole");
+    let inventory = |extra: &[&str], out: &Path| {
+        let mut args = vec![
+            "inventory",
+            "examples/town/towers.csv",
+            "--assess",
+            "examples/town/assess.toml",
+            "--out",
+            arg(out),
+        ];
+        args.extend(extra);
+        let r = rocking(&args);
+        assert_eq!(r.code, Some(0), "{}", r.stderr);
+    };
+    inventory(&[], &whole);
+    let bytes = |p: &Path| std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    for n in [1, 3, 7] {
+        let mut shards = Vec::new();
+        // Given in reverse order: merge puts them back in row order.
+        for k in (1..=n).rev() {
+            let out = dir.path().join(format!("shards-{n}/{k}"));
+            inventory(&["--shard", &format!("{k}/{n}")], &out);
+            // Shard k of n holds rows floor((k−1)·12/n) … floor(k·12/n) − 1.
+            let rows = read(&out.join("inventory.csv")).lines().count() - 1;
+            assert_eq!(rows, k * 12 / n - (k - 1) * 12 / n, "shard {k}/{n}");
+            shards.push(out);
+        }
+        let merged = dir.path().join(format!("merged-{n}"));
+        let mut args = vec!["merge"];
+        args.extend(shards.iter().map(|s| arg(s)));
+        args.extend(["--out", arg(&merged)]);
+        let r = rocking(&args);
+        assert_eq!(r.code, Some(0), "{}", r.stderr);
+        for file in ["inventory.csv", "inventory.geojson"] {
+            assert!(bytes(&merged.join(file)) == bytes(&whole.join(file)), "{file} of {n} shards differs from the unsharded one");
+        }
+    }
+}

@@ -392,7 +392,7 @@ impl RecordSpec {
             Some((_, read)) => read.clone(),
             None => {
                 let read = key.0.read(g)?;
-                if entries.len() == RecordCache::CAPACITY {
+                if entries.len() >= cache.capacity {
                     entries.remove(0);
                 }
                 entries.push((key, read.clone()));
@@ -513,25 +513,42 @@ fn read_text(path: &Path) -> Result<String, (String, Option<i32>)> {
 
 /// Records already read, so that the cases of a sweep read a record file once
 /// (a sweep over the scale of one accelerogram would otherwise read and parse
-/// it for every case). Holds at most [`RecordCache::CAPACITY`] records, the
-/// oldest dropped first; a record that fails to read is not kept (every case
-/// that needs it reports the failure). Shared by the threads of a sweep.
-#[derive(Debug, Default)]
-pub(crate) struct RecordCache {
+/// it for every case), and the towers of an inventory read each record of
+/// their set once. Holds at most its capacity of records
+/// ([`RecordCache::CAPACITY`] by default), the oldest dropped first; a record
+/// that fails to read is not kept (every case that needs it reports the
+/// failure). Shared by the threads that build cases.
+#[derive(Debug)]
+pub struct RecordCache {
     entries: std::sync::Mutex<Vec<(RecordKey, (Record, RecordFormat))>>,
+    capacity: usize,
 }
 
 /// What a read depends on: the file, format and CSV options (scale 1), and g's bits.
 type RecordKey = (RecordSpec, u64);
 
 impl RecordCache {
-    /// Records kept at most (a sweep over `ground.file` cycles through more).
-    pub(crate) const CAPACITY: usize = 8;
+    /// Records kept at most by default (a sweep over `ground.file` cycles through more).
+    pub const CAPACITY: usize = 8;
+
+    /// A cache that keeps up to `capacity` records (at least one).
+    pub fn with_capacity(capacity: usize) -> Self {
+        Self {
+            entries: std::sync::Mutex::default(),
+            capacity: capacity.max(1),
+        }
+    }
+}
+
+impl Default for RecordCache {
+    fn default() -> Self {
+        Self::with_capacity(Self::CAPACITY)
+    }
 }
 
 impl Clone for RecordCache {
-    /// An empty cache: what was read is not part of a sweep's value.
+    /// An empty cache of the same capacity: what was read is not part of a sweep's value.
     fn clone(&self) -> Self {
-        Self::default()
+        Self::with_capacity(self.capacity)
     }
 }

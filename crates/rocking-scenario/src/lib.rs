@@ -104,13 +104,13 @@ mod tower;
 mod tests;
 
 pub use assessment::{
-    code_spectra_columns, dynamic_limit_states, kinematic_damping_pct, read_record, record_names, record_spectra_in_g, AssessmentFile, Capacity, Code, Site,
-    SiteSource, SpectrumColumn, SpectrumKind, ASSESSMENT_KEYS, ASSESSMENT_KEY_DOCS, ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER,
+    code_spectra_columns, dynamic_limit_states, kinematic_damping_pct, read_record, record_names, record_spectra_in_g, AssessmentFile, Capacity, Code,
+    GridCache, Site, SiteSource, SpectrumColumn, SpectrumKind, ASSESSMENT_KEYS, ASSESSMENT_KEY_DOCS, ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER,
     DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS,
 };
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
 pub use error::{key_of, Error, ErrorKind, Fault};
-pub use ground::{record_format_name, GroundInfo, GroundKind, RecordInfo};
+pub use ground::{record_format_name, GroundInfo, GroundKind, RecordCache, RecordInfo};
 pub use keys::{describe_key, keys_json, keys_markdown, KeyDoc, KeyKind, KeyRef, SCENARIO_KEYS, VERTICAL_PREFIX};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
@@ -122,6 +122,6 @@ pub use study::{
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{
-    csv_line, Axis, AxisSpec, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN, MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS,
-    WALL_TIME_KEY, WINDOW,
+    csv_line, run_cases, Axis, AxisSpec, Cases, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN, MAX_AXIS_VALUES, MAX_CASES_KEY,
+    SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW,
 };

@@ -213,6 +213,12 @@ impl Scenario {
         self.build_with(None)
     }
 
+    /// As [`Scenario::build`], taking the record from `cache` if it was read
+    /// before with the same file, format, CSV options and g (and keeping it there).
+    pub fn build_cached(&self, cache: &RecordCache) -> Result<Case, Error> {
+        self.build_with(Some(cache))
+    }
+
     /// As [`Scenario::build`], taking the record from `cache` if it was read before.
     pub(crate) fn build_with(&self, cache: Option<&RecordCache>) -> Result<Case, Error> {
         let g = self.model.gravity();

@@ -86,6 +86,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         path: &staging.path(STRIPES_CSV),
         shown: &stripes_path,
         header: study.csv_header(),
+        counted: "cases",
     };
     let threads = args.threads.map(|n| n as usize);
     let Written { done, wall } = write_rows(

@@ -1,42 +1,47 @@
-//! `rocking inventory TOWERS.csv --assess ASSESS.toml [--out DIR] [--threads N]`:
-//! every bell tower of a town assessed as `rocking assess` assesses one, with
-//! the kinematic checks. Each row of TOWERS.csv is the assessment file's table
-//! with the row's cells set in it (a dotted column is a key, `soil`,
-//! `topography`, `ag_SLV`… are the site's, `lon`, `lat` the place on the
-//! hazard grid), read by the same functions as the file, so a tower's numbers
-//! are those of `rocking assess` on a file with the same values. The rows run
-//! on all cores and are written in input order; a bad row gets its `error`
-//! and the others go on. Writes `inventory.csv` and `inventory.geojson`.
+//! `rocking inventory TOWERS.csv --assess ASSESS.toml [--out DIR] [--plot]
+//! [--threads N] [--shard K/N]`: every bell tower of a town assessed as
+//! `rocking assess` assesses one: the kinematic checks, and the dynamic ones
+//! when the assessment file has a record set. Each row of TOWERS.csv is the
+//! assessment file's table with the row's cells set in it (a dotted column is
+//! a key, `soil`, `topography`, `ag_SLV`… are the site's, `lon`, `lat` the
+//! place on the hazard grid), read by the same functions as the file, so a
+//! tower's numbers are those of `rocking assess` on a file with the same
+//! values. The hazard grid and each record file are read once for all the
+//! towers. The towers run on the sweep's engine (all cores, rows written in
+//! input order as they finish, memory flat, a progress bar, Ctrl-C keeping
+//! the rows finished); a bad row gets its `error` and the others go on.
+//! Writes `inventory.csv` and `inventory.geojson` (`town.rs`), with `--plot`
+//! the map and the ranking, and `report.html`.
 
+use super::rows::{write_rows, RowsFile, Written};
+use super::sweep::Interrupted;
+use super::town::{ranking, Ranked, Town, IDENTITY, INVENTORY_CSV, INVENTORY_GEOJSON};
 use crate::format::sig;
 use crate::output;
+use crate::shard::{fingerprint, Manifest, SHARD_JSON};
 use anyhow::Context;
-use rayon::prelude::*;
-use rocking_assess::{governing, AssessmentInput, Check, Method, Role};
+use rocking_assess::{Assessment, AssessmentInput, Method, RecordSet, Role};
 use rocking_codes::LimitState;
-use rocking_scenario::{set_dotted, AssessmentFile, Code};
+use rocking_scenario::{csv_line, run_cases, set_dotted, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row, Shard};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
 
-/// One row per tower: each check's ag capacity and ζ_E, the governing one, the error.
-pub const INVENTORY_CSV: &str = "inventory.csv";
-/// The same as RFC 7946 points.
-pub const INVENTORY_GEOJSON: &str = "inventory.geojson";
-
 /// The kinematic checks in the order of their columns, by the role of their limit state.
-const CHECKS: [(Role, Method); 4] = [
+const KINEMATIC: [(Role, Method); 4] = [
     (Role::Damage, Method::Activation),
     (Role::LifeSafety, Method::LinearKinematic),
     (Role::LifeSafety, Method::NonlinearKinematic),
     (Role::Collapse, Method::NonlinearKinematic),
 ];
-/// The columns of a tower's identity and place.
-const IDENTITY: [&str; 4] = ["id", "name", "lon", "lat"];
+/// The dynamic checks, after the kinematic ones when the assessment file has a record set.
+const DYNAMIC: [(Role, Method); 2] = [(Role::LifeSafety, Method::NonlinearDynamic), (Role::Collapse, Method::NonlinearDynamic)];
 /// Site columns that are keys of `[site]` under the same name.
 const SITE_COLUMNS: [&str; 5] = ["soil", "topography", "ST", "VN", "CU"];
 /// The keys of `[site]` that give the parameters from a hazard grid.
 const GRID_KEYS: [&str; 5] = ["grid", "lon", "lat", "VN", "CU"];
+/// Towers listed on the terminal.
+const LISTED: usize = 10;
 
 /// Arguments of `rocking inventory`.
 #[derive(Debug, clap::Args)]
@@ -45,7 +50,8 @@ pub struct Args {
     /// any scenario key (tower.width), soil, topography or ag_SLV, F0_SLV,
     /// Tc_star_SLV… as columns; empty cells take the assessment file's values.
     pub towers: PathBuf,
-    /// The assessment file every tower starts from (its site from the hazard grid at each tower's lon, lat).
+    /// The assessment file every tower starts from (its site from the hazard
+    /// grid at each tower's lon, lat; with assessment.records, the dynamic checks too).
     #[arg(long, value_name = "ASSESS.toml")]
     pub assess: PathBuf,
     /// Output folder, created if needed [default: out/<towers file stem>]. The
@@ -53,9 +59,20 @@ pub struct Args {
     /// inventory ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    /// Also draw the map of the towers coloured by ζ_E and their ranking (town_map, town_ranking: SVG and PNG).
+    #[arg(long)]
+    pub plot: bool,
     /// Worker threads [default: one per core].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub threads: Option<u32>,
+    /// Assess only the K-th of N equal contiguous blocks of towers (1 <= K <= N),
+    /// and write shard.json for `rocking merge`.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, conflicts_with = "plot")]
+    pub shard: Option<Shard>,
+}
+
+fn parse_shard(text: &str) -> Result<Shard, String> {
+    text.parse()
 }
 
 /// What a column of TOWERS.csv sets.
@@ -119,27 +136,20 @@ fn cell_value(cell: &str) -> Value {
         .unwrap_or_else(|| Value::String(cell.to_string()))
 }
 
-/// One tower's result: its cells as given and its checks, or the one line of its error.
-#[derive(Debug)]
-struct Tower {
-    id: String,
-    name: String,
-    lon: String,
-    lat: String,
-    /// The place, when both coordinates are numbers.
-    point: Option<(f64, f64)>,
-    checks: Result<Vec<Check>, String>,
-}
-
 /// The cells of one row by column name (empty cells left out).
-struct Row<'a> {
+struct Line<'a> {
     number: usize,
     cells: Vec<(&'a str, &'a Column, &'a str)>,
 }
 
-impl Row<'_> {
+impl Line<'_> {
     fn get(&self, name: &str) -> Option<&str> {
         self.cells.iter().find(|(n, _, _)| *n == name).map(|(_, _, v)| *v)
+    }
+    /// `TOWERS.csv row N (id X): what`.
+    fn failure(&self, file: &Path, what: impl std::fmt::Display) -> String {
+        let id = self.get("id").map(|id| format!(" (id {id})")).unwrap_or_default();
+        format!("{} row {}{id}: {what}", file.display(), self.number)
     }
     /// `TOWERS.csv row N (id X), column C: what`.
     fn fault(&self, file: &Path, column: &str, what: impl std::fmt::Display) -> String {
@@ -148,20 +158,19 @@ impl Row<'_> {
     }
 }
 
-/// A coordinate of the row: a number within ±`limit` degrees.
-fn coordinate(row: &Row<'_>, file: &Path, name: &str, limit: f64) -> Result<f64, String> {
+/// The coordinate of a row: a number within ±`limit` degrees.
+fn coordinate(row: &Line<'_>, file: &Path, name: &str, limit: f64) -> Result<f64, String> {
     let text = row
         .get(name)
         .ok_or_else(|| row.fault(file, name, "missing: a tower needs its place (WGS84 degrees)"))?;
-    let x: f64 = text.trim().parse().map_err(|_| row.fault(file, name, format!("not a number: {text:?}")))?;
-    if !x.is_finite() || x.abs() > limit {
-        return Err(row.fault(file, name, format!("must be within ±{limit} degrees, got {x}")));
-    }
-    Ok(x)
+    super::town::degrees(text, limit).ok_or_else(|| match text.trim().parse::<f64>() {
+        Ok(x) => row.fault(file, name, format!("must be within ±{limit} degrees, got {x}")),
+        Err(_) => row.fault(file, name, format!("not a number: {text:?}")),
+    })
 }
 
 /// The assessment file's table with the row's cells set in it.
-fn row_table(base: &Table, row: &Row<'_>, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
+fn row_table(base: &Table, row: &Line<'_>, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
     let mut table = base.clone();
     let site = match table.entry("site").or_insert_with(|| Value::Table(Table::new())) {
         Value::Table(t) => t,
@@ -199,21 +208,58 @@ fn row_table(base: &Table, row: &Row<'_>, file: &Path, lon: f64, lat: f64) -> Re
     Ok(table)
 }
 
-/// Assesses one row.
-fn assess_row(base: &Table, origin: &Path, file: &Path, row: &Row<'_>, first_of_id: Option<usize>) -> Tower {
-    let text = |name: &str| row.get(name).unwrap_or("").to_string();
-    let lon = coordinate(row, file, "lon", 180.0);
-    let lat = coordinate(row, file, "lat", 90.0);
-    let point = lon.as_ref().ok().zip(lat.as_ref().ok()).map(|(x, y)| (*x, *y));
-    let checks = (|| {
+/// The towers of TOWERS.csv, assessed on the sweep's engine: one [`Row`] each.
+struct Inventory<'a> {
+    /// The assessment file's table and the file.
+    base: &'a Table,
+    origin: &'a Path,
+    /// TOWERS.csv, which errors name.
+    file: &'a Path,
+    lines: Vec<Line<'a>>,
+    /// The first row of the same id, for a repeated one.
+    repeats: Vec<Option<usize>>,
+    /// A row whose number of cells is not the header's.
+    short: Vec<Option<String>>,
+    /// The checks of the columns, in order.
+    checks: Vec<(LimitState, Method)>,
+    /// The hazard grid and the records, read once for all the towers.
+    grids: GridCache,
+    records: RecordCache,
+}
+
+impl Inventory<'_> {
+    /// The header of `inventory.csv`.
+    fn header(&self) -> Vec<String> {
+        let mut header: Vec<String> = IDENTITY.iter().map(|s| s.to_string()).collect();
+        for (state, method) in &self.checks {
+            header.push(format!("{state}_{method}_ag_capacity_g"));
+            header.push(format!("{state}_{method}_zeta_E"));
+        }
+        header.extend(["zeta_E", "governing", "error"].map(String::from));
+        header
+    }
+
+    /// The identity cells of row `index`: id, name, lon, lat as given.
+    fn identity(&self, index: usize) -> Vec<Cell> {
+        let line = &self.lines[index];
+        IDENTITY.iter().map(|n| Cell::Text(line.get(n).unwrap_or("").to_string())).collect()
+    }
+
+    /// Assesses row `index`: its input and its assessment, or the one line of its error.
+    fn assess(&self, index: usize) -> Result<(AssessmentInput, Assessment), String> {
+        let (row, file) = (&self.lines[index], self.file);
+        if let Some(e) = &self.short[index] {
+            return Err(e.clone());
+        }
+        let lon = coordinate(row, file, "lon", 180.0);
+        let lat = coordinate(row, file, "lat", 90.0);
         if row.get("id").is_none() {
             return Err(row.fault(file, "id", "missing: each tower needs an id"));
         }
-        if let Some(first) = first_of_id {
+        if let Some(first) = self.repeats[index] {
             return Err(row.fault(file, "id", format!("the same id as row {first}")));
         }
-        let (lon, lat) = (lon.clone()?, lat.clone()?);
-        let table = row_table(base, row, file, lon, lat)?;
+        let table = row_table(self.base, row, file, lon?, lat?)?;
         // A fault names the key; the row's column that set it, else the assessment file's key.
         let fault = |e: rocking_scenario::Error| {
             let key = e.key().unwrap_or("");
@@ -224,154 +270,108 @@ fn assess_row(base: &Table, origin: &Path, file: &Path, row: &Row<'_>, first_of_
                     Column::Site(k) | Column::Key(k) => k == key,
                     Column::Identity => key == format!("site.{n}"),
                 })
-                .map_or_else(|| format!("{key} (of {})", origin.display()), |(n, _, v)| format!("{n} ({v:?})"));
+                .map_or_else(|| format!("{key} (of {})", self.origin.display()), |(n, _, v)| format!("{n} ({v:?})"));
             row.fault(file, &column, e.kind())
         };
-        let input = AssessmentFile::from_table(table, origin).and_then(AssessmentInput::new).map_err(fault)?;
-        let capacity = input.capacity().map_err(fault)?;
-        input.kinematic_checks(&capacity).map_err(fault)
-    })();
-    Tower {
-        id: text("id"),
-        name: text("name"),
-        lon: text("lon"),
-        lat: text("lat"),
-        point,
-        checks,
+        let input = AssessmentFile::from_table_on(table, self.origin, &self.grids)
+            .and_then(AssessmentInput::new)
+            .map_err(fault)?;
+        let done = Assessment::run_cached(&input, &self.records).map_err(fault)?;
+        Ok((input, done))
     }
-}
 
-/// The check of a role and method among a tower's checks.
-fn find(checks: &[Check], state: LimitState, method: Method) -> Option<&Check> {
-    checks.iter().find(|c| c.limit_state == state && c.method == method)
-}
-
-/// The column prefix of each check: `SLV_nonlinear_kinematic`.
-fn check_names(ntc: bool) -> Vec<(LimitState, Method, String)> {
-    CHECKS
-        .iter()
-        .map(|&(role, method)| {
-            let state = role.limit_state(ntc);
-            (state, method, format!("{state}_{method}"))
-        })
-        .collect()
-}
-
-/// `inventory.csv`: one row per tower in input order.
-fn write_csv(path: &Path, shown: &Path, towers: &[Tower], ntc: bool) -> anyhow::Result<()> {
-    let names = check_names(ntc);
-    let mut header: Vec<String> = IDENTITY.iter().map(|s| s.to_string()).collect();
-    for (_, _, n) in &names {
-        header.push(format!("{n}_ag_capacity_g"));
-        header.push(format!("{n}_zeta_E"));
-    }
-    header.extend(["zeta_E", "governing", "error"].map(String::from));
-    let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", shown.display()))?;
-    w.write_record(&header).with_context(|| format!("cannot write {}", shown.display()))?;
-    let mut buffer = ryu::Buffer::new();
-    let mut number = |x: f64| buffer.format(x).to_string();
-    for t in towers {
-        let mut record = vec![t.id.clone(), t.name.clone(), t.lon.clone(), t.lat.clone()];
-        match &t.checks {
-            Ok(checks) => {
-                for (state, method, _) in &names {
-                    match find(checks, *state, *method) {
-                        Some(c) => record.extend([number(c.ag_capacity.value()), number(c.zeta_e)]),
-                        None => record.extend([String::new(), String::new()]),
-                    }
-                }
-                match governing(checks) {
-                    Some(g) => record.extend([number(g.zeta_e), format!("{} {}", g.limit_state, g.method)]),
-                    None => record.extend([String::new(), String::new()]),
-                }
-                record.push(String::new());
-            }
-            Err(e) => {
-                record.extend(std::iter::repeat_n(String::new(), 2 * names.len() + 2));
-                record.push(e.clone());
+    /// The row of tower `index`.
+    fn row(&self, index: usize) -> Row {
+        let (_, done) = match self.assess(index) {
+            Ok(assessed) => assessed,
+            Err(e) => return self.failed_row(index, &e),
+        };
+        let mut cells = self.identity(index);
+        let completed = done.completed();
+        for (state, method) in &self.checks {
+            match completed.iter().find(|c| c.limit_state == *state && c.method == *method) {
+                Some(c) => cells.extend([Cell::Float(c.ag_capacity.value()), Cell::Float(c.zeta_e)]),
+                None => cells.extend([Cell::Empty, Cell::Empty]),
             }
         }
-        w.write_record(&record).with_context(|| format!("cannot write {}", shown.display()))?;
+        match done.governing() {
+            Some(g) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}", g.limit_state, g.method))]),
+            None => cells.extend([Cell::Empty, Cell::Empty]),
+        }
+        // A dynamic check that could not be completed: the others stand, the reason is the error.
+        let incomplete: Vec<String> = done
+            .dynamic
+            .iter()
+            .filter_map(|d| {
+                d.error
+                    .as_ref()
+                    .map(|e| format!("{} {}: could not be completed: {e}", d.limit_state, Method::NonlinearDynamic))
+            })
+            .collect();
+        cells.push(if incomplete.is_empty() {
+            Cell::Empty
+        } else {
+            Cell::Text(self.lines[index].failure(self.file, incomplete.join("; ")))
+        });
+        Row { index, cells }
     }
-    w.flush().with_context(|| format!("cannot write {}", shown.display()))
 }
 
-/// `inventory.geojson`: a FeatureCollection of Points (RFC 7946), the properties those of `inventory.csv`
-/// (numbers as numbers, a missing one null); a tower without a place has no geometry.
-fn geojson(towers: &[Tower], ntc: bool) -> geojson::GeoJson {
-    use serde_json::Value as J;
-    let names = check_names(ntc);
-    let features = towers
-        .iter()
-        .map(|t| {
-            let mut p = geojson::JsonObject::new();
-            p.insert("id".into(), J::from(t.id.clone()));
-            p.insert("name".into(), J::from(t.name.clone()));
-            let checks = t.checks.as_deref().unwrap_or(&[]);
-            for (state, method, n) in &names {
-                let c = find(checks, *state, *method);
-                p.insert(format!("{n}_ag_capacity_g"), c.map_or(J::Null, |c| J::from(c.ag_capacity.value())));
-                p.insert(format!("{n}_zeta_E"), c.map_or(J::Null, |c| J::from(c.zeta_e)));
-            }
-            let g = governing(checks);
-            p.insert("zeta_E".into(), g.map_or(J::Null, |g| J::from(g.zeta_e)));
-            p.insert("governing".into(), g.map_or(J::Null, |g| J::from(format!("{} {}", g.limit_state, g.method))));
-            p.insert("error".into(), t.checks.as_ref().err().map_or(J::Null, |e| J::from(e.clone())));
-            geojson::Feature {
-                bbox: None,
-                geometry: t.point.map(|(lon, lat)| geojson::Geometry::new(geojson::Value::Point(vec![lon, lat]))),
-                id: (!t.id.is_empty()).then(|| geojson::feature::Id::String(t.id.clone())),
-                properties: Some(p),
-                foreign_members: None,
-            }
-        })
-        .collect();
-    geojson::GeoJson::FeatureCollection(geojson::FeatureCollection {
-        bbox: None,
-        features,
-        foreign_members: None,
-    })
+impl Cases for Inventory<'_> {
+    fn len(&self) -> usize {
+        self.lines.len()
+    }
+    /// A tower is not stopped part-way: Ctrl-C stops the run after the towers under way.
+    fn run_case_until(&self, index: usize, _halted: &dyn Fn() -> bool) -> Option<Row> {
+        Some(self.row(index))
+    }
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        let mut cells = self.identity(index);
+        cells.extend(std::iter::repeat_n(Cell::Empty, 2 * self.checks.len() + 2));
+        cells.push(Cell::Text(message.to_string()));
+        Row { index, cells }
+    }
+}
+
+/// The fingerprint of an inventory: of both files' bytes, so that shards merge only when they came from the same two.
+fn inventory_fingerprint(towers: &[u8], assess: &[u8]) -> String {
+    fingerprint(format!("{}\n{}\n", fingerprint(towers), fingerprint(assess)).as_bytes())
 }
 
 /// Assesses the towers and writes the files.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.map_or(0, |n| n as usize))
-        .build()
-        .context("starting the worker threads")?;
-    pool.install(|| inventory(args))
-}
-
-fn inventory(args: &Args) -> anyhow::Result<()> {
     let started = std::time::Instant::now();
     let text = std::fs::read_to_string(&args.assess).with_context(|| format!("cannot read {}", args.assess.display()))?;
     // The assessment file must be valid by itself: its errors name the file, the key and the cause.
     let base = AssessmentInput::from_toml_str(&text, &args.assess)?;
     let base_table = rocking_scenario::parse_toml(&text, &args.assess)?;
     let ntc = base.site.is_ntc();
+    let records = RecordCache::with_capacity(base.file.records.len());
     if !base.file.records.is_empty() {
-        eprintln!(
-            "note: {} has a record set; inventory runs the kinematic checks only (the dynamic checks of one tower: rocking assess)",
-            args.assess.display()
-        );
+        // Every record read once, here: a bad record file stops the inventory before it starts.
+        RecordSet::read_cached(&base, base.capacity()?.t_slc, &records)?;
+    }
+    let mut checks: Vec<(LimitState, Method)> = KINEMATIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)).collect();
+    if !base.file.records.is_empty() {
+        checks.extend(DYNAMIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)));
     }
 
     let file = &args.towers;
+    let towers_bytes = std::fs::read(file).with_context(|| format!("cannot read {}", file.display()))?;
     let mut reader = csv::ReaderBuilder::new()
         .flexible(true)
         .trim(csv::Trim::All)
-        .from_path(file)
-        .with_context(|| format!("cannot read {}", file.display()))?;
+        .from_reader(towers_bytes.as_slice());
     let header = reader.headers().with_context(|| format!("cannot read {}", file.display()))?.clone();
     let columns = columns(&header, base.file.site.code, file)?;
-    let records = reader
+    let records_read = reader
         .records()
         .collect::<Result<Vec<_>, _>>()
         .with_context(|| format!("cannot read {}", file.display()))?;
-    let rows: Vec<Row<'_>> = records
+    let lines: Vec<Line<'_>> = records_read
         .iter()
         .enumerate()
-        .map(|(i, r)| Row {
+        .map(|(i, r)| Line {
             number: i + 1,
             cells: header
                 .iter()
@@ -384,7 +384,7 @@ fn inventory(args: &Args) -> anyhow::Result<()> {
         .collect();
     // The first row of each id; a later row with the same id is refused.
     let mut first_of: HashMap<&str, usize> = HashMap::new();
-    let repeats: Vec<Option<usize>> = rows
+    let repeats: Vec<Option<usize>> = lines
         .iter()
         .map(|row| {
             let id = row.get("id")?;
@@ -397,74 +397,151 @@ fn inventory(args: &Args) -> anyhow::Result<()> {
             }
         })
         .collect();
-    let short: Vec<Option<String>> = records
+    let short: Vec<Option<String>> = records_read
         .iter()
-        .zip(&rows)
+        .zip(&lines)
         .map(|(r, row)| (r.len() != header.len()).then(|| format!("{} row {}: {} cells, the header has {}", file.display(), row.number, r.len(), header.len())))
         .collect();
+    let inventory = Inventory {
+        base: &base_table,
+        origin: &args.assess,
+        file,
+        lines,
+        repeats,
+        short,
+        checks,
+        grids: GridCache::default(),
+        records,
+    };
 
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.towers));
-    let outputs = [INVENTORY_CSV, INVENTORY_GEOJSON].map(|f| dir.join(f));
+    let mut names = vec![INVENTORY_CSV, INVENTORY_GEOJSON];
+    if args.shard.is_some() {
+        names.push(SHARD_JSON);
+    }
+    if args.plot {
+        names.extend(crate::plot::TOWN_FIGURES);
+    }
+    let outputs: Vec<PathBuf> = names.iter().map(|f| dir.join(f)).collect();
     let mut inputs = vec![args.towers.clone(), args.assess.clone()];
     inputs.extend(base.inputs());
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
     let staging = output::Staging::new(&dir, &inputs)?;
 
-    let towers: Vec<Tower> = rows
-        .par_iter()
-        .zip(&repeats)
-        .zip(&short)
-        .map(|((row, repeat), short)| {
-            let mut tower = assess_row(&base_table, &args.assess, file, row, *repeat);
-            if let Some(e) = short {
-                tower.checks = Err(e.clone());
-            }
-            tower
-        })
-        .collect();
-
-    write_csv(&staging.path(INVENTORY_CSV), &dir.join(INVENTORY_CSV), &towers, ntc)?;
-    std::fs::write(staging.path(INVENTORY_GEOJSON), geojson(&towers, ntc).to_string() + "\n")
-        .with_context(|| format!("cannot write {}", dir.join(INVENTORY_GEOJSON).display()))?;
+    let header = inventory.header();
+    let mut town = Town::new(&header, &staging.path(INVENTORY_GEOJSON), &dir.join(INVENTORY_GEOJSON))?;
+    let csv_path = dir.join(INVENTORY_CSV);
+    let rows_file = RowsFile {
+        path: &staging.path(INVENTORY_CSV),
+        shown: &csv_path,
+        header: csv_line(header.iter().cloned()),
+        counted: "towers",
+    };
+    let total = inventory.len();
+    let cases = args.shard.map_or(0..total, |s| s.cases(total));
+    let threads = args.threads.map(|n| n as usize);
+    // The dynamic checks of a tower run in parallel on the pool they are
+    // called from: a pool of one thread while there are towers enough for
+    // every worker (the workers' own pool holds the others), all of them when fewer.
+    let workers = threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+    let outer = if cases.len() >= workers { 1 } else { workers };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(outer)
+        .build()
+        .context("starting the worker threads")?;
+    let mut pushed = Ok(());
+    let Written { done, wall } = pool.install(|| {
+        write_rows(
+            &rows_file,
+            cases.len(),
+            |row| {
+                if pushed.is_ok() {
+                    let texts: Vec<_> = row.cells.iter().map(Cell::text).collect();
+                    pushed = town.push(&texts.iter().map(AsRef::as_ref).collect::<Vec<&str>>());
+                }
+            },
+            |cancel, sink| run_cases(&inventory, cases.clone(), threads, cancel, sink),
+        )
+    })?;
+    pushed?;
+    let check_names = town.checks();
+    let towers = town.finish()?;
+    if done.cancelled {
+        staging.commit()?;
+        return Err(Interrupted {
+            written: done.written,
+            total: cases.len(),
+            csv: csv_path,
+        }
+        .into());
+    }
+    let mut part = String::new();
+    if let Some(shard) = args.shard {
+        let manifest = Manifest::new(
+            "inventory",
+            INVENTORY_CSV,
+            shard,
+            total,
+            inventory_fingerprint(&towers_bytes, text.as_bytes()).as_bytes(),
+        );
+        std::fs::write(staging.path(SHARD_JSON), manifest.to_json()).with_context(|| format!("cannot write {}", dir.join(SHARD_JSON).display()))?;
+        part = format!(" (shard {shard}: rows {}..{} of {total})", cases.start + 1, cases.end);
+    }
+    if args.plot {
+        crate::plot::town_figures(staging.folder(), &town_title(&args.towers, towers.len()), &towers, &check_names).context("drawing the figures")?;
+    }
     staging.commit()?;
 
-    let mut ranked: Vec<(&Tower, &Check)> = towers
-        .iter()
-        .filter_map(|t| t.checks.as_deref().ok().and_then(governing).map(|g| (t, g)))
-        .collect();
-    ranked.sort_by(|a, b| a.1.zeta_e.total_cmp(&b.1.zeta_e));
-    let bad: Vec<&String> = towers.iter().filter_map(|t| t.checks.as_ref().err()).collect();
-    let mut lines = vec![format!("{} towers, ranked by the governing ζ_E (least first):", ranked.len())];
-    lines.extend(ranked.iter().take(10).map(|(t, g)| {
-        format!(
-            "  {:12} {:24} ζ_E {:>6} {} {}{}",
-            t.id,
-            t.name,
-            sig(g.zeta_e, 3),
-            g.limit_state,
-            g.method,
-            if g.holds { "" } else { " (FAILS)" }
-        )
-    }));
-    if ranked.len() > 10 {
-        lines.push(format!("  … {} more in {}", ranked.len() - 10, INVENTORY_CSV));
-    }
+    let mut lines = ranking_lines(&towers);
     lines.push(format!(
-        "wrote {INVENTORY_CSV}, {INVENTORY_GEOJSON} in {} ({} s)",
+        "wrote {} in {}{part} ({} s, {} towers in {} s)",
+        names.join(", "),
         dir.display(),
-        sig(started.elapsed().as_secs_f64(), 3)
+        sig(started.elapsed().as_secs_f64(), 3),
+        done.written,
+        sig(wall, 3)
     ));
     super::print(&(lines.join("\n") + "\n"))?;
+    let bad: Vec<&Ranked> = towers.iter().filter(|t| !t.error.is_empty()).collect();
     if !bad.is_empty() {
-        for e in &bad {
-            eprintln!("{e}");
+        for t in &bad {
+            eprintln!("{}", t.error);
         }
         anyhow::bail!(
-            "{} of {} towers not assessed (their error is in {}); the others are",
+            "{} of {} towers with an error (in the error column of {}); the others are assessed",
             bad.len(),
             towers.len(),
             dir.join(INVENTORY_CSV).display()
         );
     }
     Ok(())
+}
+
+/// The title of a town's figures and page: `12 towers of towers.csv`.
+pub fn town_title(towers_file: &Path, count: usize) -> String {
+    let name = towers_file
+        .file_name()
+        .map_or_else(|| towers_file.display().to_string(), |n| n.to_string_lossy().into_owned());
+    format!("{count} towers of {name}")
+}
+
+/// The terminal's lines: the towers of least ζ_E.
+pub fn ranking_lines(towers: &[Ranked]) -> Vec<String> {
+    let ranked = ranking(towers);
+    let mut lines = vec![format!("{} towers, ranked by the governing ζ_E (least first):", ranked.len())];
+    lines.extend(ranked.iter().take(LISTED).map(|t| {
+        let zeta = t.zeta.unwrap_or(f64::NAN);
+        format!(
+            "  {:12} {:24} ζ_E {:>6} {}{}",
+            t.id,
+            t.name,
+            sig(zeta, 3),
+            t.governing,
+            if zeta < 1.0 { " (FAILS)" } else { "" }
+        )
+    }));
+    if ranked.len() > LISTED {
+        lines.push(format!("  … {} more in {INVENTORY_CSV}", ranked.len() - LISTED));
+    }
+    lines
 }

@@ -1,7 +1,8 @@
 //! `rocking merge DIR... --out DIR`: the shards of a study (folders written by
-//! `rocking sweep --shard K/N`) put back into one file, in case order,
-//! byte-identical to the file of the unsharded run (README, "Studies
-//! beyond one machine").
+//! `rocking sweep --shard K/N` or `rocking inventory --shard K/N`) put back
+//! into one file, in case order, byte-identical to the file of the unsharded
+//! run (README, "Studies beyond one machine"); an inventory's
+//! `inventory.geojson` is then made from the merged rows.
 //!
 //! Everything is checked before a byte is kept: every folder's `shard.json`
 //! (same kind, same study fingerprint, same `rocking` version, same number of
@@ -50,6 +51,7 @@ pub struct Args {
 fn merged_file(kind: &str) -> Option<&'static str> {
     match kind {
         "sweep" => Some(super::sweep::SWEEP_CSV),
+        "inventory" => Some(super::town::INVENTORY_CSV),
         _ => None,
     }
 }
@@ -61,7 +63,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let (first_dir, first) = ordered[0];
     let name = merged_file(&first.kind).with_context(|| {
         format!(
-            "{}: kind: {:?} is not a kind of shard this rocking can merge (it merges \"sweep\")",
+            "{}: kind: {:?} is not a kind of shard this rocking can merge (it merges \"sweep\" and \"inventory\")",
             first_dir.join(SHARD_JSON).display(),
             first.kind
         )
@@ -139,12 +141,33 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     temp.persist_noclobber(&target)
         .map_err(|e| e.error)
         .with_context(|| format!("cannot write {}", target.display()))?;
+    let mut written = vec![target.clone()];
+    if first.kind == "inventory" {
+        written.push(finish_inventory(&args.out, &target)?);
+    }
+    let written: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
     super::print(&format!(
-        "merged {} shards ({} cases) into {}\n",
+        "merged {} shards ({} {}) into {}\n",
         ordered.len(),
         first.total_cases,
-        target.display()
+        if first.kind == "inventory" { "towers" } else { "cases" },
+        written.join(", ")
     ))
+}
+
+/// The merged towers' `inventory.geojson`, made from the merged `inventory.csv` as `rocking inventory` makes it.
+fn finish_inventory(out: &Path, csv: &Path) -> anyhow::Result<PathBuf> {
+    use super::town::{from_csv, INVENTORY_GEOJSON};
+    let target = out.join(INVENTORY_GEOJSON);
+    let temp = tempfile::Builder::new()
+        .prefix(&format!(".{INVENTORY_GEOJSON}."))
+        .tempfile_in(out)
+        .with_context(|| format!("cannot write in {}", out.display()))?;
+    from_csv(csv, temp.path(), &target)?;
+    temp.persist_noclobber(&target)
+        .map_err(|e| e.error)
+        .with_context(|| format!("cannot write {}", target.display()))?;
+    Ok(target)
 }
 
 /// The shards in order 1..=N, after checking they are all the shards of one study, each once.

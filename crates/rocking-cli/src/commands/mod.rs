@@ -11,6 +11,7 @@ pub mod rows;
 pub mod run;
 pub mod spectrum;
 pub mod sweep;
+pub mod town;
 
 use anyhow::Context;
 use rocking_scenario::Scenario;

@@ -1,4 +1,4 @@
-//! The rows of a sweep or a fragility study written to their CSV file as the
+//! The rows of a sweep, a fragility study or an inventory written to their CSV file as the
 //! cases finish: the header first, a progress bar on a terminal, a clean stop
 //! on Ctrl-C (the rows finished so far kept, complete and in order), and every
 //! write error named by the file the user will look for.
@@ -20,6 +20,8 @@ pub struct RowsFile<'a> {
     pub shown: &'a Path,
     /// Its header line.
     pub header: String,
+    /// What a row is, for the progress bar: `cases`, `towers`.
+    pub counted: &'static str,
 }
 
 /// How the cases ended, and the wall time they took (s).
@@ -47,7 +49,7 @@ pub fn write_rows(
 
     // The first Ctrl-C stops the cases; a second ends the process at once (crate::signals).
     let interrupted = crate::signals::interrupted();
-    let progress = progress_bar(total);
+    let progress = progress_bar(total, file.counted);
     let start = Instant::now();
     let result = run(interrupted, &mut |row: Row| {
         writeln!(csv, "{}", row.to_csv_line())?;
@@ -70,12 +72,12 @@ pub fn write_rows(
 }
 
 /// A bar with the rate and the time left on stderr, when stderr is a terminal; hidden otherwise.
-fn progress_bar(len: usize) -> ProgressBar {
+fn progress_bar(len: usize, counted: &str) -> ProgressBar {
     if !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(len as u64);
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} cases  {per_sec}  {elapsed} elapsed, {eta} left") {
+    if let Ok(style) = ProgressStyle::with_template(&format!("{{bar:40}} {{pos}}/{{len}} {counted}  {{per_sec}}  {{elapsed}} elapsed, {{eta}} left")) {
         bar.set_style(style);
     }
     bar

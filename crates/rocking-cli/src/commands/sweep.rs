@@ -101,6 +101,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         path: &staging.path(SWEEP_CSV),
         shown: &csv_path,
         header: sweep.csv_header(),
+        counted: "cases",
     };
     let threads = args.threads.map(|n| n as usize);
     let Written { done, wall } = write_rows(

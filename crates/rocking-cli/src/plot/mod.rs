@@ -6,7 +6,8 @@
 //! (max θ/α against the first swept key, one curve per value of the second,
 //! the paper's Figure 6) and, for two numeric keys, `sweep_map` (a heat map).
 //! A fragility study: `ida` (the response against the level, one line per
-//! record) and `fragility` (observed fractions and fitted curves).
+//! record) and `fragility` (observed fractions and fitted curves). A town's
+//! inventory: `town_map` and `town_ranking`.
 
 mod chart;
 mod fragility;
@@ -23,6 +24,7 @@ mod sweep_map;
 mod sweep_table;
 mod theta;
 mod timeline;
+mod town;
 
 pub use chart::{LineChart, Marker};
 use rocking_scenario::{Measure, Outcome, Stripe};
@@ -86,6 +88,19 @@ pub fn sweep_figures_of(dir: &Path, title: &str, table: &SweepTable) -> anyhow::
     if let Some(map) = sweep_map::MapFigure::new(title, table) {
         files.extend(style::render(dir, "sweep_map", sweep_map::SIZE, &map)?);
     }
+    Ok(files)
+}
+
+/// The figures `town_figures` writes.
+pub const TOWN_FIGURES: [&str; 4] = ["town_map.svg", "town_map.png", "town_ranking.svg", "town_ranking.png"];
+
+/// Draws the figures of a town's inventory into `dir`: `town_map` (the towers
+/// at their place coloured by ζ_E) and `town_ranking` (the towers of least ζ_E
+/// and their governing checks); `checks` are the checks' names in column order.
+pub fn town_figures(dir: &Path, title: &str, towers: &[crate::commands::town::Ranked], checks: &[String]) -> anyhow::Result<Vec<PathBuf>> {
+    let mut files = style::render(dir, "town_map", town::MAP_SIZE, &town::MapFigure { title, towers })?;
+    let ranking = town::RankingFigure { title, towers, checks };
+    files.extend(style::render(dir, "town_ranking", town::RankingFigure::size(towers), &ranking)?);
     Ok(files)
 }
 

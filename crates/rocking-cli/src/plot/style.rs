@@ -245,6 +245,41 @@ pub fn xy_mesh<'a, 'b, DB: DrawingBackend>(
     mesh
 }
 
+/// A vertical colour bar filling `area`: viridis from 0 to `top`, its axis
+/// described by `desc`, and a white line across it at `mark` if given (ζ_E = 1).
+pub fn colour_bar<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, top: f64, desc: &str, mark: Option<f64>) -> anyhow::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let mut chart = ChartBuilder::on(area)
+        .margin_top(8)
+        .margin_bottom(62)
+        .margin_right(50)
+        .y_label_area_size(58)
+        .build_cartesian_2d(0.0..1.0, 0.0..top)?;
+    chart
+        .configure_mesh()
+        .disable_x_mesh()
+        .disable_x_axis()
+        .disable_y_mesh()
+        .label_style(text(size::TICK, INK))
+        .axis_desc_style(text(size::AXIS, INK))
+        .y_desc(desc)
+        .y_label_formatter(&|v| crate::format::sig(*v, 3))
+        .set_all_tick_mark_size(4)
+        .draw()?;
+    let steps = 120;
+    chart.draw_series((0..steps).map(|k| {
+        let (a, b) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
+        Rectangle::new([(0.0, a * top), (1.0, b * top)], viridis((a + b) / 2.0).filled())
+    }))?;
+    if let Some(m) = mark.filter(|m| (0.0..=top).contains(m)) {
+        chart.draw_series(std::iter::once(PathElement::new(vec![(0.0, m), (1.0, m)], WHITE.stroke_width(3))))?;
+        chart.draw_series(std::iter::once(PathElement::new(vec![(0.0, m), (1.0, m)], BLACK.stroke_width(1))))?;
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

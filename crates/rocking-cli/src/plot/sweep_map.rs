@@ -122,35 +122,6 @@ impl<'a> MapFigure<'a> {
             1.0
         }
     }
-
-    fn colour_bar<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>, top: f64) -> anyhow::Result<()>
-    where
-        DB::ErrorType: 'static,
-    {
-        let mut chart = ChartBuilder::on(area)
-            .margin_top(8)
-            .margin_bottom(62)
-            .margin_right(50)
-            .y_label_area_size(58)
-            .build_cartesian_2d(0.0..1.0, 0.0..top)?;
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .disable_x_axis()
-            .disable_y_mesh()
-            .label_style(text(size::TICK, INK))
-            .axis_desc_style(text(size::AXIS, INK))
-            .y_desc("max θ/α (–)")
-            .y_label_formatter(&|v| sig(*v, 3))
-            .set_all_tick_mark_size(4)
-            .draw()?;
-        let steps = 120;
-        chart.draw_series((0..steps).map(|k| {
-            let (a, b) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
-            Rectangle::new([(0.0, a * top), (1.0, b * top)], viridis((a + b) / 2.0).filled())
-        }))?;
-        Ok(())
-    }
 }
 
 impl Figure for MapFigure<'_> {
@@ -170,7 +141,7 @@ impl Figure for MapFigure<'_> {
         let (w, _) = body.dim_in_pixel();
         let (map, bar) = body.split_horizontally(w.saturating_sub(BAR_AREA));
         let top = self.top();
-        self.colour_bar(&bar, top)?;
+        style::colour_bar(&bar, top, "max θ/α (–)", None)?;
 
         // One cell per case, equal in size, at whole-number positions (the
         // values label them): a grid of any spacing reads as a table.

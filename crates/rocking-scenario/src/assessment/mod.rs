@@ -13,7 +13,7 @@ mod site;
 
 pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, SpectrumColumn, SpectrumKind};
 pub use keys::ASSESSMENT_KEY_DOCS;
-pub use site::{Code, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
 
 use crate::error::{closest, ErrorKind, Fault};
 use crate::read::{as_number, non_negative, positive, with_article, Section};
@@ -82,10 +82,16 @@ impl AssessmentFile {
     /// Validates an assessment file given as a TOML table (from a dict in Python);
     /// `origin` names it in errors and its folder resolves relative paths.
     pub fn from_table(table: Table, origin: &Path) -> Result<Self, Error> {
-        Self::parse(table, origin).map_err(|f| f.in_file(origin))
+        Self::from_table_on(table, origin, &GridCache::default())
     }
 
-    fn parse(mut table: Table, origin: &Path) -> Result<Self, Fault> {
+    /// As [`AssessmentFile::from_table`], the hazard grid taken from `grids`
+    /// when it was read before (the towers of an inventory read it once).
+    pub fn from_table_on(table: Table, origin: &Path, grids: &GridCache) -> Result<Self, Error> {
+        Self::parse(table, origin, grids).map_err(|f| f.in_file(origin))
+    }
+
+    fn parse(mut table: Table, origin: &Path, grids: &GridCache) -> Result<Self, Fault> {
         let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
         if table.contains_key("ground") {
             return Err(Fault::new(
@@ -106,7 +112,7 @@ impl AssessmentFile {
             ));
         }
         let site = match table.remove("site") {
-            Some(v) => site::parse(&v, &folder)?,
+            Some(v) => site::parse(&v, &folder, grids)?,
             None => {
                 return Err(Fault::new(
                     "site",

@@ -6,6 +6,7 @@ use crate::error::{ErrorKind, Fault};
 use crate::read::{positive, Section};
 use rocking_codes::{CodeSpectrum, Ec8Spectrum, Ec8Type, HazardGrid, LimitState, NtcSite, NtcSpectrum, Soil, Topography, DEFAULT_DAMPING_PCT};
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, PoisonError};
 use toml::Value;
 
 /// The keys of `[site]`, its limit states' tables included.
@@ -113,7 +114,7 @@ fn codes_fault(prefix: &str, e: rocking_codes::Error) -> Fault {
 }
 
 /// Parses `[site]`; `folder` resolves the grid's path.
-pub(crate) fn parse(value: &Value, folder: &Path) -> Result<Site, Fault> {
+pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<Site, Fault> {
     let site = Section::new("site", value)?;
     site.only(SITE_KEYS)?;
     let code = site.choice("code", &[("ntc2018", Code::Ntc2018), ("ec8", Code::Ec8)])?.unwrap_or(Code::Ntc2018);
@@ -171,7 +172,7 @@ pub(crate) fn parse(value: &Value, folder: &Path) -> Result<Site, Fault> {
                             ErrorKind::NotApplicable("give either the limit states' tables or grid, not both".into()),
                         ));
                     }
-                    let (hazard, nominal_life, use_coefficient, source) = grid_site(&site, path, folder)?;
+                    let (hazard, nominal_life, use_coefficient, source) = grid_site(&site, path, folder, grids)?;
                     // The checks' limit states.
                     [LimitState::Sld, LimitState::Slv, LimitState::Slc]
                         .into_iter()
@@ -252,8 +253,36 @@ fn static_key(state: LimitState) -> &'static str {
     }
 }
 
-/// Reads the grid and interpolates it at the site: the site's hazard, `VN`, `CU` and the source.
-fn grid_site(site: &Section<'_>, path: &str, folder: &Path) -> Result<(rocking_codes::SiteHazard, f64, f64, SiteSource), Fault> {
+/// The hazard grid last read, kept so that the sites of many files on the
+/// same grid (the towers of an inventory) read and parse it once.
+#[derive(Debug, Default)]
+pub struct GridCache(Mutex<Option<(PathBuf, Arc<HazardGrid>)>>);
+
+impl GridCache {
+    /// The grid of `file`: the one kept if it is that file's, else read and parsed (and kept).
+    fn grid(&self, file: &Path) -> Result<Arc<HazardGrid>, Fault> {
+        let mut kept = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some((_, grid)) = kept.as_ref().filter(|(path, _)| path == file) {
+            return Ok(Arc::clone(grid));
+        }
+        let text = std::fs::read_to_string(file).map_err(|e| {
+            Fault::new(
+                "site.grid",
+                ErrorKind::Read {
+                    path: file.to_path_buf(),
+                    reason: crate::error::io_reason(&e),
+                    os_error: e.raw_os_error(),
+                },
+            )
+        })?;
+        let grid = Arc::new(HazardGrid::parse(&text).map_err(|e| Fault::invalid("site.grid", format!("{}: {e}", file.display())))?);
+        *kept = Some((file.to_path_buf(), Arc::clone(&grid)));
+        Ok(grid)
+    }
+}
+
+/// Reads the grid (or takes it from `grids`) and interpolates it at the site: the site's hazard, `VN`, `CU` and the source.
+fn grid_site(site: &Section<'_>, path: &str, folder: &Path, grids: &GridCache) -> Result<(rocking_codes::SiteHazard, f64, f64, SiteSource), Fault> {
     let required = |key: &str| -> Result<f64, Fault> {
         site.number(key)?.ok_or_else(|| {
             Fault::new(
@@ -273,17 +302,7 @@ fn grid_site(site: &Section<'_>, path: &str, folder: &Path) -> Result<(rocking_c
     let nominal_life = positive("site.VN", site.number("VN")?.unwrap_or(DEFAULT_NOMINAL_LIFE))?;
     let use_coefficient = positive("site.CU", site.number("CU")?.unwrap_or(DEFAULT_USE_COEFFICIENT))?;
     let file = folder.join(path);
-    let text = std::fs::read_to_string(&file).map_err(|e| {
-        Fault::new(
-            "site.grid",
-            ErrorKind::Read {
-                path: file.clone(),
-                reason: crate::error::io_reason(&e),
-                os_error: e.raw_os_error(),
-            },
-        )
-    })?;
-    let grid = HazardGrid::parse(&text).map_err(|e| Fault::invalid("site.grid", format!("{}: {e}", file.display())))?;
+    let grid = grids.grid(&file)?;
     let hazard = grid.site(lon, lat).map_err(|e| match e {
         rocking_codes::Error::OutsideGrid { .. } => Fault::invalid("site.lon", format!("{e} ({})", file.display())),
         other => codes_fault("site", other),

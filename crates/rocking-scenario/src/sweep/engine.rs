@@ -64,10 +64,14 @@ pub enum RunError<E> {
     Stopped(E),
 }
 
-/// Numbered cases that give one row each: a sweep's, or a fragility study's.
-pub(crate) trait Cases: Sync {
+/// Numbered cases that give one row each: a sweep's, a fragility study's, an inventory's towers.
+pub trait Cases: Sync {
     /// The number of cases.
     fn len(&self) -> usize;
+    /// Whether there are none.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
     /// Runs case `index` on this thread: its row (with `error` filled if it
     /// failed), or `None` when `halted()` stopped it before its end.
     fn run_case_until(&self, index: usize, halted: &dyn Fn() -> bool) -> Option<Row>;
@@ -115,8 +119,9 @@ impl Sweep {
 }
 
 /// Runs the cases `cases` of `this` (indices clipped to `0..len`) as
-/// [`Sweep::run_range`] says (which is this, for a sweep): rows in order.
-pub(crate) fn run_cases<C: Cases, E>(
+/// [`Sweep::run_range`] says (which is this, for a sweep): rows in order,
+/// memory flat, a stop on `cancel` with the first rows complete.
+pub fn run_cases<C: Cases, E>(
     this: &C,
     cases: Range<usize>,
     threads: Option<usize>,

@@ -14,8 +14,8 @@ mod shard;
 mod tests;
 
 pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
-pub(crate) use engine::{is_stopped, run_cases, Cases, Until};
-pub use engine::{Finished, RunError, WINDOW};
+pub(crate) use engine::{is_stopped, Until};
+pub use engine::{run_cases, Cases, Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 pub use shard::Shard;
 
