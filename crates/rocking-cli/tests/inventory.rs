@@ -249,7 +249,40 @@ fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
         let r = rocking(&args);
         assert_eq!(r.code, Some(0), "{}", r.stderr);
         for file in ["inventory.csv", "inventory.geojson"] {
-            assert!(bytes(&merged.join(file)) == bytes(&whole.join(file)), "{file} of {n} shards differs from the unsharded one");
+            assert!(
+                bytes(&merged.join(file)) == bytes(&whole.join(file)),
+                "{file} of {n} shards differs from the unsharded one"
+            );
         }
+    }
+}
+
+#[test]
+fn details_write_each_towers_assessment_linked_from_the_report() {
+    let dir = tempdir();
+    let out = dir.path().join("out");
+    let r = rocking(&[
+        "inventory",
+        "examples/town/towers.csv",
+        "--assess",
+        "examples/town/assess.toml",
+        "--out",
+        arg(&out),
+        "--details",
+    ]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let (header, rows) = inventory_csv(&out);
+    let report = read(&out.join("report.html"));
+    for row in &rows {
+        let id = cell(&header, row, "id");
+        let folder = out.join("towers").join(id);
+        // The tower's own files, as `rocking assess` writes them; its governing ζ_E that of its row.
+        for file in ["assessment.json", "capacity.csv", "report.html"] {
+            assert!(folder.join(file).is_file(), "no {file} for {id}");
+        }
+        let json: serde_json::Value = serde_json::from_str(&read(&folder.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
+        let zeta = json["governing"]["zeta_E"].as_f64().unwrap_or_else(|| panic!("no governing ζ_E for {id}"));
+        assert_eq!(zeta.to_bits(), number(cell(&header, row, "zeta_E")).to_bits(), "{id}");
+        assert!(report.contains(&format!("href=\"towers/{id}/report.html\"")), "no link to {id}'s page");
     }
 }

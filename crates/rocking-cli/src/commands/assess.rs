@@ -8,7 +8,7 @@ use crate::format::sig;
 use crate::output;
 use anyhow::Context;
 use rocking_assess::{Assessment, AssessmentInput, Check};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The verdict: capacity, sites, checks, governing check.
 pub const ASSESSMENT_JSON: &str = "assessment.json";
@@ -63,6 +63,23 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     pool.install(|| assess(args))
 }
 
+/// Writes the files of an assessment into `dir` (`shown` is the folder errors
+/// name): assessment.json, capacity.csv, report.html, and with a record set
+/// records.csv and spectra.csv.
+pub fn write_files(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Assessment) -> anyhow::Result<()> {
+    let write = |name: &str, text: String| std::fs::write(dir.join(name), text).with_context(|| format!("cannot write {}", shown.join(name).display()));
+    output::write_summary(&dir.join(ASSESSMENT_JSON), &shown.join(ASSESSMENT_JSON), &done.json(input))?;
+    write(CAPACITY_CSV, done.capacity_csv())?;
+    if let Some((records, spectra)) = done.set_csvs() {
+        write(RECORDS_CSV, records)?;
+        write(SPECTRA_CSV, spectra)?;
+    }
+    write(
+        REPORT_HTML,
+        super::assess_report::report_html(input, &done.capacity, &done.checks, done.dynamic_part())?,
+    )
+}
+
 fn assess(args: &Args) -> anyhow::Result<()> {
     let started = std::time::Instant::now();
     let text = std::fs::read_to_string(&args.assessment).with_context(|| format!("cannot read {}", args.assessment.display()))?;
@@ -81,14 +98,7 @@ fn assess(args: &Args) -> anyhow::Result<()> {
 
     let done = Assessment::run(&file)?;
     let (capacity, checks) = (&done.capacity, &done.checks);
-    let write = |name: &str, text: String| std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()));
-    output::write_summary(&staging.path(ASSESSMENT_JSON), &dir.join(ASSESSMENT_JSON), &done.json(&file))?;
-    write(CAPACITY_CSV, done.capacity_csv())?;
-    if let Some((records, spectra)) = done.set_csvs() {
-        write(RECORDS_CSV, records)?;
-        write(SPECTRA_CSV, spectra)?;
-    }
-    write(REPORT_HTML, super::assess_report::report_html(&file, capacity, checks, done.dynamic_part())?)?;
+    write_files(staging.folder(), &dir, &file, &done)?;
     staging.commit()?;
 
     let mut lines = vec![format!(

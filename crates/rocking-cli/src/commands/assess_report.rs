@@ -13,11 +13,12 @@ use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
 use std::fmt::Write;
 
 /// Escapes text for HTML.
-fn esc(text: &str) -> String {
+pub(crate) fn esc(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
-const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;max-width:190mm;margin:1em auto;color:#222;font-size:10.5pt;line-height:1.4}\
+/// The pages' style sheet (A4 when printed).
+pub(crate) const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;max-width:190mm;margin:1em auto;color:#222;font-size:10.5pt;line-height:1.4}\
 h1{font-size:17pt}h2{font-size:13pt;border-bottom:1px solid #999;margin-top:1.4em}h3{font-size:11pt}\
 table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left;vertical-align:top}\
 th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
@@ -25,7 +26,7 @@ figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width
 code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
 
 /// The SVG of a figure with a viewBox, so that it scales to the page's width.
-fn scalable(svg: String, size: (u32, u32)) -> String {
+pub(crate) fn scalable(svg: String, size: (u32, u32)) -> String {
     if svg.contains("viewBox") {
         svg
     } else {

@@ -13,9 +13,11 @@
 //! Writes `inventory.csv` and `inventory.geojson` (`town.rs`), with `--plot`
 //! the map and the ranking, and `report.html`.
 
+use super::assess::REPORT_HTML;
 use super::rows::{write_rows, RowsFile, Written};
 use super::sweep::Interrupted;
 use super::town::{ranking, Ranked, Town, IDENTITY, INVENTORY_CSV, INVENTORY_GEOJSON};
+use super::town_report::{town_html, TownPage};
 use crate::format::sig;
 use crate::output;
 use crate::shard::{fingerprint, Manifest, SHARD_JSON};
@@ -62,6 +64,10 @@ pub struct Args {
     /// Also draw the map of the towers coloured by ζ_E and their ranking (town_map, town_ranking: SVG and PNG).
     #[arg(long)]
     pub plot: bool,
+    /// Also write each tower's assessment as `rocking assess` writes it
+    /// (assessment.json, capacity.csv, report.html…) in towers/<id>/, linked from report.html.
+    #[arg(long, conflicts_with = "shard")]
+    pub details: bool,
     /// Worker threads [default: one per core].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub threads: Option<u32>,
@@ -225,6 +231,8 @@ struct Inventory<'a> {
     /// The hazard grid and the records, read once for all the towers.
     grids: GridCache,
     records: RecordCache,
+    /// Where each tower's own assessment is written (`--details`): the staging folder and the final one.
+    details: Option<(PathBuf, PathBuf)>,
 }
 
 impl Inventory<'_> {
@@ -282,10 +290,19 @@ impl Inventory<'_> {
 
     /// The row of tower `index`.
     fn row(&self, index: usize) -> Row {
-        let (_, done) = match self.assess(index) {
+        let (input, done) = match self.assess(index) {
             Ok(assessed) => assessed,
             Err(e) => return self.failed_row(index, &e),
         };
+        if let Some((staging, shown)) = &self.details {
+            let folder = tower_folder(self.lines[index].get("id").unwrap_or(""));
+            let written = std::fs::create_dir_all(staging.join(&folder))
+                .with_context(|| format!("cannot create {}", shown.join(&folder).display()))
+                .and_then(|()| super::assess::write_files(&staging.join(&folder), &shown.join(&folder), &input, &done));
+            if let Err(e) = written {
+                return self.failed_row(index, &self.lines[index].failure(self.file, format!("{e:#}")));
+            }
+        }
         let mut cells = self.identity(index);
         let completed = done.completed();
         for (state, method) in &self.checks {
@@ -332,6 +349,24 @@ impl Cases for Inventory<'_> {
         Row { index, cells }
     }
 }
+
+/// The folder of a tower's own assessment under `towers/`: its id, every
+/// byte but ASCII letters, digits, `-` and `_` written `.XX` (hex), so that
+/// distinct ids get distinct folders and none is `..` or holds a `/`.
+pub fn tower_folder(id: &str) -> String {
+    let mut name = String::new();
+    for b in id.bytes() {
+        if b.is_ascii_alphanumeric() || b == b'-' || b == b'_' {
+            name.push(char::from(b));
+        } else {
+            name.push_str(&format!(".{b:02X}"));
+        }
+    }
+    name
+}
+
+/// The folder of the towers' own assessments.
+pub const TOWERS_DIR: &str = "towers";
 
 /// The fingerprint of an inventory: of both files' bytes, so that shards merge only when they came from the same two.
 fn inventory_fingerprint(towers: &[u8], assess: &[u8]) -> String {
@@ -412,12 +447,18 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         checks,
         grids: GridCache::default(),
         records,
+        details: None,
     };
 
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.towers));
     let mut names = vec![INVENTORY_CSV, INVENTORY_GEOJSON];
     if args.shard.is_some() {
         names.push(SHARD_JSON);
+    } else {
+        names.push(REPORT_HTML);
+    }
+    if args.details {
+        names.push(TOWERS_DIR);
     }
     if args.plot {
         names.extend(crate::plot::TOWN_FIGURES);
@@ -427,6 +468,12 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     inputs.extend(base.inputs());
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
     let staging = output::Staging::new(&dir, &inputs)?;
+    let mut inventory = inventory;
+    if args.details {
+        let folder = staging.path(TOWERS_DIR);
+        std::fs::create_dir_all(&folder).with_context(|| format!("cannot create {}", dir.join(TOWERS_DIR).display()))?;
+        inventory.details = Some((folder, dir.join(TOWERS_DIR)));
+    }
 
     let header = inventory.header();
     let mut town = Town::new(&header, &staging.path(INVENTORY_GEOJSON), &dir.join(INVENTORY_GEOJSON))?;
@@ -487,8 +534,20 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         std::fs::write(staging.path(SHARD_JSON), manifest.to_json()).with_context(|| format!("cannot write {}", dir.join(SHARD_JSON).display()))?;
         part = format!(" (shard {shard}: rows {}..{} of {total})", cases.start + 1, cases.end);
     }
+    let title = town_title(&args.towers, towers.len());
     if args.plot {
-        crate::plot::town_figures(staging.folder(), &town_title(&args.towers, towers.len()), &towers, &check_names).context("drawing the figures")?;
+        crate::plot::town_figures(staging.folder(), &title, &towers, &check_names).context("drawing the figures")?;
+    }
+    if args.shard.is_none() {
+        let link = |index: usize| format!("{TOWERS_DIR}/{}/{}", tower_folder(&towers[index].id), super::assess::REPORT_HTML);
+        let page = TownPage {
+            title: &title,
+            towers_file: &args.towers.display().to_string(),
+            assess_file: &args.assess.display().to_string(),
+            checks: &check_names,
+            details: if args.details { Some(&link) } else { None },
+        };
+        std::fs::write(staging.path(REPORT_HTML), town_html(&page, &towers)?).with_context(|| format!("cannot write {}", dir.join(REPORT_HTML).display()))?;
     }
     staging.commit()?;
 
@@ -544,4 +603,21 @@ pub fn ranking_lines(towers: &[Ranked]) -> Vec<String> {
         lines.push(format!("  … {} more in {INVENTORY_CSV}", ranked.len() - LISTED));
     }
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tower_folder;
+
+    #[test]
+    fn tower_folders_are_distinct_and_stay_under_towers() {
+        assert_eq!(tower_folder("CE01"), "CE01");
+        // Distinct ids that a plain replacement would merge stay distinct.
+        assert_eq!(tower_folder("a/b"), "a.2Fb");
+        assert_eq!(tower_folder("a_b"), "a_b");
+        assert_eq!(tower_folder("a.2Fb"), "a.2E2Fb");
+        // Never a parent folder, never a path.
+        assert_eq!(tower_folder(".."), ".2E.2E");
+        assert_eq!(tower_folder("é"), ".C3.A9");
+    }
 }

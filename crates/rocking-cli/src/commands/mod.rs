@@ -12,6 +12,7 @@ pub mod run;
 pub mod spectrum;
 pub mod sweep;
 pub mod town;
+pub mod town_report;
 
 use anyhow::Context;
 use rocking_scenario::Scenario;

@@ -30,7 +30,9 @@ pub fn degrees(text: &str, limit: f64) -> Option<f64> {
 /// One tower as the ranking, the map and the report show it.
 #[derive(Debug, Clone)]
 pub struct Ranked {
-    /// Its `id` and `name`.
+    /// Its place in the file's rows (0 the first).
+    pub index: usize,
+    /// Its `id`.
     pub id: String,
     /// Its `name`.
     pub name: String,
@@ -40,6 +42,8 @@ pub struct Ranked {
     pub zeta: Option<f64>,
     /// The governing check (`SLV linear_kinematic`), or empty.
     pub governing: String,
+    /// Every check's ζ_E, in the order of [`Town::checks`] (`None`: not completed).
+    pub check_zetas: Vec<Option<f64>>,
     /// The row's error, or empty.
     pub error: String,
 }
@@ -112,11 +116,13 @@ impl Town {
         serde_json::to_writer(&mut self.geojson, &feature).with_context(context)?;
         self.first = false;
         self.towers.push(Ranked {
+            index: self.towers.len(),
             id: id.to_string(),
             name: field("name").to_string(),
             point,
             zeta: number(field("zeta_E")),
             governing: field("governing").to_string(),
+            check_zetas: self.checks.iter().map(|(i, _)| fields.get(*i).and_then(|t| number(t))).collect(),
             error: field("error").to_string(),
         });
         Ok(())

@@ -104,6 +104,14 @@ pub fn town_figures(dir: &Path, title: &str, towers: &[crate::commands::town::Ra
     Ok(files)
 }
 
+/// The town's map and ranking as SVG strings with their sizes, for its page.
+pub fn town_svgs(title: &str, towers: &[crate::commands::town::Ranked], checks: &[String]) -> anyhow::Result<[(String, (u32, u32)); 2]> {
+    let map = style::render_svg(town::MAP_SIZE, &town::MapFigure { title, towers })?;
+    let size = town::RankingFigure::size(towers);
+    let ranking = style::render_svg(size, &town::RankingFigure { title, towers, checks })?;
+    Ok([(map, town::MAP_SIZE), (ranking, size)])
+}
+
 /// One record's line of the IDA figure: `(level, value, overturned)` per case in level order.
 #[derive(Debug, Clone)]
 pub struct IdaCurve {
