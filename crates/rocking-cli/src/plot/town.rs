@@ -101,9 +101,7 @@ impl Figure for MapFigure<'_> {
         if self.towers.iter().any(|t| t.zeta.is_none() && t.point.is_some()) {
             entries.push(Entry::new(Swatch::Square(NOT_ASSESSED), "not assessed (see its error)"));
         }
-        let strip = legend::height(&rest, MAP_LEFT, &entries)?;
-        let (top_strip, body) = rest.split_vertically(strip);
-        legend::draw(&top_strip, MAP_LEFT, &entries)?;
+        let body = legend::above(&rest, MAP_LEFT, &entries)?;
         let (w, h) = body.dim_in_pixel();
         let (map, bar) = body.split_horizontally(w.saturating_sub(BAR_AREA));
         let top = colour_top(self.towers);
@@ -181,9 +179,7 @@ impl Figure for RankingFigure<'_> {
             .map(|c| Entry::new(Swatch::Square(check_colour(self.checks, c)), format!("governed by {}", c.replacen('_', " ", 1))))
             .collect();
         entries.push(Entry::new(Swatch::Dashed(INK), "ζ_E = 1: below it the check fails"));
-        let strip = legend::height(&rest, RANKING_LEFT, &entries)?;
-        let (top_strip, body) = rest.split_vertically(strip);
-        legend::draw(&top_strip, RANKING_LEFT, &entries)?;
+        let body = legend::above(&rest, RANKING_LEFT, &entries)?;
 
         let n = shown.len().max(1) as f64;
         let x_top = shown.iter().filter_map(|t| t.zeta).fold(1.0, f64::max) * 1.15;
