@@ -316,7 +316,14 @@ impl<const S: usize> Runner<'_, S> {
                     0.0,
                 )
             }
-            Watch::Slip | Watch::Stop => {
+            Watch::Slip => {
+                // The demand reached μs N: the building slips against it, even
+                // where the root lies exactly on the equality.
+                let snap = self.stack.snapshot(regime, &state, self.ground.acceleration(t), self.stack.gravity);
+                let building = BuildingRegime::Slip(SlipDirection::of_sign(-self.stack.friction_force(&snap)));
+                (regime.with_building(building), state, StackEventKind::Slip, 0.0)
+            }
+            Watch::Stop => {
                 state.slip_vel = 0.0;
                 let building = self.building_at_rest(regime, t, &state);
                 let kind = if building == BuildingRegime::Stick {
