@@ -80,7 +80,7 @@ pub fn activation_acceleration(alpha0: f64, e_star: f64, confidence_factor: f64,
 /// The displacement of the control point at which the capacity vanishes,
 /// `d0 = R sin α` (m): the centre of mass over the corner, θ = α.
 pub fn collapse_displacement(radius: f64, alpha: f64) -> f64 {
-    radius * alpha.sin()
+    radius * libm::sin(alpha)
 }
 
 /// The ultimate displacement of the life-safety limit state `d_SLV = 0.4 d0` (m)
@@ -107,13 +107,16 @@ pub fn linear_capacity_curve(a0_star: f64, d0: f64, d: f64) -> f64 {
 /// `a*(θ) = g tan(α − θ) / FC` (m/s²) (Circolare 2019 §C8.7.1.2.1.5; the
 /// equilibrium of the rotated block, e* = 1).
 pub fn exact_capacity_curve(alpha: f64, radius: f64, confidence_factor: f64, g: f64, theta: f64) -> (f64, f64) {
-    (radius * (alpha.sin() - (alpha - theta).sin()), g * (alpha - theta).tan() / confidence_factor)
+    (
+        radius * (libm::sin(alpha) - libm::sin(alpha - theta)),
+        g * libm::tan(alpha - theta) / confidence_factor,
+    )
 }
 
 /// The exact curve's acceleration at the displacement `d` (m) in [0, d0]: the
 /// rotation of [`exact_capacity_curve`] solved for, `θ = α − asin(sin α − d/R)`.
 pub fn exact_acceleration_at(alpha: f64, radius: f64, confidence_factor: f64, g: f64, d: f64) -> f64 {
-    let theta = alpha - (alpha.sin() - d / radius).clamp(-1.0, 1.0).asin();
+    let theta = alpha - libm::asin((libm::sin(alpha) - d / radius).clamp(-1.0, 1.0));
     exact_capacity_curve(alpha, radius, confidence_factor, g, theta).1
 }
 
@@ -187,7 +190,7 @@ impl Capacity {
                 format!("must be a finite number >= 1 (FC: 1.35, 1.2 or 1 for knowledge levels LC1–LC3), got {confidence_factor}"),
             ));
         }
-        let (b, h) = (radius * alpha.sin(), radius * alpha.cos());
+        let (b, h) = (radius * libm::sin(alpha), radius * libm::cos(alpha));
         let alpha0 = activation_multiplier(b, h);
         let e_star = 1.0;
         let a0_star = activation_acceleration(alpha0, e_star, confidence_factor, g);

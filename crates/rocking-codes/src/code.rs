@@ -140,5 +140,5 @@ impl FromStr for LimitState {
 /// Allegato A; VN nominal life, §2.4.1; CU the class of use's coefficient, §2.4.3).
 pub fn return_period(nominal_life: f64, use_coefficient: f64, probability: f64) -> f64 {
     let reference_period = nominal_life * use_coefficient;
-    -reference_period / (1.0 - probability).ln()
+    -reference_period / libm::log(1.0 - probability)
 }

@@ -57,8 +57,8 @@ pub fn set_rule(count: usize) -> Result<SetRule, Error> {
 /// over the given periods: `ln f = mean(ln target − ln psa)` (a log least-squares
 /// fit, closed form). Both slices hold the spectra at the same periods, all > 0.
 pub fn fitted_scale(psa: &[f64], target: &[f64]) -> f64 {
-    let sum: f64 = psa.iter().zip(target).map(|(p, s)| s.ln() - p.ln()).sum();
-    (sum / psa.len() as f64).exp()
+    let sum: f64 = psa.iter().zip(target).map(|(p, s)| libm::log(*s) - libm::log(*p)).sum();
+    libm::exp(sum / psa.len() as f64)
 }
 
 /// The compatibility of a mean spectrum with a target over the same periods (NTC

@@ -72,8 +72,8 @@ pub fn great_circle_distance_km(lon1: f64, lat1: f64, lon2: f64, lat2: f64) -> f
     let (phi1, phi2) = (lat1.to_radians(), lat2.to_radians());
     let dphi = phi2 - phi1;
     let dlambda = (lon2 - lon1).to_radians();
-    let h = (dphi / 2.0).sin().powi(2) + phi1.cos() * phi2.cos() * (dlambda / 2.0).sin().powi(2);
-    2.0 * EARTH_RADIUS_KM * h.sqrt().min(1.0).asin()
+    let h = libm::sin(dphi / 2.0).powi(2) + libm::cos(phi1) * libm::cos(phi2) * libm::sin(dlambda / 2.0).powi(2);
+    2.0 * EARTH_RADIUS_KM * libm::asin(h.sqrt().min(1.0))
 }
 
 /// A parameter at a site from its values `p_i` at the four nodes of the cell and
@@ -92,7 +92,7 @@ pub fn inverse_distance_weighting(values: [f64; 4], distances: [f64; 4]) -> f64 
 /// tabulated `tr1 < tr2` that bracket it (NTC 2018 Allegato A, eq. 2):
 /// `log p = log p1 + log(p2/p1) · log(tr/tr1) / log(tr2/tr1)`.
 pub fn log_log_interpolation(tr: f64, tr1: f64, tr2: f64, p1: f64, p2: f64) -> f64 {
-    (p1.ln() + (p2 / p1).ln() * (tr / tr1).ln() / (tr2 / tr1).ln()).exp()
+    libm::exp(libm::log(p1) + libm::log(p2 / p1) * libm::log(tr / tr1) / libm::log(tr2 / tr1))
 }
 
 impl SiteHazard {

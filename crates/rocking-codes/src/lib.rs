@@ -10,6 +10,9 @@
 //! code spectra `Se` in g, displacement spectra in m; a record's response
 //! spectrum is in the record's own units (m/s²).
 //!
+//! The transcendental functions are libm's, as in the engine: the same bits on
+//! every target, so that the page (WebAssembly) gives the command's numbers.
+//!
 //! ```
 //! use rocking_codes::{fit_record_set, response_spectrum, CodeSpectrum, NtcSite, NtcSpectrum, PeriodGrid, Soil, Topography};
 //! use rocking::Record;

@@ -115,10 +115,10 @@ pub fn ntc_ss(soil: Soil, ag: f64, f0: f64) -> f64 {
 pub fn ntc_cc(soil: Soil, tc_star: f64) -> f64 {
     match soil {
         Soil::A => 1.0,
-        Soil::B => 1.10 * tc_star.powf(-0.20),
-        Soil::C => 1.05 * tc_star.powf(-0.33),
-        Soil::D => 1.25 * tc_star.powf(-0.50),
-        Soil::E => 1.15 * tc_star.powf(-0.40),
+        Soil::B => 1.10 * libm::pow(tc_star, -0.20),
+        Soil::C => 1.05 * libm::pow(tc_star, -0.33),
+        Soil::D => 1.25 * libm::pow(tc_star, -0.50),
+        Soil::E => 1.15 * libm::pow(tc_star, -0.40),
     }
 }
 

@@ -45,8 +45,10 @@ impl PeriodGrid {
         if count < 2 {
             return Err(invalid("periods", format!("need at least 2 periods, got {count}")));
         }
-        let ratio = (to / from).ln() / (count - 1) as f64;
-        Ok((0..count).map(|k| if k + 1 == count { to } else { from * (ratio * k as f64).exp() }).collect())
+        let ratio = libm::log(to / from) / (count - 1) as f64;
+        Ok((0..count)
+            .map(|k| if k + 1 == count { to } else { from * libm::exp(ratio * k as f64) })
+            .collect())
     }
 }
 
