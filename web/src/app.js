@@ -6,6 +6,8 @@ import { rocking } from "./rocking.js";
 import { drawHeatmap } from "./heatmap.js";
 import { Animation } from "./animation.js";
 import { Charts } from "./charts.js";
+import { SpectrumView } from "./spectrum.js";
+import { AssessView, setupTabs } from "./assess.js";
 import examples, { records } from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
@@ -101,6 +103,8 @@ let recordNames = {};
 let missingRecords = {};
 let sweepCsv = "";
 const charts = new Charts($("theta-chart"), $("charts"));
+const spectrum = new SpectrumView($("record-view"));
+let assessView = null; // the assess tab, once the engine has loaded
 const animation = new Animation($("tower-canvas"), {
   slider: $("time"),
   label: $("time-label"),
@@ -348,6 +352,7 @@ let requested = 0;
 async function computeNow() {
   saveToUrl();
   markSweepStale();
+  assessView?.scenarioChanged();
   const wanted = Object.keys(missingRecords);
   showRecordPrompt();
   if (wanted.length) {
@@ -379,6 +384,7 @@ async function computeNow() {
     const falls = ["overturned", "beyond_stability_limit"].includes(result.summary.end_state) || result.summary.will_overturn === true;
     $("verdict").classList.toggle("danger", falls);
     fillTable($("check"), out.derived);
+    spectrum.update(scenario, recordNames.ground);
     $("results").classList.remove("stale");
     $("status").textContent = `Computed in ${(result.summary.wall_time_s * 1000).toFixed(1)} ms.`;
     if (id === requested) setState("done");
@@ -826,6 +832,21 @@ async function main() {
   numericKeys = (await rocking.sweepableKeys()).filter((k) => !skip.includes(k));
   fieldInfo = new Map((await rocking.summaryFields()).map((f) => [f.name, f]));
   setAxes({ "ground.frequency": { from: 3, to: 7, steps: 21 }, "ground.amplitude": { from: 0.5, to: 2, steps: 4 } });
+  // The assess tab: an assessment file's tower, building and name go into the form (the ground stays).
+  assessView = new AssessView($("assess"), {
+    scenario: () => scenario,
+    apply(sections) {
+      const { simulation, ...rest } = sections;
+      for (const k of ["name", "tower", "building", "initial"]) delete scenario[k];
+      Object.assign(scenario, rest);
+      if (simulation) scenario.simulation = { ...scenario.simulation, ...simulation };
+      removed = {};
+      selectExample(null);
+      buildForm();
+      recompute();
+    },
+  });
+  setupTabs(assessView);
   $("status").textContent = "Engine loaded.";
   if (loadFromUrl()) {
     buildForm();

@@ -184,6 +184,16 @@ function runInWorker(scenario) {
   return runner.run(scenario);
 }
 
+/** The response spectrum of the scenario's record (see crates/rocking-web, recordSpectrum): { periods_s, psa_g, pga_g, … }. */
+function recordSpectrum(scenario, dampingPct = 5) {
+  return JSON.parse(call(engine.recordSpectrum, JSON.stringify(scenario), dampingPct));
+}
+
+/** The kinematic part of `rocking assess` for an assessment file's table: its assessment.json, plus the capacity curve. */
+function assess(table) {
+  return JSON.parse(call(engine.assess, JSON.stringify(table)));
+}
+
 export const rocking = {
   ready,
   run,
@@ -191,6 +201,8 @@ export const rocking = {
   /** history.csv of the last runInWorker() (a Promise of a Blob). */
   historyCsv: () => runner.historyCsv(),
   check,
+  recordSpectrum,
+  assess,
   sweep,
   fromToml,
   toToml,

@@ -22,7 +22,12 @@
 //! # Ok::<(), String>(())
 //! ```
 
+mod assess;
 mod output;
+mod spectrum;
+
+pub use assess::{assess_json, grid_site_json, ASSESS_ORIGIN};
+pub use spectrum::record_spectrum_json;
 
 use rocking_scenario::{Scenario, Sweep};
 use serde_json::{json, Value};

@@ -140,3 +140,100 @@ fn the_summary_fields_are_the_keys_of_a_summary_in_order() {
         .unwrap_or_default();
     assert!(end["meaning"].as_str().is_some_and(|m| m.contains("beyond_stability_limit")), "{end}");
 }
+
+/// El Centro's text as a scenario's record, and the same file as `rocking spectrum` reads it.
+const ELCENTRO: &str = include_str!("../../../data/records/elcentro_1940_ns.AT2");
+
+#[test]
+fn a_records_spectrum_is_the_one_rocking_spectrum_computes() {
+    let scenario = json!({"tower": {"width": 3, "height": 18, "density": 1800}, "ground": {"type": "record", "text": ELCENTRO}});
+    let out = parsed(&record_spectrum_json(&scenario.to_string(), 5.0).unwrap_or_else(|e| panic!("{e}")));
+    // The command's path: the file read by read_record (format guessed, in g), its spectrum in g.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/records/elcentro_1940_ns.AT2");
+    let record = rocking_scenario::read_record(&path, 9.81).unwrap_or_else(|e| panic!("{e}"));
+    let periods = rocking_codes::DEFAULT_PERIODS.periods().unwrap_or_else(|e| panic!("{e}"));
+    let psa = rocking_scenario::record_spectra_in_g(&[record], &periods, 5.0, 9.81).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(out["periods_s"], json!(periods));
+    assert_eq!(out["psa_g"], json!(psa[0]));
+    // The AT2's header: NPTS = 1559, DT = .0200; its largest |a| is 0.31882 g, as the
+    // file prints it (× g then / g: within an ulp or two).
+    assert_eq!(out["t_s"].as_array().map(Vec::len), Some(1559));
+    let pga = out["pga_g"].as_f64().unwrap_or_default();
+    assert!((pga - 0.31882).abs() < 1e-15, "{pga}");
+}
+
+#[test]
+fn a_spectrum_needs_a_record_and_a_damping_in_range() {
+    let harmonic = r#"{"tower": {"width": 1, "height": 4, "density": 2400}, "ground": {"type": "harmonic", "amplitude": 0.5, "frequency": 2}}"#;
+    let e = record_spectrum_json(harmonic, 5.0).err().unwrap_or_default();
+    assert!(e.starts_with("scenario.toml: ground.type: a response spectrum is a record's"), "{e}");
+    let record = json!({"tower": {"width": 1, "height": 4, "density": 2400}, "ground": {"type": "record", "text": ELCENTRO}}).to_string();
+    let e = record_spectrum_json(&record, 100.0).err().unwrap_or_default();
+    assert_eq!(e, "damping: must be a percentage of critical in [0, 100), got 100");
+}
+
+/// The tower of the assessment crate's example: 4 m × 12 m, 150 t, on subsoil B.
+fn assessment(q: &str) -> String {
+    format!(
+        r#"{{"tower": {{"width": 4, "height": 12, "mass": 1.5e5}},
+        "site": {{"soil": "B", "SLD": {{"ag": 0.062, "F0": 2.52, "Tc_star": 0.30}}, "SLV": {{"ag": 0.155, "F0": 2.47, "Tc_star": 0.36}},
+                 "SLC": {{"ag": 0.196, "F0": 2.50, "Tc_star": 0.37}}}},
+        "assessment": {{"confidence_factor": 1.35, "q": {q}}}}}"#
+    )
+}
+
+#[test]
+fn the_assessment_is_the_capacity_and_the_kinematic_checks() {
+    let out = parsed(&assess_json(&assessment("2")).unwrap_or_else(|e| panic!("{e}")));
+    // α0 = b/h = 1/3; one rigid block: e* = 1, a0* = α0 g / (e* FC); d0 = R sin α = b = 2 m
+    // (the centre of mass carried over the corner).
+    let c = &out["capacity"];
+    let close = |v: &Value, x: f64| (v.as_f64().unwrap_or(f64::NAN) - x).abs() <= 1e-12 * x.abs();
+    assert!(close(&c["alpha0"], 1.0 / 3.0), "{c}");
+    assert!(close(&c["a0_star_m_s2"], 9.81 / 3.0 / 1.35), "{c}");
+    assert!(close(&c["d0_m"], 2.0), "{c}");
+    let methods: Vec<&str> = out["checks"].as_array().into_iter().flatten().filter_map(|c| c["method"].as_str()).collect();
+    assert_eq!(methods, ["activation", "linear_kinematic", "nonlinear_kinematic", "nonlinear_kinematic"]);
+    // The SLD activation demand a_g S(a_g) (eq. C8.7.1.8) in m/s²: S = SS ST with SS = 1.2
+    // (clamped: 1.40 − 0.40·2.52·0.062 > 1.2) and ST = 1 (T1); 1e-12 covers the rounding of three products.
+    let demand = out["checks"][0]["demand"].as_f64().unwrap_or_default();
+    assert!((demand - 0.062 * 1.2 * 9.81).abs() < 1e-12, "{demand}");
+    // The governing check is the least ζ_E.
+    let least = out["checks"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|c| c["zeta_E"].as_f64())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(out["governing"]["zeta_E"].as_f64(), Some(least));
+    assert_eq!(out["curve"].as_array().map(Vec::len), Some(rocking_assess::CAPACITY_POINTS));
+}
+
+#[test]
+fn assessment_errors_name_the_key() {
+    let e = assess_json(&assessment("0")).err().unwrap_or_default();
+    assert!(e.starts_with("assess.toml: assessment.q: "), "{e}");
+    let e = assess_json(r#"{"tower": {"width": 4, "height": 12, "mass": 1.5e5}, "site": {"soil": "B", "SLV": {"ag": 0.155, "F0": 2.47, "Tc_star": 0.36}}}"#)
+        .err()
+        .unwrap_or_default();
+    assert!(e.starts_with("assess.toml: site.SLD: missing [site.SLD]"), "{e}");
+    let e = assess_json(&assessment("2").replace("0.155", "-0.155")).err().unwrap_or_default();
+    assert!(e.starts_with("assess.toml: site.SLV.ag: "), "{e}");
+}
+
+const GRID: &str = include_str!("../../../data/hazard/synthetic_grid.txt");
+
+#[test]
+fn a_grid_site_on_a_node_is_the_nodes_values_interpolated_in_the_return_period() {
+    let out = parsed(&grid_site_json(GRID, 14.30, 40.95, 50.0, 1.0).unwrap_or_else(|e| panic!("{e}")));
+    // Node 40001; SLV: P_VR = 10%, TR = −50 / ln 0.9 = 474.56 years, between the
+    // grid's 201 and 475: log-log between ag 1.115 and 1.600 (g/10) (NTC Allegato A).
+    let tr = -50.0 / 0.9f64.ln();
+    let ag = (0.1115f64.ln() + (0.1600f64 / 0.1115).ln() * (tr / 201.0).ln() / (475.0f64 / 201.0).ln()).exp();
+    let got = out["SLV"]["ag"].as_f64().unwrap_or_default();
+    assert!((got - ag).abs() < 1e-12, "{got} {ag}");
+    let e = grid_site_json(GRID, 9.0, 45.0, 50.0, 1.0).err().unwrap_or_default();
+    assert!(e.starts_with("site.lon: "), "{e}");
+    let e = grid_site_json(GRID, 14.30, 40.95, -1.0, 1.0).err().unwrap_or_default();
+    assert!(e.starts_with("site.VN: "), "{e}");
+}
