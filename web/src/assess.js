@@ -154,7 +154,7 @@ export class AssessView {
         <p id="assess-governing" role="status"></p>
         <div class="scroll" role="region" aria-label="the checks" tabindex="0">
           <table id="assess-checks"><caption>Checks (the kinematic checks of rocking assess)</caption>
-            <thead><tr><th>limit state</th><th>check</th><th>formula</th><th>demand</th><th>capacity</th><th>ag (g)</th><th>ag capacity (g)</th><th>ζ_E</th><th>verdict</th></tr></thead>
+            <thead><tr><th>limit state</th><th>check</th><th>ag (g)</th><th>ag capacity (g)</th><th>ζ_E</th><th>verdict</th><th>demand</th><th>capacity</th><th>formula</th></tr></thead>
             <tbody></tbody></table>
         </div>
         <div class="tables">
@@ -271,7 +271,7 @@ export class AssessView {
     this.showCode();
     const records = Array.isArray(assessment.records) ? assessment.records.length : 0;
     $("assess-note").textContent = records && tower
-      ? `${example.path} names a record set (${records} patterns) for the non-linear dynamic checks: run them with rocking assess ${example.path}.`
+      ? `${example.path} names a record set (assessment.records) for the non-linear dynamic checks, which the command runs: rocking assess ${example.path}.`
       : "";
     if (tower && sections.tower) this.page.apply(sections);
     if (site.grid) {
@@ -421,13 +421,14 @@ export class AssessView {
       const bound = c.ag_capacity_is_lower_bound;
       return (
         `<tr data-limit-state="${c.limit_state}" data-method="${c.method}"${isGoverning ? ' class="governing"' : ""}>` +
-        `<td>${c.limit_state}</td><td>${m.name}${isGoverning ? " (governing)" : ""}</td><td class="formula">${m.formula(this.q)}</td>` +
-        `<td class="num" data-value="${c.demand}">${sig(c.demand, 4)} ${unit(c.unit)}</td>` +
-        `<td class="num" data-value="${c.capacity}">${sig(c.capacity, 4)} ${unit(c.unit)}</td>` +
+        `<td>${c.limit_state}</td><td>${m.name}${isGoverning ? " (governing)" : ""}</td>` +
         cell(c.ag_g, 4) +
         cell(c.ag_capacity_g, 4, bound) +
         cell(c.zeta_E, 3, bound) +
-        `<td class="${c.holds ? "holds" : "fails"}">${c.holds ? "holds" : "fails"}</td></tr>`
+        `<td class="${c.holds ? "holds" : "fails"}">${c.holds ? "holds" : "fails"}</td>` +
+        `<td class="num" data-value="${c.demand}">${sig(c.demand, 4)} ${unit(c.unit)}</td>` +
+        `<td class="num" data-value="${c.capacity}">${sig(c.capacity, 4)} ${unit(c.unit)}</td>` +
+        `<td class="formula">${m.formula(this.q)}</td></tr>`
       );
     });
     this.panel.querySelector("#assess-checks tbody").innerHTML = body.join("");
