@@ -438,7 +438,7 @@ def figure(rows):
         ax.set_xlabel("pulse frequency ωp / p")
         ax.set_ylabel("least overturning amplitude ap / (g α)")
         ax.set_title(f"One-{shape} pulse: overturning spectrum (p = {P:g} rad/s)")
-        ax.set_ylim(0, 16 if shape == "sine" else 12)
+        ax.set_ylim(0, 18 if shape == "sine" else 12)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper left")
     ax = axes[2]

@@ -17,7 +17,7 @@ A. the belfry seated (stuck) on the shaft: the two are one rigid body,
    the energy ratio r^2, and the impulse the shaft gives the belfry,
    m2 (dG2'), with its moment about the belfry's base centre,
        |M_imp| / (V_imp b2) = (m2 h2 (H1 + h2) + J2) (1 - r) / (m2 b1 b2 (1 + r)),
-   independent of w-: the seat impulse ratio that model.md's
+   independent of w-: the seat impulse ratio that the model's
    max_seat_impulse_ratio reports (above 1 the seated belfry would tip).
 B. the belfry rocking on its corner s2 at theta_2 while the shaft lands:
    six impulse-momentum equations (each body's linear momentum, 2 + 2, and

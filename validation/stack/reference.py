@@ -141,7 +141,6 @@ class Stack:
         base, s = regime
         n = self.n
         G, C, b, J, Jphi = self.kinematics(y, s)
-        qd = y[n + 1 :]
         ge = np.array([self.ground(t), self.g])
         M = self.mass_matrix(J, Jphi)
         h = np.zeros(n + 1)
@@ -166,7 +165,6 @@ class Stack:
                 V += f[1]
                 Mom += r[0] * f[1] - r[1] * f[0] - self.I[k] * (Jphi[k] @ qdd)
             forces.append((self.seat_normal(y, j, T, V), Mom))
-        del qd
         return qdd, F_req, forces
 
     def seat_normal(self, y, j, T, V):
