@@ -225,3 +225,57 @@ fn one_block_on_a_fixed_base_is_housner() {
         assert!((r - t.restitution()).abs() < 1e-15);
     }
 }
+
+/// Painlevé's paradox of the dynamic normal force: on a light building under
+/// high friction (1 kg under the 1.5e5 kg tower, μ = 5) the system of (T)–(B)
+/// with `F = −μk σ N` has no solution where its determinant is not positive.
+/// The stack's Kane system is singular at exactly the same states (the
+/// determinant of a permuted matrix is the same), and agrees elsewhere.
+#[test]
+fn one_block_painleve_domain_is_the_engines() {
+    let t = tower();
+    let b = Building::new(1.0, 5.0, 5.0, NormalForce::Dynamic).unwrap();
+    let kernel = Kernel::new(&Model::new(Some(t), Some(b), G).unwrap());
+    let stack = Stack::new(&[Block::from_tower(&t)], Some(b), G).unwrap();
+    let (mut singular, mut regular) = (0, 0);
+    for i in -20..=20 {
+        let theta = 0.015 * f64::from(i);
+        if theta == 0.0 {
+            continue;
+        }
+        for theta_dot in [-1.0, -0.1, 0.0, 0.3] {
+            for dir in [SlipDirection::Positive, SlipDirection::Negative] {
+                let pivot = crate::regime::Pivot::of_sign(theta);
+                let building_regime = BuildingRegime::Slip(dir);
+                let engine = kernel.accelerations(
+                    Regime {
+                        tower: TowerRegime::Rocking(pivot),
+                        building: building_regime,
+                    },
+                    0.0,
+                    G,
+                    theta,
+                    theta_dot,
+                );
+                let snap = stack.snapshot(
+                    &one_block_regime(TowerRegime::Rocking(pivot), building_regime),
+                    &state(theta, theta_dot, 0.0),
+                    0.0,
+                    G,
+                );
+                assert_eq!(
+                    engine.theta.is_nan(),
+                    snap.theta_ddot[0].is_nan(),
+                    "θ = {theta}, θ̇ = {theta_dot}, {dir:?}: {engine:?} vs {}",
+                    snap.theta_ddot[0]
+                );
+                if engine.theta.is_nan() {
+                    singular += 1;
+                } else {
+                    regular += 1;
+                }
+            }
+        }
+    }
+    assert!(singular > 10 && regular > 10, "{singular} singular, {regular} regular states");
+}
