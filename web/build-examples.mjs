@@ -23,11 +23,13 @@ const grids = {};
     else if (name.endsWith(".toml")) {
       const toml = readFileSync(path, "utf8");
       if (/^\[site[\].]/m.test(toml) && !/^\[study[\].]/m.test(toml)) {
-        assessments.push({ path: relative(top, path), toml });
+        // `grid`: the path of its hazard grid from the root (a key of `grids`).
+        const entry = { path: relative(top, path), toml };
         for (const [, file] of toml.matchAll(/^\s*grid\s*=\s*"([^"]+)"/gm)) {
-          const grid = resolve(dirname(path), file);
-          grids[relative(top, grid)] = readFileSync(grid, "utf8");
+          entry.grid = relative(top, resolve(dirname(path), file));
+          grids[entry.grid] = readFileSync(resolve(dirname(path), file), "utf8");
         }
+        assessments.push(entry);
         continue;
       }
       if (/^\[(study|site)[\].]/m.test(toml)) continue;

@@ -23,7 +23,7 @@ const STATE_KEYS = { ntc2018: [["ag", "g"], ["F0", ""], ["Tc_star", "s"]], ec8: 
  */
 const METHODS = {
   activation: { name: "activation", formula: () => "a_g S(a_g) ≥ a0* activates (Circolare 2019 eq. C8.7.1.8)" },
-  linear_kinematic: { name: "linear kinematic", formula: (q) => `a_g S(a_g) / q ≥ a0*, q = ${q} (§C8.7.1.2.1.7)` },
+  linear_kinematic: { name: "linear kinematic", formula: (q) => `a_g > q · a_g,capacity(activation), q = ${q} (§C8.7.1.2.1.7)` },
   nonlinear_kinematic: { name: "non-linear kinematic", formula: () => "max over T ≤ T_LS of S_De(T; ξ) > d_LS, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)" },
   nonlinear_dynamic: { name: "non-linear dynamic", formula: () => "records run through the model: none beyond d0, mean (largest with fewer than 7) ≤ d_LS (§C8.7.1.2.1.9)" },
 };
@@ -64,16 +64,6 @@ function parseValue(text) {
   if (s === "") return undefined;
   const x = Number(s);
   return Number.isFinite(x) ? x : s;
-}
-
-/** `rel` taken from directory `dir` ("a/b" + "../c" → "a/c"). */
-function joinPath(dir, rel) {
-  const parts = dir ? dir.split("/") : [];
-  for (const p of rel.split("/")) {
-    if (p === "..") parts.pop();
-    else if (p !== "." && p !== "") parts.push(p);
-  }
-  return parts.join("/");
 }
 
 /** A text field (its name the dotted key) with its label and unit. */
@@ -164,7 +154,7 @@ export class AssessView {
           </div>
         </div>
         <div class="row downloads">Download: <button type="button" id="assess-download">assessment.json</button>
-          <button type="button" id="assess-download-csv">capacity.csv</button></div>
+          <button type="button" id="assess-download-csv">capacity.csv</button> <span id="assess-time"></span></div>
       </div>
       <form id="assess-form" autocomplete="off">
         <fieldset><legend>[site]</legend>
@@ -275,8 +265,8 @@ export class AssessView {
       : "";
     if (tower && sections.tower) this.page.apply(sections);
     if (site.grid) {
-      const dir = example.path.includes("/") ? example.path.slice(0, example.path.lastIndexOf("/")) : "";
-      const path = joinPath(dir, site.grid);
+      // The grid's path from the root, resolved when the examples were bundled.
+      const path = example.grid;
       if (grids[path] !== undefined) {
         this.setGrid(grids[path], path);
         $("assess-grid").value = path;
@@ -374,6 +364,7 @@ export class AssessView {
       this.q = table.assessment.q ?? 2;
       this.showError("");
       this.render();
+      $("assess-time").textContent = `Computed in ${result.ms.toFixed(1)} ms.`;
       this.panel.classList.remove("stale");
       this.panel.dataset.state = "done";
     } catch (e) {

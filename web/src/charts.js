@@ -65,7 +65,7 @@ export function yRange(u, min, max) {
 }
 
 /** A y axis labelled `label`, wide enough for its ticks' texts (so that the label never overlaps them). */
-function yAxis(label, extra = {}) {
+export function yAxis(label, extra = {}) {
   return {
     label,
     values: (u, splits) => splits.map(tickText),

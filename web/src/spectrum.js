@@ -5,7 +5,7 @@
 // Jennings, exact for the piecewise-linear record): the same numbers as the
 // command for the same record. spectrum.csv is the command's file.
 import uPlot from "../vendor/uPlot.esm.js";
-import { tickText, yRange } from "./charts.js";
+import { tickText, yAxis, yRange } from "./charts.js";
 
 /** A number as the command prints it in its lines: `sig` digits, trailing zeros dropped. */
 export function sig(x, digits) {
@@ -21,15 +21,8 @@ export function sig(x, digits) {
   return `${m}e${Number(exp)}`;
 }
 
-/** A y axis labelled `label`, wide enough for its ticks. */
-function axis(label, extra = {}) {
-  return {
-    label,
-    values: (u, splits) => splits.map(tickText),
-    size: (u, values) => 18 + 7 * Math.max(3, ...(values || []).map((v) => String(v).length)),
-    ...extra,
-  };
-}
+/** A log axis's tick texts: it leaves some of its splits unlabelled (null). */
+const logTicks = (u, splits) => splits.map((v) => (v == null ? "" : tickText(v)));
 
 export class SpectrumView {
   /**
@@ -141,7 +134,7 @@ export class SpectrumView {
           legend,
           scales: { x: { time: false }, y: { range: yRange } },
           series: [{}, { label: "a_g (g)", stroke: "rgba(60, 160, 60, 0.9)", width: 1 }],
-          axes: [{ label: "t (s)" }, axis("a_g (g)")],
+          axes: [{ label: "t (s)" }, yAxis("a_g (g)")],
         },
         [[], []],
         this.box.querySelector("#record-chart"),
@@ -155,8 +148,7 @@ export class SpectrumView {
           // The periods' own span (0.02–4 s), not the decades around it.
           scales: { x: { time: false, distr: 3, range: (u, min, max) => [min, max] }, y: { distr: 3 } },
           series: [{}, { label: "PSA (g)", stroke: "#1f4e99", width: 2 }],
-          // A log axis leaves some of its splits unlabelled (null).
-          axes: [{ label: "T (s)", values: (u, splits) => splits.map((v) => (v == null ? "" : tickText(v))) }, axis("PSA (g)", { values: (u, splits) => splits.map((v) => (v == null ? "" : tickText(v))) })],
+          axes: [{ label: "T (s)", values: logTicks }, yAxis("PSA (g)", { values: logTicks })],
         },
         [[], []],
         this.box.querySelector("#spectrum-chart"),

@@ -11,6 +11,7 @@ import subprocess
 
 import pytest
 from conftest import BIN, OUT, RECORD, ROOT
+from test_access import CONTROLS, unnamed_and_missed
 from playwright.sync_api import expect
 
 ELCENTRO = ROOT / "data" / "records" / "elcentro_1940_ns.AT2"
@@ -251,3 +252,39 @@ def test_the_tabs_by_keyboard_and_the_views_at_desktop_and_phone_width(page):
     page.screenshot(path=str(OUT / "assess-phone.png"), full_page=False)
     page.keyboard.press("ArrowLeft")
     expect(page.locator("#results")).to_be_visible()
+
+
+def test_every_control_of_the_assess_tab_and_the_spectrum_is_reached_by_tab(page):
+    """With a record loaded (the spectrum's damping field and its download)
+    and then on the assess tab (its fields, the grid's box opened, the tables'
+    scroll regions): Tab reaches every control, and each has a name."""
+    page.set_input_files("#record-file", str(ELCENTRO))
+    spectrum_result(page)
+    ids = page.evaluate(f"({CONTROLS})().map((el) => el.id)")
+    assert "spectrum-damping" in ids, ids
+    assert unnamed_and_missed(page) == ([], [])
+    page.click("#tab-assess")
+    expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
+    page.evaluate("document.getElementById('assess-grid-box').open = true")
+    ids = page.evaluate(f"({CONTROLS})().map((el) => el.id)")
+    assert {"assess-site.SLV.ag", "assess-grid-fill", "tab-assess", "assess-download"} <= set(ids), ids
+    assert unnamed_and_missed(page) == ([], [])
+    # The grid's file chooser opens from the keyboard (its button's click opens the hidden input).
+    page.evaluate("window.opened = []; document.getElementById('assess-grid-file').addEventListener('click', (e) => { e.preventDefault(); window.opened.push('grid'); })")
+    page.focus("#assess-grid-button")
+    page.keyboard.press("Enter")
+    assert page.evaluate("window.opened") == ["grid"]
+
+
+def test_the_spectrum_at_phone_width(page):
+    page.set_input_files("#record-file", str(ELCENTRO))
+    spectrum_result(page)
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.wait_for_timeout(300)
+    width = page.evaluate("[document.documentElement.scrollWidth, document.documentElement.clientWidth]")
+    assert width[0] <= width[1], width
+    # One chart above the other, each within the screen.
+    record, spectrum = page.locator("#record-chart").bounding_box(), page.locator("#spectrum-chart").bounding_box()
+    assert spectrum["y"] >= record["y"] + record["height"] - 1 and record["x"] + record["width"] <= 390
+    page.locator("#record-view").scroll_into_view_if_needed()
+    page.locator("#record-view").screenshot(path=str(OUT / "spectrum-phone.png"))
