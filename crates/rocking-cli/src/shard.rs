@@ -8,8 +8,10 @@
 //! ```
 //!
 //! `kind` says what the rows are and how a merge finishes (`sweep`: the rows
-//! are the result; a fragility study's `stripes.csv` is fitted after the
-//! merge); `file` is the file of rows in the folder. The fingerprint is the
+//! are the result; `inventory`: its `inventory.geojson` is made from the
+//! merged rows; `fragility`: the merged `stripes.csv` is fitted, the study
+//! read again from the file named by `study`); `file` is the file of rows in
+//! the folder. The fingerprint is the
 //! SHA-256 of the bytes of the study file (the sweep file) as read: shards
 //! merge only when they came from the same text. What that file reads (a
 //! ground-motion record) is not in it: a record changed between shards is not
@@ -46,6 +48,9 @@ pub struct Manifest {
     pub fingerprint: String,
     /// The version of `rocking` that ran the shard.
     pub rocking_version: String,
+    /// The study file (absolute), whose fits a merge makes (a fragility study's); its
+    /// bytes must still have the fingerprint.
+    pub study: Option<String>,
 }
 
 impl Manifest {
@@ -59,12 +64,13 @@ impl Manifest {
             total_cases,
             fingerprint: fingerprint(study_bytes),
             rocking_version: env!("CARGO_PKG_VERSION").to_string(),
+            study: None,
         }
     }
 
     /// The manifest as pretty JSON with a final line break.
     pub fn to_json(&self) -> String {
-        let value = json!({
+        let mut value = json!({
             "kind": self.kind,
             "file": self.file,
             "k": self.shard.k(),
@@ -75,6 +81,9 @@ impl Manifest {
             "fingerprint": self.fingerprint,
             "rocking_version": self.rocking_version,
         });
+        if let (Some(study), Some(map)) = (&self.study, value.as_object_mut()) {
+            map.insert("study".into(), Value::String(study.clone()));
+        }
         let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
         text.push('\n');
         text
@@ -128,6 +137,11 @@ impl Manifest {
             total_cases,
             fingerprint: text_field("fingerprint")?,
             rocking_version: text_field("rocking_version")?,
+            study: match value.get("study") {
+                None => None,
+                Some(Value::String(s)) => Some(s.clone()),
+                Some(_) => bail!("{}: study: not a string", path.display()),
+            },
         })
     }
 }
@@ -153,7 +167,8 @@ mod tests {
     fn a_manifest_reads_back_as_written() -> anyhow::Result<()> {
         let dir = tempfile::tempdir()?;
         let shard = Shard::new(2, 3).map_err(anyhow::Error::msg)?;
-        let m = Manifest::new("sweep", "sweep.csv", shard, 10, b"x = 1\n");
+        let mut m = Manifest::new("fragility", "stripes.csv", shard, 10, b"x = 1\n");
+        m.study = Some("/data/study.toml".into());
         std::fs::write(dir.path().join(SHARD_JSON), m.to_json())?;
         let back = Manifest::read(dir.path())?;
         assert_eq!(back, m);

@@ -181,6 +181,47 @@ fn the_rows_do_not_depend_on_the_thread_count() {
 }
 
 #[test]
+fn shards_merge_to_the_unsharded_stripes_and_fits() {
+    let dir = tempdir();
+    records(dir.path());
+    let study_file = write(dir.path(), "study.toml", &study("pga"));
+    let whole = dir.path().join("whole");
+    let r = rocking(&["fragility", arg(&study_file), "--out", arg(&whole)]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    // 2 records × 3 levels = 6 cases: 1, 3 and 4 shards (one of them of one case).
+    for n in [1, 3, 4] {
+        let shards: Vec<_> = (1..=n).map(|k| dir.path().join(format!("shards-{n}/{k}"))).collect();
+        for (k, out) in shards.iter().enumerate() {
+            let shard = format!("{}/{n}", k + 1);
+            let r = rocking(&["fragility", arg(&study_file), "--out", arg(out), "--shard", &shard]);
+            assert_eq!(r.code, Some(0), "{}", r.stderr);
+            assert!(!out.join("fragility.csv").exists(), "a shard fits nothing");
+        }
+        let merged = dir.path().join(format!("merged-{n}"));
+        let mut args = vec!["merge"];
+        args.extend(shards.iter().map(|s| arg(s)));
+        args.extend(["--out", arg(&merged)]);
+        let r = rocking(&args);
+        assert_eq!(r.code, Some(0), "{}", r.stderr);
+        for file in ["stripes.csv", "fragility.csv", "fractions.csv"] {
+            assert_eq!(read(&merged.join(file)), read(&whole.join(file)), "{file} of {n} shards");
+        }
+    }
+    // A study file changed after its shards ran: the stripes merge, the fits are refused.
+    let shard = dir.path().join("changed/1");
+    let r = rocking(&["fragility", arg(&study_file), "--out", arg(&shard), "--shard", "1/1"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    write(
+        dir.path(),
+        "study.toml",
+        &study("pga").replace("levels = [0.2, 0.45, 0.9]", "levels = [0.2, 0.45, 1.0]"),
+    );
+    let r = rocking(&["merge", arg(&shard), "--out", arg(&dir.path().join("changed-merged"))]);
+    assert_eq!(r.code, Some(1));
+    assert!(r.stderr.contains("changed since the shards ran"), "{}", r.stderr);
+}
+
+#[test]
 fn bad_studies_fail_with_one_line_naming_the_key() {
     let dir = tempdir();
     records(dir.path());

@@ -68,7 +68,8 @@ fn number(text: &str) -> f64 {
 /// The row's numbers are `rocking assess`'s, to the bit: the same functions on the same values.
 fn assert_row_is_assess(header: &[String], row: &[String], expected: &(Vec<(String, f64, f64)>, f64, String)) {
     let (checks, zeta, governing) = expected;
-    assert_eq!(checks.len(), 4);
+    // Every check of the assessment has its columns, and no other.
+    assert_eq!(checks.len(), header.iter().filter(|h| h.ends_with("_zeta_E")).count());
     for (prefix, ag, z) in checks {
         assert_eq!(
             number(cell(header, row, &format!("{prefix}_ag_capacity_g"))).to_bits(),
@@ -285,4 +286,36 @@ fn details_write_each_towers_assessment_linked_from_the_report() {
         assert_eq!(zeta.to_bits(), number(cell(&header, row, "zeta_E")).to_bits(), "{id}");
         assert!(report.contains(&format!("href=\"towers/{id}/report.html\"")), "no link to {id}'s page");
     }
+}
+
+#[test]
+fn with_a_record_set_the_dynamic_checks_are_those_of_rocking_assess() {
+    let dir = tempdir();
+    let grid = root().join("data/hazard/synthetic_grid.txt");
+    let records = root().join("data/records/synthetic");
+    // Three records (the fewest a set may have) and a coarse λ scan: the checks
+    // are run in full, only with fewer runs than the defaults.
+    let assessment = format!(
+        "[assessment]\nconfidence_factor = 1.35\nrecords = ['{0}/kt_01.AT2', '{0}/kt_02.AT2', '{0}/kt_03.AT2']\nlambda = {{ from = 0.5, to = 3.0, step = 0.5 }}\n",
+        records.display()
+    );
+    let town = base(&grid).replace("[assessment]\nconfidence_factor = 1.35\n", &assessment);
+    let assess_file = write(dir.path(), "town.toml", &town);
+    let towers = write(
+        dir.path(),
+        "towers.csv",
+        "id,name,lon,lat,tower.width,tower.height,soil\nA,slender,14.34,41.06,3.6,30.0,\nB,stocky on C,14.41,41.10,5.0,20.0,C\n",
+    );
+    let out = dir.path().join("out");
+    let r = rocking(&["inventory", arg(&towers), "--assess", arg(&assess_file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    let (header, rows) = inventory_csv(&out);
+    for state in ["SLV", "SLC"] {
+        assert!(header.contains(&format!("{state}_nonlinear_dynamic_zeta_E")), "{header:?}");
+    }
+    let file = |width: f64, height: f64, soil: &str, lon: f64, lat: f64| {
+        tower_file(&grid, width, height, 4.0e5, soil, lon, lat).replace("[assessment]\nconfidence_factor = 1.35\n", &assessment)
+    };
+    assert_row_is_assess(&header, &rows[0], &assess(dir.path(), "a", &file(3.6, 30.0, "B", 14.34, 41.06)));
+    assert_row_is_assess(&header, &rows[1], &assess(dir.path(), "b", &file(5.0, 20.0, "C", 14.41, 41.10)));
 }

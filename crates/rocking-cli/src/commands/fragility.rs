@@ -1,5 +1,7 @@
-//! `rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N]`: a
-//! fragility study (README, "Fragility studies"). The study and its
+//! `rocking fragility STUDY.toml [--out DIR] [--plot] [--threads N] [--shard K/N]`:
+//! a fragility study (README, "Fragility studies"). With `--shard K/N` only
+//! the K-th block of cases runs and `shard.json` names the study file, whose
+//! fits `rocking merge` makes from the merged stripes ([`fit_merged`]). The study and its
 //! cases are `rocking_scenario::Study`, run on the sweep's engine; this file
 //! writes `stripes.csv` row by row (with a progress bar and a clean stop on
 //! Ctrl-C), then `fragility.csv` and `fractions.csv` from the exceedances
@@ -11,9 +13,10 @@ use super::sweep::{peak_memory_kb, Interrupted};
 use crate::format::sig;
 use crate::output;
 use crate::plot::{IdaCurve, StateCurve, StudyFigures};
+use crate::shard::{Manifest, SHARD_JSON};
 use anyhow::Context;
-use rocking_scenario::{Cell, Study, Threshold};
-use std::path::PathBuf;
+use rocking_scenario::{Cell, Row, Shard, Study, Threshold};
+use std::path::{Path, PathBuf};
 use std::sync::atomic::Ordering;
 
 /// One row per case.
@@ -42,6 +45,46 @@ pub struct Args {
     /// Also print the threads used, the time per case and the peak memory.
     #[arg(long, short)]
     pub verbose: bool,
+    /// Run only the K-th of N equal contiguous blocks of cases (1 <= K <= N)
+    /// and write shard.json; `rocking merge` of all N writes stripes.csv and its fits.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, conflicts_with = "plot")]
+    pub shard: Option<Shard>,
+}
+
+fn parse_shard(text: &str) -> Result<Shard, String> {
+    text.parse()
+}
+
+/// Fits `stripes.csv` at `stripes` (the merged rows of the shards of `study`)
+/// and writes `fragility.csv` and `fractions.csv` in `out`, as an unsharded
+/// run writes them; each file is made under a temporary name and never
+/// replaces one already there.
+pub fn fit_merged(study: &Study, stripes: &Path, out: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let context = || format!("cannot read {}", stripes.display());
+    let mut reader = csv::Reader::from_path(stripes).with_context(context)?;
+    let mut tally = study.tally();
+    for (index, record) in reader.records().enumerate() {
+        let record = record.with_context(context)?;
+        tally.add(&Row {
+            index,
+            cells: record.iter().map(Cell::from_text).collect(),
+        });
+    }
+    let fits = tally.fits();
+    let mut written = Vec::new();
+    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
+        let target = out.join(name);
+        let temp = tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .tempfile_in(out)
+            .with_context(|| format!("cannot write in {}", out.display()))?;
+        std::fs::write(temp.path(), text).with_context(|| format!("cannot write {}", target.display()))?;
+        temp.persist_noclobber(&target)
+            .map_err(|e| e.error)
+            .with_context(|| format!("cannot write {}", target.display()))?;
+        written.push(target);
+    }
+    Ok(written)
 }
 
 /// Runs the study and writes its files.
@@ -52,7 +95,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let study = Study::from_toml_str(&text, &args.study)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.study));
     let stripes_path = dir.join(STRIPES_CSV);
-    let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV].iter().map(|f| dir.join(f)).collect();
+    let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV, SHARD_JSON].iter().map(|f| dir.join(f)).collect();
     if args.plot {
         outputs.extend(["ida.svg", "ida.png", "fragility.svg", "fragility.png"].iter().map(|f| dir.join(f)));
     }
@@ -89,9 +132,10 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         counted: "cases",
     };
     let threads = args.threads.map(|n| n as usize);
+    let cases = args.shard.map_or(0..study.len(), |s| s.cases(study.len()));
     let Written { done, wall } = write_rows(
         &file,
-        study.len(),
+        cases.len(),
         |row| {
             tally.add(row);
             let cell = |c: Option<usize>| c.and_then(|c| row.cells.get(c));
@@ -106,16 +150,34 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
                 curve.points.push((study.levels()[row.index % levels], value, overturned));
             }
         },
-        |cancel, sink| study.run(threads, cancel, sink),
+        |cancel, sink| study.run_range(cases.clone(), threads, cancel, sink),
     )?;
     if done.cancelled {
         staging.commit()?;
         return Err(Interrupted {
             written: done.written,
-            total: study.len(),
+            total: cases.len(),
             csv: stripes_path,
         }
         .into());
+    }
+    if let Some(shard) = args.shard {
+        // The fits need every stripe: `rocking merge` makes them.
+        let mut manifest = Manifest::new("fragility", STRIPES_CSV, shard, study.len(), text.as_bytes());
+        let absolute = std::path::absolute(&args.study).with_context(|| format!("cannot resolve {}", args.study.display()))?;
+        manifest.study = Some(absolute.display().to_string());
+        std::fs::write(staging.path(SHARD_JSON), manifest.to_json()).with_context(|| format!("cannot write {}", dir.join(SHARD_JSON).display()))?;
+        staging.commit()?;
+        return super::print(&format!(
+            "{}: {} cases (shard {shard}: cases {}..{} of {}) in {} s\nwrote {STRIPES_CSV}, {SHARD_JSON} in {}\n",
+            study.name(),
+            done.written,
+            cases.start,
+            cases.end,
+            study.len(),
+            sig(wall, 3),
+            dir.display()
+        ));
     }
     // Ctrl-C during the fits: stripes.csv is complete, the fits are not written.
     let interrupted = crate::signals::interrupted();

@@ -52,6 +52,7 @@ fn merged_file(kind: &str) -> Option<&'static str> {
     match kind {
         "sweep" => Some(super::sweep::SWEEP_CSV),
         "inventory" => Some(super::town::INVENTORY_CSV),
+        "fragility" => Some(super::fragility::STRIPES_CSV),
         _ => None,
     }
 }
@@ -63,7 +64,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let (first_dir, first) = ordered[0];
     let name = merged_file(&first.kind).with_context(|| {
         format!(
-            "{}: kind: {:?} is not a kind of shard this rocking can merge (it merges \"sweep\" and \"inventory\")",
+            "{}: kind: {:?} is not a kind of shard this rocking can merge (it merges \"sweep\", \"inventory\" and \"fragility\")",
             first_dir.join(SHARD_JSON).display(),
             first.kind
         )
@@ -145,6 +146,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     if first.kind == "inventory" {
         written.push(finish_inventory(&args.out, &target)?);
     }
+    if first.kind == "fragility" {
+        written.extend(finish_fragility(&first_dir.join(SHARD_JSON), first, &args.out, &target)?);
+    }
     let written: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
     super::print(&format!(
         "merged {} shards ({} {}) into {}\n",
@@ -153,6 +157,29 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         if first.kind == "inventory" { "towers" } else { "cases" },
         written.join(", ")
     ))
+}
+
+/// The fits of a merged fragility study: its study file read again (refused
+/// if its bytes changed since the shards ran), its stripes counted from the
+/// merged `stripes.csv`.
+fn finish_fragility(json: &Path, manifest: &Manifest, out: &Path, stripes: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let study_file = PathBuf::from(
+        manifest
+            .study
+            .as_deref()
+            .with_context(|| format!("{}: study: missing (the study file of a fragility shard)", json.display()))?,
+    );
+    let text = rocking_scenario::file::read_text(&study_file, rocking_scenario::file::MAX_INPUT_BYTES)
+        .with_context(|| format!("cannot read {} (the study of {})", study_file.display(), json.display()))?;
+    if crate::shard::fingerprint(text.as_bytes()) != manifest.fingerprint {
+        bail!(
+            "{}: changed since the shards ran (its fingerprint is not that of {}): the stripes are merged, not fitted",
+            study_file.display(),
+            json.display()
+        );
+    }
+    let study = rocking_scenario::Study::from_toml_str(&text, &study_file)?;
+    super::fragility::fit_merged(&study, stripes, out)
 }
 
 /// The merged towers' `inventory.geojson`, made from the merged `inventory.csv` as `rocking inventory` makes it.

@@ -403,7 +403,19 @@ impl Study {
     /// Runs every case as [`crate::Sweep::run`] does: `on_row` gets the rows
     /// in case order on the calling thread.
     pub fn run<E>(&self, threads: Option<usize>, cancel: &AtomicBool, on_row: impl FnMut(Row) -> Result<(), E>) -> Result<Finished, RunError<E>> {
-        run_cases(self, 0..self.len(), threads, cancel, on_row)
+        self.run_range(0..self.len(), threads, cancel, on_row)
+    }
+
+    /// Runs the cases `cases` (a shard: indices in the whole study, clipped to
+    /// `0..len`) as [`Study::run`] runs them all, each row that of the whole study.
+    pub fn run_range<E>(
+        &self,
+        cases: std::ops::Range<usize>,
+        threads: Option<usize>,
+        cancel: &AtomicBool,
+        on_row: impl FnMut(Row) -> Result<(), E>,
+    ) -> Result<Finished, RunError<E>> {
+        run_cases(self, cases, threads, cancel, on_row)
     }
 
     /// A tally of exceedances for this study's limit states and levels.

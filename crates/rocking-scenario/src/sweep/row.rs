@@ -73,6 +73,21 @@ impl Cell {
         }
     }
 
+    /// The cell of a CSV field's text as [`Cell::text`] writes it: empty,
+    /// `true`/`false`, an integer, a number, else text (a row read back).
+    pub fn from_text(text: &str) -> Self {
+        match text {
+            "" => Cell::Empty,
+            "true" => Cell::Bool(true),
+            "false" => Cell::Bool(false),
+            _ => text
+                .parse::<i64>()
+                .map(Cell::Int)
+                .or_else(|_| text.parse::<f64>().map(Cell::Float))
+                .unwrap_or_else(|_| Cell::Text(text.to_string())),
+        }
+    }
+
     /// The text of this cell's CSV field, before quoting.
     pub fn text(&self) -> Cow<'_, str> {
         match self {
