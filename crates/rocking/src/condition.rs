@@ -31,6 +31,7 @@ pub(crate) const MAX_CONDITIONS: usize = 4;
 /// The conditions that can end `regime`, at most four, in the order in which
 /// they are applied when several hold at one instant (a jump of the input):
 /// the tower's first, unless [`slips_before_uplift`].
+#[inline(always)]
 pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], usize) {
     let tower: &[Condition] = match (kernel.has_tower, regime.tower) {
         (false, _) => &[],

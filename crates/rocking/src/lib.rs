@@ -32,6 +32,7 @@
 mod body;
 mod cascade;
 mod condition;
+mod engine;
 mod equations;
 mod error;
 mod event;

@@ -127,6 +127,20 @@ impl Summary {
     }
 }
 
+/// The peaks kept so far, as the step's screening reads them: a search
+/// inside a step is needed only where it could raise one of them.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Kept {
+    /// Largest and smallest `θ` (rad).
+    pub(crate) theta_range: (f64, f64),
+    /// Peak absolute horizontal acceleration of the top centre (m/s²).
+    pub(crate) max_top_abs_acceleration: f64,
+    /// Peak `|f_x| / f_y` at the pivot.
+    pub(crate) max_pivot_friction_demand: f64,
+    /// Whether `f_y` has reached zero.
+    pub(crate) tower_uplift_detected: bool,
+}
+
 /// Accumulates the summary during a run.
 #[derive(Debug, Clone)]
 pub(crate) struct Tracker {
@@ -157,6 +171,18 @@ impl Tracker {
                 end_state: EndState::Rest,
                 will_overturn: None,
             },
+        }
+    }
+
+    /// The peaks kept so far.
+    #[inline]
+    pub(crate) fn kept(&self) -> Kept {
+        let s = &self.summary;
+        Kept {
+            theta_range: s.theta_range,
+            max_top_abs_acceleration: s.max_top_abs_acceleration,
+            max_pivot_friction_demand: s.max_pivot_friction_demand,
+            tower_uplift_detected: s.tower_uplift_detected,
         }
     }
 
