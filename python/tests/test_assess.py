@@ -12,42 +12,30 @@ import rocking
 
 from conftest import ROOT, run_cli
 
-FILE = """
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-
-[site]
-soil = "B"
-[site.SLD]
-ag = 0.062
-F0 = 2.52
-Tc_star = 0.30
-[site.SLV]
-ag = 0.155
-F0 = 2.47
-Tc_star = 0.36
-[site.SLC]
-ag = 0.196
-F0 = 2.50
-Tc_star = 0.37
-
-[assessment]
-records = ["kt_0*.AT2"]
-free_after = 2.0
-lambda = { from = 0.5, to = 2.0, step = 0.5 }
-"""
+# The tests' tower on subsoil B, shared with the Rust tests; its [assessment]
+# is the last table, to which the record set is appended.
+TOWER_ON_B = ROOT / "crates" / "rocking-assess" / "tests" / "data" / "tower_on_b.toml"
+RECORD_SET = 'records = ["kt_0*.AT2"]\nfree_after = 2.0\nlambda = { from = 0.5, to = 2.0, step = 0.5 }\n'
+FILE = TOWER_ON_B.read_text(encoding="utf-8") + RECORD_SET
 
 
 def as_dict() -> dict:
-    """FILE as a dict (written out: tomllib is Python 3.11's)."""
-    state = lambda ag, f0, tc: {"ag": ag, "F0": f0, "Tc_star": tc}  # noqa: E731
-    return {
-        "tower": {"width": 4.0, "height": 12.0, "mass": 1.5e5},
-        "site": {"soil": "B", "SLD": state(0.062, 2.52, 0.30), "SLV": state(0.155, 2.47, 0.36), "SLC": state(0.196, 2.50, 0.37)},
-        "assessment": {"records": ["kt_0*.AT2"], "free_after": 2.0, "lambda": {"from": 0.5, "to": 2.0, "step": 0.5}},
-    }
+    """FILE as a dict. The fixture is TOML of tables and `key = value` lines
+    whose values read as JSON (numbers, strings), so that this reads it on
+    Python 3.9 too (tomllib is 3.11's); the record set is added as a dict."""
+    table: dict = {}
+    section = table
+    for line in TOWER_ON_B.read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line.startswith("["):
+            section = table
+            for part in line.strip("[]").split("."):
+                section = section.setdefault(part, {})
+        elif line:
+            key, value = (x.strip() for x in line.split("=", 1))
+            section[key] = json.loads(value)
+    table["assessment"].update({"records": ["kt_0*.AT2"], "free_after": 2.0, "lambda": {"from": 0.5, "to": 2.0, "step": 0.5}})
+    return table
 
 
 def test_assess_equals_the_command(cli: Path, tmp_path: Path) -> None:

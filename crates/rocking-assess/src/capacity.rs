@@ -24,7 +24,7 @@ use std::str::FromStr;
 
 /// The confidence factor FC when none is given: 1.35, knowledge level LC1
 /// (Circolare 2019 §C8.5.4, Tab. C8.5.IV).
-pub const DEFAULT_CONFIDENCE_FACTOR: f64 = 1.35;
+pub use rocking_scenario::DEFAULT_CONFIDENCE_FACTOR;
 
 /// Which capacity curve the checks read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]

@@ -147,10 +147,16 @@ impl RecordSet {
             .map(|path| {
                 // The record's duration is not known before it is read: a first case reads it.
                 let read = |duration: f64| {
-                    Scenario::from_table(input.record_table(path, duration), origin)
+                    Scenario::from_table(input.record_table(path, duration)?, origin)
                         .and_then(|s| s.build_cached(cache))
                         .map_err(|mut e| {
-                            e.fault.key = Some("assessment.records".into());
+                            // The keys of the record's [ground] are the set's.
+                            let key = match e.fault.key.as_deref() {
+                                Some("ground.units") => "assessment.units",
+                                Some("ground.dt") => "assessment.dt",
+                                _ => "assessment.records",
+                            };
+                            e.fault.key = Some(key.into());
                             e
                         })
                 };

@@ -149,13 +149,11 @@ impl AssessmentInput {
         inputs
     }
     /// The scenario table of one record's run: the file's scenario with
-    /// `[ground]` the record file `record` (relative to the file's folder)
-    /// and `simulation.duration` the given one.
-    pub fn record_table(&self, record: &str, duration: f64) -> Table {
-        let mut ground = Table::new();
-        ground.insert("type".into(), Value::String("record".into()));
-        ground.insert("file".into(), Value::String(record.into()));
-        with_ground(&self.file.scenario, ground, duration)
+    /// `[ground]` the record file `record` (relative to the file's folder,
+    /// a CSV file with the set's `units` and `dt`) and `simulation.duration`
+    /// the given one.
+    pub fn record_table(&self, record: &str, duration: f64) -> Result<Table, Error> {
+        Ok(with_ground(&self.file.scenario, self.file.record_ground(record)?, duration))
     }
 
     /// The tower's capacity with the file's FC and curve.

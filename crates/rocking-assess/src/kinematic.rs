@@ -19,15 +19,16 @@ use crate::search::{least_failing_ag, AgCapacity, AG_SEARCH_TOP};
 use crate::site::{Role, Site};
 use rocking_codes::{displacement_corner_te, CodeSpectrum};
 
-/// The behaviour factor q of the linear kinematic check when none is given
-/// (Circolare 2019 §C8.7.1.2.1.7).
-pub const DEFAULT_Q: f64 = 2.0;
+/// The behaviour factor q of the linear kinematic check when none is given,
+/// 2 (Circolare 2019 §C8.7.1.2.1.7): the assessment file's default.
+pub use rocking_scenario::DEFAULT_Q;
 
+/// The damping (% of critical) of the collapse displacement spectrum (10%).
+pub use rocking_scenario::KINEMATIC_DAMPING_COLLAPSE_PCT as NONLINEAR_DAMPING_COLLAPSE_PCT;
 /// The damping (% of critical) of the life-safety displacement spectrum in the
-/// non-linear kinematic check.
-pub const NONLINEAR_DAMPING_LIFE_SAFETY_PCT: f64 = 8.0;
-/// The damping (% of critical) of the collapse displacement spectrum.
-pub const NONLINEAR_DAMPING_COLLAPSE_PCT: f64 = 10.0;
+/// non-linear kinematic check, 8%: rocking-scenario's, which its
+/// `kinematic_damping_pct` gives the spectra of `rocking spectrum` too.
+pub use rocking_scenario::KINEMATIC_DAMPING_LIFE_SAFETY_PCT as NONLINEAR_DAMPING_LIFE_SAFETY_PCT;
 
 /// The soil factor `S` of a spectrum: NTC's `SS ST`, EN 1998-1's `S`.
 pub fn soil_factor(spectrum: &CodeSpectrum) -> f64 {

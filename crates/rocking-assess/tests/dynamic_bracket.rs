@@ -11,33 +11,21 @@ use rocking_assess::{dynamic_check, AssessmentInput, RecordSet, Role, LAMBDA_TOL
 use rocking_scenario::{RunOptions, Scenario};
 use std::path::{Path, PathBuf};
 
-/// A small slender block (1 m × 5 m, fixed base) on subsoil C, three synthetic records.
-const FILE: &str = r#"
-[tower]
-width = 1.0
-height = 5.0
-mass = 1.0e4
-
-[site]
-soil = "C"
-[site.SLD]
-ag = 0.062
-F0 = 2.52
-Tc_star = 0.30
-[site.SLV]
-ag = 0.155
-F0 = 2.47
-Tc_star = 0.36
-[site.SLC]
-ag = 0.196
-F0 = 2.50
-Tc_star = 0.37
-
-[assessment]
-records = ["records/synthetic/kt_01.AT2", "records/synthetic/kt_02.AT2", "records/synthetic/kt_03.AT2"]
-free_after = 5.0
-lambda = { from = 0.25, to = 6.0, step = 0.25 }
-"#;
+/// The tests' site (tests/data/tower_on_b.toml) with a small slender block
+/// (1 m × 5 m, fixed base) in place of its tower, on subsoil C, and three
+/// synthetic records.
+fn file() -> String {
+    let mut file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
+    for (from, to) in [
+        ("width = 4.0\nheight = 12.0\nmass = 1.5e5\n", "width = 1.0\nheight = 5.0\nmass = 1.0e4\n"),
+        ("soil = \"B\"", "soil = \"C\""),
+    ] {
+        assert!(file.contains(from), "tower_on_b.toml has no {from:?}");
+        file = file.replace(from, to);
+    }
+    // [assessment] is the file's last table.
+    file + "records = [\"records/synthetic/kt_01.AT2\", \"records/synthetic/kt_02.AT2\", \"records/synthetic/kt_03.AT2\"]\nfree_after = 5.0\nlambda = { from = 0.25, to = 6.0, step = 0.25 }\n"
+}
 
 fn origin() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/assess.toml")
@@ -72,7 +60,7 @@ fn responses(lambda: f64, scales: &[f64], alpha: f64, radius: f64) -> Vec<Option
 
 #[test]
 fn the_records_hold_just_below_the_capacity_and_fail_just_above() {
-    let input = AssessmentInput::from_toml_str(FILE, &origin()).unwrap();
+    let input = AssessmentInput::from_toml_str(&file(), &origin()).unwrap();
     let capacity = input.capacity().unwrap();
     let set = RecordSet::read(&input, capacity.t_slc).unwrap();
     let check = dynamic_check(&input, &set, &capacity, Role::LifeSafety).unwrap();

@@ -6,34 +6,27 @@
 use crate::util::{arg, read, rocking, root, tempdir, write};
 use serde_json::Value;
 
-/// A tower (b = 2 m, h = 6 m) on the assessment file's example site, subsoil B.
-pub const ASSESS: &str = r#"name = "tower on B"
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
+/// The tests' tower (b = 2 m, h = 6 m) on the assessment file's example site,
+/// subsoil B, shared with the tests of rocking-assess and of Python; its
+/// `[assessment]` is the last table, to which a test appends the record set.
+fn tower_on_b() -> String {
+    read(&root().join("crates/rocking-assess/tests/data/tower_on_b.toml"))
+}
 
-[site]
-code = "ntc2018"
-soil = "B"
-topography = "T1"
-[site.SLD]
-ag = 0.062
-F0 = 2.52
-Tc_star = 0.30
-[site.SLV]
-ag = 0.155
-F0 = 2.47
-Tc_star = 0.36
-[site.SLC]
-ag = 0.196
-F0 = 2.50
-Tc_star = 0.37
+/// Copies the synthetic records kt_01–kt_03.AT2 into `dir/folder`.
+fn synthetic_records(dir: &std::path::Path, folder: &str) {
+    std::fs::create_dir_all(dir.join(folder)).unwrap_or_else(|e| panic!("{e}"));
+    for k in 1..=3 {
+        let text = read(&root().join(format!("data/records/synthetic/kt_0{k}.AT2")));
+        write(dir, &format!("{folder}/kt_0{k}.AT2"), &text);
+    }
+}
 
-[assessment]
-confidence_factor = 1.35
-q = 2.0
-"#;
+/// `text` with `from` replaced by `to`, `from` being in it.
+fn edited(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "no {from:?} in the tests' assessment file");
+    text.replace(from, to)
+}
 
 fn number(v: &Value, path: &[&str]) -> f64 {
     let mut x = v;
@@ -46,7 +39,7 @@ fn number(v: &Value, path: &[&str]) -> f64 {
 #[test]
 fn the_verdict_is_the_hand_computed_one() {
     let dir = tempdir();
-    let file = write(dir.path(), "assess.toml", ASSESS);
+    let file = write(dir.path(), "assess.toml", &tower_on_b());
     let out = dir.path().join("out");
     let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
@@ -123,45 +116,54 @@ fn bad_input_is_one_line_naming_the_key() {
     let record = read(&root().join("data/records/elcentro_1940_ns.AT2"));
     write(dir.path(), "records/one.AT2", &record);
     write(dir.path(), "records/two.AT2", &record);
-    let cases: [(&str, String, &str); 9] = [
-        (
-            "missing limit state",
-            ASSESS.replace("[site.SLC]\nag = 0.196\nF0 = 2.50\nTc_star = 0.37\n", ""),
-            "site.SLC: missing [site.SLC]",
-        ),
+    let base = tower_on_b();
+    let slc = "[site.SLC]\nag = 0.196\nF0 = 2.50\nTc_star = 0.37\n";
+    let tower = "[tower]\nwidth = 4.0\nheight = 12.0\nmass = 1.5e5";
+    // (what, the text edited from, to, the message after the file's name)
+    let edits: [(&str, &str, &str, &str); 8] = [
+        ("missing limit state", slc, "", "site.SLC: missing [site.SLC]"),
         (
             "FC below 1",
-            ASSESS.replace("confidence_factor = 1.35", "confidence_factor = 0.9"),
+            "confidence_factor = 1.35",
+            "confidence_factor = 0.9",
             "assessment.confidence_factor: must be >= 1",
         ),
-        ("q zero", ASSESS.replace("q = 2.0", "q = 0"), "assessment.q: must be a finite number > 0"),
+        ("q zero", "q = 2.0", "q = 0", "assessment.q: must be a finite number > 0"),
         (
             "a typo",
-            ASSESS.replace("confidence_factor", "confidence_facter"),
+            "confidence_factor",
+            "confidence_facter",
             "assessment.confidence_facter: unknown key (did you mean `confidence_factor`?)",
         ),
         (
             "two records",
-            ASSESS.replace("q = 2.0", "records = [\"records/*.AT2\"]"),
+            "q = 2.0",
+            "records = [\"records/*.AT2\"]",
             "assessment.records: a record set needs at least 3 records",
         ),
         (
             "a duration",
-            ASSESS.replace("[site]", "[simulation]\nduration = 5.0\n[site]"),
+            "[site]\n",
+            "[simulation]\nduration = 5.0\n[site]\n",
             "simulation.duration: a dynamic check runs each record",
         ),
         (
             "no tower",
-            ASSESS.replace("[tower]\nwidth = 4.0\nheight = 12.0\nmass = 1.5e5", "[building]\nmass = 1e6\nmu_static = 0.5"),
+            tower,
+            "[building]\nmass = 1e6\nmu_static = 0.5",
             "tower: an assessment needs a [tower]",
         ),
-        (
-            "a ground",
-            format!("{ASSESS}\n[ground]\ntype = \"none\"\n"),
-            "ground: an assessment file has no [ground]",
-        ),
-        ("soil", ASSESS.replace("soil = \"B\"", "soil = \"F\""), "site.soil: unknown category \"F\""),
+        ("soil", "soil = \"B\"", "soil = \"F\"", "site.soil: unknown category \"F\""),
     ];
+    let mut cases: Vec<(&str, String, &str)> = edits
+        .iter()
+        .map(|&(what, from, to, expected)| (what, edited(&base, from, to), expected))
+        .collect();
+    cases.push((
+        "a ground",
+        format!("{base}\n[ground]\ntype = \"none\"\n"),
+        "ground: an assessment file has no [ground]",
+    ));
     for (what, text, expected) in cases {
         let file = write(dir.path(), "bad.toml", &text);
         let r = rocking(&["assess", arg(&file), "--out", arg(&dir.path().join("out"))]);
@@ -178,15 +180,8 @@ fn bad_input_is_one_line_naming_the_key() {
 #[test]
 fn the_dynamic_checks_write_their_tables() {
     let dir = tempdir();
-    std::fs::create_dir_all(dir.path().join("records")).unwrap_or_else(|e| panic!("{e}"));
-    for k in 1..=3 {
-        let text = read(&root().join(format!("data/records/synthetic/kt_0{k}.AT2")));
-        write(dir.path(), &format!("records/kt_0{k}.AT2"), &text);
-    }
-    let text = ASSESS.replace(
-        "q = 2.0",
-        "q = 2.0\nrecords = [\"records/*.AT2\"]\nfree_after = 2.0\nlambda = { from = 0.5, to = 2.0, step = 0.5 }",
-    );
+    synthetic_records(dir.path(), "records");
+    let text = tower_on_b() + "records = [\"records/*.AT2\"]\nfree_after = 2.0\nlambda = { from = 0.5, to = 2.0, step = 0.5 }\n";
     let file = write(dir.path(), "assess.toml", &text);
     let out = dir.path().join("out");
     let r = rocking(&["assess", arg(&file), "--out", arg(&out), "--threads", "1"]);
@@ -247,4 +242,87 @@ fn the_docs_example_report_is_the_generated_one() {
             "docs/src/figures/assess/{name}: run scripts/docs-assess-report.sh"
         );
     }
+}
+
+/// The three synthetic records as one-column CSV files in m/s² (each AT2 value
+/// in g times 9.81, written in full), sampled every 0.01 s as their AT2 files.
+fn csv_records(dir: &std::path::Path) {
+    std::fs::create_dir_all(dir.join("csv")).unwrap_or_else(|e| panic!("{e}"));
+    for k in 1..=3 {
+        let at2 = read(&root().join(format!("data/records/synthetic/kt_0{k}.AT2")));
+        assert!(at2.lines().nth(3).is_some_and(|l| l.contains("DT= 0.0100 SEC")), "kt_0{k}.AT2's time step");
+        let values: String = at2
+            .lines()
+            .skip(4)
+            .flat_map(str::split_whitespace)
+            .map(|v| format!("{}\n", v.parse::<f64>().unwrap_or_else(|e| panic!("{v}: {e}")) * 9.81))
+            .collect();
+        write(dir, &format!("csv/kt_0{k}.csv"), &values);
+    }
+}
+
+/// A record set of CSV files takes `units` and `dt` as `[ground]` does for a
+/// CSV record: the same records as CSV in m/s² every 0.01 s give the verdict
+/// of their AT2 files to the last bit (the AT2 reader multiplies each value in
+/// g by g = 9.81 m/s², the CSV reader reads those products back exactly, and
+/// both sample at k·dt). Without `dt` a one-column file is refused, naming it.
+#[test]
+fn a_csv_record_set_takes_units_and_dt() {
+    let dir = tempdir();
+    synthetic_records(dir.path(), "at2");
+    csv_records(dir.path());
+    let set = "free_after = 2.0\nlambda = { from = 0.5, to = 2.0, step = 0.5 }\n";
+    let run = |name: &str, records: &str| {
+        let file = write(dir.path(), &format!("{name}.toml"), &format!("{}{records}{set}", tower_on_b()));
+        let out = dir.path().join(format!("out-{name}"));
+        let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
+        assert_eq!(r.code, Some(0), "{name}: {}", r.stderr);
+        let json: Value = serde_json::from_str(&read(&out.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
+        (json, read(&out.join("records.csv")))
+    };
+    let (at2, at2_rows) = run("at2", "records = [\"at2/*.AT2\"]\n");
+    let (csv, csv_rows) = run("csv", "records = [\"csv/*.csv\"]\nunits = \"m/s2\"\ndt = 0.01\n");
+    assert_eq!(csv["checks"], at2["checks"]);
+    assert_eq!(
+        csv_rows.replace("csv/", "").replace(".csv", ""),
+        at2_rows.replace("at2/", "").replace(".AT2", "")
+    );
+    // Read in g (the default), the same files are 9.81 times stronger: each is
+    // fitted to the spectrum with a scale 9.81 times smaller. The fit is linear
+    // in the record, so the two agree but for the rounding of the spectra's
+    // arithmetic (1e-12 relative is far above it, far below a wrong unit).
+    let (_, in_g) = run("in_g", "records = [\"csv/*.csv\"]\ndt = 0.01\n");
+    let scales = |rows: &str| -> Vec<f64> {
+        rows.lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(2).and_then(|x| x.parse().ok()).unwrap_or_else(|| panic!("{l}")))
+            .collect()
+    };
+    let (in_m_s2, in_g) = (scales(&csv_rows), scales(&in_g));
+    assert_eq!(in_m_s2.len(), 6);
+    for (a, b) in in_m_s2.iter().zip(&in_g) {
+        assert!((a / b / 9.81 - 1.0).abs() < 1e-12, "{a} {b}");
+    }
+
+    for (what, keys, expected) in [
+        ("no dt", "units = \"m/s2\"\n", "assessment.records: "),
+        ("a typo", "unit = \"m/s2\"\ndt = 0.01\n", "assessment.unit: unknown key (did you mean `units`?)"),
+        ("a bad unit", "units = \"mm/s2\"\ndt = 0.01\n", "assessment.units: \"mm/s2\" is not one of"),
+        ("a bad dt", "units = \"m/s2\"\ndt = -0.01\n", "assessment.dt: must be"),
+    ] {
+        let file = write(dir.path(), "bad.toml", &format!("{}records = [\"csv/*.csv\"]\n{keys}{set}", tower_on_b()));
+        let r = rocking(&["assess", arg(&file), "--out", arg(&dir.path().join("bad"))]);
+        assert_eq!(r.code, Some(1), "{what}: {}", r.stderr);
+        assert_eq!(r.stderr.lines().count(), 1, "{what}: {}", r.stderr);
+        assert!(r.stderr.contains(&format!("bad.toml: {expected}")), "{what}: {}", r.stderr);
+        if what == "no dt" {
+            assert!(r.stderr.contains("kt_01.csv"), "{what}: {}", r.stderr);
+        }
+        assert_eq!(files_in(&dir.path().join("bad")), 0, "{what}: wrote outputs");
+    }
+}
+
+/// The number of entries of a folder, 0 when it does not exist.
+fn files_in(folder: &std::path::Path) -> usize {
+    std::fs::read_dir(folder).map_or(0, |entries| entries.count())
 }

@@ -305,6 +305,13 @@ fn frequency(s: &Section<'_>, cx: &Context<'_>) -> Result<f64, Fault> {
     Ok(ratio * tower.frequency_parameter(cx.g) / (2.0 * PI))
 }
 
+/// The values of `units`, the acceleration units of a CSV record.
+pub(crate) const ACCELERATION_UNITS: [(&str, AccelerationUnit); 3] = [
+    ("g", AccelerationUnit::G),
+    ("m/s2", AccelerationUnit::MetersPerSecond2),
+    ("cm/s2", AccelerationUnit::CentimetersPerSecond2),
+];
+
 /// How a record given as `text` is named in messages and reports.
 const TEXT_NAME: &str = "<text>";
 
@@ -323,14 +330,7 @@ fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
         }
     };
     let format = s.choice("format", &[("at2", RecordFormat::At2), ("esm", RecordFormat::Esm), ("csv", RecordFormat::Csv)])?;
-    let units = s.choice(
-        "units",
-        &[
-            ("g", AccelerationUnit::G),
-            ("m/s2", AccelerationUnit::MetersPerSecond2),
-            ("cm/s2", AccelerationUnit::CentimetersPerSecond2),
-        ],
-    )?;
+    let units = s.choice("units", &ACCELERATION_UNITS)?;
     let dt = s.number("dt")?.map(|dt| positive(&s.key("dt"), dt)).transpose()?;
     let csv_keys: Vec<&'static str> = [("units", units.is_some()), ("dt", dt.is_some())]
         .into_iter()

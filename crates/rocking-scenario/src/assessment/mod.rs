@@ -18,13 +18,23 @@ pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_
 use crate::error::{closest, ErrorKind, Fault};
 use crate::read::{as_number, non_negative, positive, with_article, Section};
 use crate::{Error, DEFAULT_G};
-use rocking::{CsvOptions, Record};
+use rocking::{CsvOptions, Record, RecordFormat};
 use rocking_codes::LimitState;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
 
 /// The keys of `[assessment]`.
-pub const ASSESSMENT_KEYS: &[&str] = &["confidence_factor", "q", "capacity", "records", "period_range", "free_after", "lambda"];
+pub const ASSESSMENT_KEYS: &[&str] = &[
+    "confidence_factor",
+    "q",
+    "capacity",
+    "records",
+    "units",
+    "dt",
+    "period_range",
+    "free_after",
+    "lambda",
+];
 /// The sections of an assessment file besides a scenario's (less `[ground]`).
 pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment"];
 
@@ -60,6 +70,10 @@ pub struct AssessmentFile {
     pub capacity: Capacity,
     /// The record files of the set, relative to the file's folder, in order; empty without a set.
     pub records: Vec<String>,
+    /// `units` and `dt` of the set's CSV records (as `[ground]` takes them for a CSV record).
+    pub csv: CsvOptions,
+    /// `units` and `dt` as written, for the `[ground]` of each CSV record of the set.
+    csv_keys: Table,
     /// The fitting range (s), if given.
     pub period_range: Option<(f64, f64)>,
     /// Seconds run after each record (≥ 0).
@@ -136,6 +150,16 @@ impl AssessmentFile {
             Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?,
             None => Vec::new(),
         };
+        let units = a.choice("units", &crate::ground::ACCELERATION_UNITS)?;
+        let dt = a.number("dt")?.map(|dt| positive("assessment.dt", dt)).transpose()?;
+        let csv = CsvOptions {
+            units: units.unwrap_or_default(),
+            dt,
+        };
+        let csv_keys: Table = ["units", "dt"]
+            .into_iter()
+            .filter_map(|k| a.get(k).map(|v| (k.to_string(), v.clone())))
+            .collect();
         let period_range = match a.get("period_range") {
             None => None,
             Some(v) => Some(pair("assessment.period_range", v)?),
@@ -172,6 +196,8 @@ impl AssessmentFile {
             q,
             capacity,
             records,
+            csv,
+            csv_keys,
             period_range,
             free_after,
             lambda,
@@ -190,16 +216,39 @@ impl AssessmentFile {
         self.origin.parent().unwrap_or(Path::new(""))
     }
 
-    /// Reads the record set (m/s²), each record as `[ground]` would read it, format guessed.
+    /// Reads the record set (m/s²), each record as `[ground]` would read it,
+    /// format guessed, a CSV record with the set's `units` and `dt`.
     pub fn read_records(&self) -> Result<Vec<(String, Record)>, Error> {
         self.records
             .iter()
             .map(|path| {
-                read_record(&self.folder().join(path), self.g)
+                read_record_with(&self.folder().join(path), &self.csv, self.g)
                     .map(|r| (path.clone(), r))
                     .map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))
             })
             .collect()
+    }
+}
+
+impl AssessmentFile {
+    /// The `[ground]` table of the record `path` of the set (relative to the
+    /// file's folder): `type = "record"`, its `file`, and, when it reads as a
+    /// CSV record (format guessed), the set's `units` and `dt` (an AT2 or ESM
+    /// file carries its own). An error names `assessment.records` and the file.
+    pub fn record_ground(&self, path: &str) -> Result<Table, Error> {
+        let mut ground = Table::new();
+        ground.insert("type".into(), Value::String("record".into()));
+        ground.insert("file".into(), Value::String(path.into()));
+        if !self.csv_keys.is_empty() {
+            let file = self.folder().join(path);
+            let text = read_record_text(&file).map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))?;
+            let format = Record::guess_format(&text)
+                .map_err(|source| Fault::new("assessment.records", ErrorKind::Record { path: file, source }).in_file(&self.origin))?;
+            if format == RecordFormat::Csv {
+                ground.extend(self.csv_keys.clone());
+            }
+        }
+        Ok(ground)
     }
 }
 
@@ -212,12 +261,19 @@ pub fn dynamic_limit_states(code: Code) -> [LimitState; 2] {
     }
 }
 
+/// The damping (% of critical) of the life-safety displacement spectrum in the
+/// non-linear kinematic check (Circolare §C8.7.1.2.1.8).
+pub const KINEMATIC_DAMPING_LIFE_SAFETY_PCT: f64 = 8.0;
+/// The damping (% of critical) of the collapse displacement spectrum in the
+/// non-linear kinematic check (Circolare §C8.7.1.2.1.8).
+pub const KINEMATIC_DAMPING_COLLAPSE_PCT: f64 = 10.0;
+
 /// The damping (%) of the non-linear kinematic check of a limit state
 /// (Circolare §C8.7.1.2.1.8): 8% at SLV (SD), 10% at SLC (NC); `None` for the others.
 pub fn kinematic_damping_pct(state: LimitState) -> Option<f64> {
     match state {
-        LimitState::Slv | LimitState::Sd => Some(8.0),
-        LimitState::Slc | LimitState::Nc => Some(10.0),
+        LimitState::Slv | LimitState::Sd => Some(KINEMATIC_DAMPING_LIFE_SAFETY_PCT),
+        LimitState::Slc | LimitState::Nc => Some(KINEMATIC_DAMPING_COLLAPSE_PCT),
         _ => None,
     }
 }
@@ -225,17 +281,28 @@ pub fn kinematic_damping_pct(state: LimitState) -> Option<f64> {
 /// Reads a record file as `[ground]` does with `format` guessed and no CSV
 /// options (values in g, `g` in m/s²), or what is wrong with it.
 pub fn read_record(path: &Path, g: f64) -> Result<Record, ErrorKind> {
-    let text = std::fs::read_to_string(path).map_err(|e| ErrorKind::Read {
+    read_record_with(path, &CsvOptions::default(), g)
+}
+
+/// The text of a record file, or what is wrong with it.
+fn read_record_text(path: &Path) -> Result<String, ErrorKind> {
+    crate::file::read_text(path, crate::ground::MAX_RECORD_BYTES).map_err(|e| ErrorKind::Read {
         path: path.to_path_buf(),
         reason: crate::error::io_reason(&e),
         os_error: e.raw_os_error(),
-    })?;
+    })
+}
+
+/// Reads a record file as `[ground]` does with `format` guessed and, for a
+/// CSV file, the options `csv`.
+fn read_record_with(path: &Path, csv: &CsvOptions, g: f64) -> Result<Record, ErrorKind> {
+    let text = read_record_text(path)?;
     let record = |source| ErrorKind::Record {
         path: path.to_path_buf(),
         source,
     };
     let format = Record::guess_format(&text).map_err(record)?;
-    Record::parse(&text, Some(format), &CsvOptions::default(), g).map_err(record)
+    Record::parse(&text, Some(format), csv, g).map_err(record)
 }
 
 /// A `[from, to]` pair of finite numbers.
