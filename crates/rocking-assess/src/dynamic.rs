@@ -157,6 +157,12 @@ impl RecordSet {
                                 _ => "assessment.records",
                             };
                             e.fault.key = Some(key.into());
+                            // The message names the record (that of a file that
+                            // cannot be read does; one of the case built on it may not).
+                            let name = path.rsplit('/').next().unwrap_or(path);
+                            if !e.fault.kind.to_string().contains(name) {
+                                e.fault.kind = rocking_scenario::ErrorKind::Invalid(format!("{path}: {}", e.fault.kind));
+                            }
                             e
                         })
                 };

@@ -9,12 +9,12 @@ use serde_json::Value;
 /// The tests' tower (b = 2 m, h = 6 m) on the assessment file's example site,
 /// subsoil B, shared with the tests of rocking-assess and of Python; its
 /// `[assessment]` is the last table, to which a test appends the record set.
-fn tower_on_b() -> String {
+pub fn tower_on_b() -> String {
     read(&root().join("crates/rocking-assess/tests/data/tower_on_b.toml"))
 }
 
 /// Copies the synthetic records kt_01–kt_03.AT2 into `dir/folder`.
-fn synthetic_records(dir: &std::path::Path, folder: &str) {
+pub fn synthetic_records(dir: &std::path::Path, folder: &str) {
     std::fs::create_dir_all(dir.join(folder)).unwrap_or_else(|e| panic!("{e}"));
     for k in 1..=3 {
         let text = read(&root().join(format!("data/records/synthetic/kt_0{k}.AT2")));
@@ -323,6 +323,6 @@ fn a_csv_record_set_takes_units_and_dt() {
 }
 
 /// The number of entries of a folder, 0 when it does not exist.
-fn files_in(folder: &std::path::Path) -> usize {
+pub fn files_in(folder: &std::path::Path) -> usize {
     std::fs::read_dir(folder).map_or(0, |entries| entries.count())
 }

@@ -12,6 +12,7 @@ mod guard;
 mod hardening;
 mod inventory;
 mod keys;
+mod regression_assess_record_fails_to_run;
 mod regression_concurrent_runs;
 mod regression_interrupted_sweep;
 mod regression_merge_bounds;

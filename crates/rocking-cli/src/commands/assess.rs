@@ -125,7 +125,8 @@ fn assess(args: &Args) -> anyhow::Result<()> {
         }
     }
     if let Some(g) = done.governing() {
-        lines.push(format!("governing: {} {}, ζ_E = {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
+        let relation = if g.ag_capacity.is_lower_bound() { "≥" } else { "=" };
+        lines.push(format!("governing: {} {}, ζ_E {relation} {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
     }
     lines.push(format!(
         "wrote {} in {} ({} s)",
@@ -133,5 +134,17 @@ fn assess(args: &Args) -> anyhow::Result<()> {
         dir.display(),
         sig(started.elapsed().as_secs_f64(), 3)
     ));
-    super::print(&(lines.join("\n") + "\n"))
+    super::print(&(lines.join("\n") + "\n"))?;
+    // A dynamic check that could not be completed gives no verdict: the files
+    // say so (its row's error, "completed": false), and so does the exit status.
+    if let Some(d) = done.dynamic.iter().find(|d| d.check.is_none()) {
+        anyhow::bail!(
+            "{}: assessment.records: the {} non-linear dynamic check could not be completed: {} (the other checks are in {})",
+            args.assessment.display(),
+            d.limit_state,
+            d.error.as_deref().unwrap_or("a record failed to run"),
+            dir.display()
+        );
+    }
+    Ok(())
 }
