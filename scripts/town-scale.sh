@@ -24,6 +24,7 @@ done
 root=$(pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+[ -z "${KEEP:-}" ] || trap - EXIT
 python3 - "$n" > "$work/towers.csv" <<'PY'
 import random, sys
 random.seed(28)
