@@ -109,6 +109,12 @@ fn tower_one_on_subsoil_b() {
     assert_relative_eq!(at(&checks[2]), slv, max_relative = TOL);
     assert_relative_eq!(checks[2].zeta_e, slv / 0.155, max_relative = TOL);
     assert_relative_eq!(checks[2].capacity, 0.8, max_relative = 1e-15);
+    // Its demand at the site's 0.155 g: TD = 4·0.155 + 1.6 = 2.22 s < T_SLV < TE = 5 s,
+    // so the running maximum is the plateau of SDe from TD to TE,
+    // ag S η F0 TC TD g / 4π² (SS = 1.2, clamped), 0.10798 m.
+    let plateau = |ag: f64, xi: f64, f0: f64, tc: f64| ag * 1.2 * eta(xi) * f0 * tc * (4.0 * ag + 1.6) * G / (4.0 * PI * PI);
+    assert_relative_eq!(checks[2].demand, plateau(0.155, 8.0, 2.47, tc), max_relative = 1e-13);
+    assert_relative_eq!(checks[2].demand, 0.10798, max_relative = 1e-4); // as written by hand
 
     // SLC non-linear: T_SLC = 5.45 s > TE = 5 s, and at the root TD > TE/(0.025·4π²):
     // the largest SDe up to T_SLC is just past TE, 0.025 ag S g TC TD F0 η, with
@@ -119,6 +125,10 @@ fn tower_one_on_subsoil_b() {
     assert!(4.0 * slc + 1.6 > 5.0 / (0.025 * 4.0 * PI * PI) && t_slc > 5.0);
     assert_relative_eq!(at(&checks[3]), slc, max_relative = TOL);
     assert_relative_eq!(checks[3].zeta_e, slc / 0.196, max_relative = TOL);
+    // Its demand at the site's 0.196 g: TD = 2.384 s is below TE/(0.025·4π²) = 5.07 s,
+    // so SDe drops at TE and the running maximum is the plateau before it (SS = 1.2).
+    assert_relative_eq!(checks[3].demand, plateau(0.196, 10.0, 2.50, tc), max_relative = 1e-13);
+    assert_relative_eq!(checks[3].capacity, 1.2, max_relative = 1e-15);
     assert!(checks.iter().all(|c| c.holds));
 }
 
