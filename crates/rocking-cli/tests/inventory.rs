@@ -87,19 +87,26 @@ fn assert_row_is_assess(header: &[String], row: &[String], expected: &(Vec<(Stri
     assert_eq!(cell(header, row, "error"), "");
 }
 
-#[test]
-fn every_tower_of_the_example_town_is_rocking_assess_of_it() {
-    let dir = tempdir();
-    let out = dir.path().join("out");
-    let r = rocking(&[
+/// `rocking inventory` of the example town into `out`, with `extra` arguments; it must succeed.
+fn example_town(out: &Path, extra: &[&str]) {
+    let mut args = vec![
         "inventory",
         "examples/town/towers.csv",
         "--assess",
         "examples/town/assess.toml",
         "--out",
-        arg(&out),
-    ]);
+        arg(out),
+    ];
+    args.extend(extra);
+    let r = rocking(&args);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
+}
+
+#[test]
+fn every_tower_of_the_example_town_is_rocking_assess_of_it() {
+    let dir = tempdir();
+    let out = dir.path().join("out");
+    example_town(&out, &[]);
     let (header, rows) = inventory_csv(&out);
     assert_eq!(rows.len(), 12);
     let grid = root().join("data/hazard/synthetic_grid.txt");
@@ -179,15 +186,7 @@ fn each_bad_row_gets_its_own_error_and_the_others_are_right() {
 fn the_geojson_reads_back_as_points_with_the_csv_properties() {
     let dir = tempdir();
     let out = dir.path().join("out");
-    let r = rocking(&[
-        "inventory",
-        "examples/town/towers.csv",
-        "--assess",
-        "examples/town/assess.toml",
-        "--out",
-        arg(&out),
-    ]);
-    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    example_town(&out, &[]);
     let (header, rows) = inventory_csv(&out);
     let parsed: geojson::GeoJson = read(&out.join("inventory.geojson")).parse().unwrap_or_else(|e| panic!("{e}"));
     let geojson::GeoJson::FeatureCollection(collection) = parsed else {
@@ -217,27 +216,14 @@ fn the_geojson_reads_back_as_points_with_the_csv_properties() {
 fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
     let dir = tempdir();
     let whole = dir.path().join("whole");
-    let inventory = |extra: &[&str], out: &Path| {
-        let mut args = vec![
-            "inventory",
-            "examples/town/towers.csv",
-            "--assess",
-            "examples/town/assess.toml",
-            "--out",
-            arg(out),
-        ];
-        args.extend(extra);
-        let r = rocking(&args);
-        assert_eq!(r.code, Some(0), "{}", r.stderr);
-    };
-    inventory(&[], &whole);
+    example_town(&whole, &[]);
     let bytes = |p: &Path| std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
     for n in [1, 3, 7] {
         let mut shards = Vec::new();
         // Given in reverse order: merge puts them back in row order.
         for k in (1..=n).rev() {
             let out = dir.path().join(format!("shards-{n}/{k}"));
-            inventory(&["--shard", &format!("{k}/{n}")], &out);
+            example_town(&out, &["--shard", &format!("{k}/{n}")]);
             // Shard k of n holds rows floor((k−1)·12/n) … floor(k·12/n) − 1.
             let rows = read(&out.join("inventory.csv")).lines().count() - 1;
             assert_eq!(rows, k * 12 / n - (k - 1) * 12 / n, "shard {k}/{n}");
@@ -262,16 +248,7 @@ fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
 fn details_write_each_towers_assessment_linked_from_the_report() {
     let dir = tempdir();
     let out = dir.path().join("out");
-    let r = rocking(&[
-        "inventory",
-        "examples/town/towers.csv",
-        "--assess",
-        "examples/town/assess.toml",
-        "--out",
-        arg(&out),
-        "--details",
-    ]);
-    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    example_town(&out, &["--details"]);
     let (header, rows) = inventory_csv(&out);
     let report = read(&out.join("report.html"));
     for row in &rows {

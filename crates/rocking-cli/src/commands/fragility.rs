@@ -153,13 +153,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         |cancel, sink| study.run_range(cases.clone(), threads, cancel, sink),
     )?;
     if done.cancelled {
-        staging.commit()?;
-        return Err(Interrupted {
-            written: done.written,
-            total: cases.len(),
-            csv: stripes_path,
-        }
-        .into());
+        return Err(Interrupted::keep(staging, done.written, cases.len(), stripes_path));
     }
     if let Some(shard) = args.shard {
         // The fits need every stripe: `rocking merge` makes them.
@@ -183,13 +177,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let interrupted = crate::signals::interrupted();
     let fits = tally.fits_until(interrupted);
     if interrupted.load(Ordering::Relaxed) {
-        staging.commit()?;
-        return Err(Interrupted {
-            written: done.written,
-            total: study.len(),
-            csv: stripes_path,
-        }
-        .into());
+        return Err(Interrupted::keep(staging, done.written, study.len(), stripes_path));
     }
     for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
         std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()))?;

@@ -514,13 +514,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let check_names = town.checks();
     let towers = town.finish()?;
     if done.cancelled {
-        staging.commit()?;
-        return Err(Interrupted {
-            written: done.written,
-            total: cases.len(),
-            csv: csv_path,
-        }
-        .into());
+        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path));
     }
     let mut part = String::new();
     if let Some(shard) = args.shard {

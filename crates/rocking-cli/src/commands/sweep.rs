@@ -72,6 +72,17 @@ impl fmt::Display for Interrupted {
 
 impl std::error::Error for Interrupted {}
 
+impl Interrupted {
+    /// Keeps the rows finished (moves the staging folder's files into place)
+    /// and returns the error that says how many of `total` were written.
+    pub fn keep(staging: output::Staging, written: usize, total: usize, csv: PathBuf) -> anyhow::Error {
+        match staging.commit() {
+            Ok(()) => Self { written, total, csv }.into(),
+            Err(e) => e,
+        }
+    }
+}
+
 /// Runs the sweep and writes `sweep.csv`.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
     let text = rocking_scenario::file::read_text(&args.sweep, rocking_scenario::file::MAX_INPUT_BYTES)
@@ -115,13 +126,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         |cancel, sink| sweep.run_range(cases.clone(), threads, cancel, sink),
     )?;
     if done.cancelled {
-        staging.commit()?;
-        return Err(Interrupted {
-            written: done.written,
-            total: cases.len(),
-            csv: csv_path,
-        }
-        .into());
+        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path));
     }
 
     let mut written = vec![SWEEP_CSV];
