@@ -22,11 +22,14 @@ for a dict): ``FileNotFoundError``/``OSError`` for a file that cannot be read
 
 from __future__ import annotations
 
+import json
 import os
 from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Union
 
+from ._rocking import DERIVED_JSON as _DERIVED_JSON
 from ._rocking import EVENT_COLUMNS as _EVENT_COLUMNS
 from ._rocking import HISTORY_COLUMNS as _HISTORY_COLUMNS
+from ._rocking import KEYS_JSON as _KEYS_JSON
 from ._rocking import Scenario, __version__
 from ._rocking import assess_raw as _assess_raw
 from ._rocking import derived as _derived
@@ -45,7 +48,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
+__all__ = ["DERIVED", "KEYS", "Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
@@ -55,6 +58,15 @@ HISTORY_COLUMNS = _HISTORY_COLUMNS
 
 EVENT_COLUMNS = _EVENT_COLUMNS
 """The keys of each event in :attr:`Result.events`, the columns of ``events.csv``."""
+
+KEYS: Sequence[Dict[str, Any]] = tuple(json.loads(_KEYS_JSON)["scenario"])
+"""Every key of a scenario, described as ``rocking keys --json`` describes it:
+``key`` (dotted), ``unit``, ``symbol``, ``label``, ``kind`` (``"number"``,
+``"string"``, …), ``default``, ``range``, ``meaning``, ``example``,
+``choices``, ``sweepable``; for a key of ``[ground]``, the ``types`` that take it."""
+
+DERIVED: Sequence[Dict[str, str]] = tuple(json.loads(_DERIVED_JSON))
+"""The quantities :func:`derived` returns, in order: ``name``, ``unit``, ``meaning``."""
 
 
 def _as_scenario(scenario: ScenarioLike) -> Scenario:
@@ -142,9 +154,10 @@ def run(scenario: ScenarioLike) -> Result:
 def derived(scenario: ScenarioLike) -> Dict[str, Optional[float]]:
     """The quantities derived from a scenario without running it (those ``rocking check`` prints).
 
-    Keys: ``alpha_rad``, ``R_m``, ``p_rad_s``, ``restitution``,
-    ``uplift_acceleration_g``, ``slip_acceleration_g`` (named as in the summary),
-    ``inertia_pivot_kg_m2``, ``tower_mass_kg``, ``sliding_mass_kg``, ``g_m_s2``;
+    Keys: those of :data:`DERIVED`, in its order (``g_m_s2``, ``alpha_rad``,
+    ``alpha_deg``, ``R_m``, ``p_rad_s``, ``restitution``, ``inertia_pivot_kg_m2``,
+    ``tower_mass_kg``, ``sliding_mass_kg``, ``uplift_acceleration_g``,
+    ``slip_acceleration_g``; named as in the summary where it has them);
     ``None`` for a quantity of an absent body.
     """
     return _derived(_as_scenario(scenario))

@@ -10,6 +10,10 @@ HISTORY_COLUMNS: Tuple[str, ...]
 """The float64 columns of the history before ``regime`` and the extra points (from the library's column list)."""
 EVENT_COLUMNS: Tuple[str, ...]
 """The keys of each event, the columns of ``events.csv`` (from the library's column list)."""
+KEYS_JSON: str
+"""Every key's description, as ``rocking keys --json`` prints it."""
+DERIVED_JSON: str
+"""The derived quantities' descriptions: ``[{"name", "unit", "meaning"}, …]``."""
 
 # Errors, one exception per kind, each with the one-line message of the command:
 #   FileNotFoundError / OSError  a file cannot be read (the scenario, a sweep file, a record)

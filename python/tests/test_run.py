@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 import rocking
 
-from conftest import EXAMPLES, cli_run, example_files, flatten, seconds_to_interrupt
+from conftest import EXAMPLES, cli_run, example_files, flatten, run_cli, seconds_to_interrupt
 
 SCENARIOS = example_files(sweeps=False)
 FLOAT_COLUMNS = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc"]
@@ -150,3 +151,28 @@ def test_ctrl_c_stops_a_run() -> None:
 
     elapsed = seconds_to_interrupt(lambda: rocking.run(d))
     assert elapsed < 2.0, f"the run stopped {elapsed:.2f} s after it started (about 5 s of work, SIGINT at 0.3 s)"
+
+
+def test_keys_are_those_the_command_describes(cli: Path) -> None:
+    """``rocking.KEYS`` is every scenario key of ``rocking keys --json``, in
+    order, with the same description; a hand-checked sample of symbols and
+    units (the key reference's)."""
+    described = json.loads(run_cli(cli, "keys", "--json").stdout)["scenario"]
+    assert [k["key"] for k in rocking.KEYS] == [k["key"] for k in described]
+    assert list(rocking.KEYS) == described
+    by_key = {k["key"]: k for k in rocking.KEYS}
+    assert (by_key["tower.width"]["symbol"], by_key["tower.width"]["unit"]) == ("B", "m")
+    assert (by_key["ground.phase"]["symbol"], by_key["ground.phase"]["unit"]) == ("φ", "rad")
+    assert by_key["building.normal_force"]["choices"] == ["constant", "dynamic"]
+    assert by_key["tower.points"]["sweepable"] is False
+
+
+def test_derived_returns_every_described_quantity() -> None:
+    """``rocking.derived`` returns the quantities ``rocking.DERIVED``
+    describes, in order; α in degrees is α in radians converted."""
+    d = rocking.derived(EXAMPLES / "tower-on-church.toml")
+    assert list(d) == [q["name"] for q in rocking.DERIVED]
+    assert len(d) == 11
+    assert d["alpha_deg"] == pytest.approx(math.degrees(math.atan(1 / 3)), rel=1e-15)
+    units = {q["name"]: q["unit"] for q in rocking.DERIVED}
+    assert (units["R_m"], units["inertia_pivot_kg_m2"], units["uplift_acceleration_g"]) == ("m", "kg·m²", "g")

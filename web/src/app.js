@@ -12,67 +12,51 @@ import examples, { records } from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
 
-// The form: every key of the scenario file (docs/src/reference/keys.md), per section. `d` is the
-// default shown as a placeholder (an empty field is an absent key).
-const FIELDS = {
-  tower: [
-    { k: "section", t: "select", o: ["solid", "hollow"] },
-    { k: "width", u: "m" },
-    { k: "height", u: "m" },
-    { k: "mass", u: "kg" },
-    { k: "density", u: "kg/m³" },
-    { k: "depth", u: "m", d: "= width" },
-    { k: "wall_thickness", u: "m" },
-    { k: "inertia_pivot", u: "kg·m²", d: "the section's" },
-    { k: "restitution", d: "Housner's" },
-  ],
-  building: [
-    { k: "mass", u: "kg" },
-    { k: "mu_static", u: "μs" },
-    { k: "mu_kinetic", u: "μk", d: "= μs" },
-    { k: "normal_force", t: "select", o: ["constant", "dynamic"] },
-  ],
-  ground: [
-    { k: "type", t: "select", o: ["harmonic", "sine-pulse", "cosine-pulse", "rectangular-pulse", "ricker", "record", "none"] },
-    { k: "amplitude", u: "g" },
-    { k: "amplitude_ratio", u: "/ tan α" },
-    { k: "frequency", u: "Hz" },
-    { k: "frequency_ratio", u: "ω / p" },
-    { k: "duration", u: "s" },
-    { k: "phase", u: "rad", d: "0" },
-    { k: "t0", u: "s", d: "1.5 / f" },
-    { k: "format", t: "select", o: ["", "at2", "esm", "csv"] },
-    { k: "scale", d: "1" },
-    { k: "units", t: "select", o: ["", "g", "m/s2", "cm/s2"] },
-    { k: "dt", u: "s" },
-  ],
-  // [ground.vertical]: the vertical ground acceleration, positive upwards,
-  // with the types and keys of [ground] (filled in below).
-  "ground.vertical": [],
-  initial: [
-    { k: "theta", u: "rad", d: "0" },
-    { k: "theta_over_alpha", d: "0" },
-    { k: "theta_dot", u: "rad/s", d: "0" },
-  ],
-  simulation: [
-    { k: "duration", u: "s", d: "20" },
-    { k: "g", u: "m/s²", d: "9.81" },
-    { k: "output_dt", u: "s", d: "0.005" },
-    { k: "rtol", d: "1e-8" },
-    { k: "atol", d: "1e-10" },
-  ],
-};
-// The keys of each ground type (crates/rocking-scenario/src/ground.rs).
-const GROUND_KEYS = {
-  none: ["type"],
-  harmonic: ["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "duration", "phase"],
-  "sine-pulse": ["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio"],
-  "cosine-pulse": ["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio"],
-  "rectangular-pulse": ["type", "amplitude", "amplitude_ratio", "duration"],
-  ricker: ["type", "amplitude", "amplitude_ratio", "frequency", "frequency_ratio", "t0"],
-  record: ["type", "file", "text", "format", "scale", "units", "dt"],
-};
-FIELDS["ground.vertical"] = FIELDS.ground;
+// The form: the keys of the scenario file that have a field, per section, as
+// { k: name, u: unit or symbol, d: placeholder, t: "select", o: options };
+// and the keys each ground type takes. Both are read at load from the keys'
+// description (the engine's `keys()`, as `rocking keys --json` prints it;
+// crates/rocking-scenario/src/keys.rs), by formFields().
+let FIELDS = {};
+let GROUND_KEYS = {};
+// The keys' descriptions by dotted key.
+let keyInfo = new Map();
+// A choice that decides which of its section's fields apply leads the section.
+const LEADS = ["tower.section"];
+
+/** What is shown beside a key's field: its unit, or a dimensionless number's symbol (`μs`) unless that is its name. */
+function shownUnit(k) {
+  return k.unit || (k.kind === "number" && k.symbol !== k.name ? k.symbol : "");
+}
+
+/** The description of a dotted key; a key of the vertical motion is described by [ground]'s. */
+function describeKey(key) {
+  return keyInfo.get(key) || keyInfo.get(key.replace(/^ground\.vertical\./, "ground."));
+}
+
+/**
+ * The form's fields and each ground type's keys, from the keys' description:
+ * the numbers and strings of each section that have a field (`on_form`), in
+ * the description's order; a table (`ground.vertical`) is a section of its
+ * own with the fields of the section it is in.
+ */
+function formFields(keys) {
+  const fields = {};
+  const groundKeys = {};
+  for (const k of keys) {
+    if (k.section === null) continue;
+    for (const type of k.types || []) (groundKeys[type] ??= []).push(k.name);
+    fields[k.section] ??= [];
+    if (k.kind === "table") fields[k.key] = k.section;
+    if (!k.on_form || !k.sweepable) continue;
+    const f = { k: k.name, u: shownUnit(k), d: k.placeholder };
+    if (k.choices.length) Object.assign(f, { t: "select", o: k.placeholder ? ["", ...k.choices] : k.choices, u: "" });
+    if (LEADS.includes(k.key)) fields[k.section].unshift(f);
+    else fields[k.section].push(f);
+  }
+  for (const [section, v] of Object.entries(fields)) if (typeof v === "string") fields[section] = fields[v];
+  return { fields, groundKeys };
+}
 const OPTIONAL_SECTIONS = ["tower", "building", "ground.vertical", "initial"];
 // A vertical motion switched on from the form starts as this one.
 const VERTICAL_START = { type: "harmonic", amplitude: 0.2, frequency: 8.0 };
@@ -206,7 +190,7 @@ function field(section, f, value) {
   let input;
   if (f.t === "select") {
     input = document.createElement("select");
-    for (const o of f.o) input.append(new Option(o === "" ? "(guess)" : o, o));
+    for (const o of f.o) input.append(new Option(o === "" ? `(${f.d})` : o, o));
     input.value = value === undefined ? f.o[0] : String(value);
   } else {
     input = document.createElement("input");
@@ -424,7 +408,7 @@ function flatten(obj, prefix = "", out = []) {
   return out;
 }
 
-// The summary's fields as the outputs reference describes them (name → { unit, meaning }).
+// The summary's fields as the outputs reference describes them, and the derived quantities (name → { unit, meaning }).
 let fieldInfo = new Map();
 
 /** A field's plain-language label: its meaning from the outputs reference, else its key. */
@@ -597,7 +581,9 @@ function loadRecord(name, text) {
   } else {
     const ground = scenario.ground || {};
     const keep = {};
-    for (const k of ["format", "scale", "units", "dt"]) if (ground.type === "record" && ground[k] !== undefined) keep[k] = ground[k];
+    // The record's own fields (format, scale, units, dt).
+    const own = FIELDS.ground.map((f) => f.k).filter((k) => k !== "type" && GROUND_KEYS.record.includes(k));
+    for (const k of own) if (ground.type === "record" && ground[k] !== undefined) keep[k] = ground[k];
     // A vertical motion stays: the record is the horizontal one.
     scenario.ground = { type: "record", text, ...keep, ...(ground.vertical ? { vertical: ground.vertical } : {}) };
   }
@@ -727,9 +713,9 @@ function sweepEstimate(axes) {
 
 /** An axis's name with its unit (the form's), e.g. "ground.frequency (Hz)". */
 function axisLabel(key) {
-  const dot = key.lastIndexOf(".");
-  const f = FIELDS[key.slice(0, dot)]?.find((f) => f.k === key.slice(dot + 1));
-  return f?.u ? `${key} (${f.u})` : key;
+  const k = describeKey(key);
+  const unit = k ? shownUnit(k) : "";
+  return unit ? `${key} (${unit})` : key;
 }
 
 function drawSweep() {
@@ -828,9 +814,12 @@ async function main() {
     showError(`the engine did not load: ${e.message}`);
     return;
   }
-  const skip = ["name", "tower.section", "ground.type", "ground.file", "ground.text", "ground.format", "ground.units", "building.normal_force"];
-  numericKeys = (await rocking.sweepableKeys()).filter((k) => !skip.includes(k));
-  fieldInfo = new Map((await rocking.summaryFields()).map((f) => [f.name, f]));
+  const keys = (await rocking.keys()).scenario;
+  keyInfo = new Map(keys.map((k) => [k.key, k]));
+  ({ fields: FIELDS, groundKeys: GROUND_KEYS } = formFields(keys));
+  // The axes of the page's sweep are numbers.
+  numericKeys = (await rocking.sweepableKeys()).filter((k) => describeKey(k)?.kind === "number");
+  fieldInfo = new Map([...(await rocking.derivedFields()), ...(await rocking.summaryFields())].map((f) => [f.name, f]));
   setAxes({ "ground.frequency": { from: 3, to: 7, steps: 21 }, "ground.amplitude": { from: 0.5, to: 2, steps: 4 } });
   // The assess tab: an assessment file's tower, building and name go into the form (the ground stays).
   assessView = new AssessView($("assess"), {

@@ -207,7 +207,11 @@ export const rocking = {
   fromToml,
   toToml,
   sweepableKeys: () => ready.then(() => JSON.parse(engine.sweepableKeys())),
+  /** Every key's description, as `rocking keys --json` prints it: { scenario: [{ key, unit, symbol, … }], assessment: […] }. */
+  keys: () => ready.then(() => JSON.parse(engine.keys())),
   /** The summary's fields as the outputs reference describes them: [{ name, unit, meaning }]. */
   summaryFields: () => ready.then(() => JSON.parse(engine.summaryFields())),
+  /** The derived quantities of check() described: [{ name, unit, meaning }]. */
+  derivedFields: () => ready.then(() => JSON.parse(engine.derivedFields())),
 };
 window.rocking = rocking;

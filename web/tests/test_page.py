@@ -220,3 +220,38 @@ def test_screenshot(page):
         page.wait_for_timeout(300)
         page.screenshot(path=str(OUT / name))
         assert (OUT / name).stat().st_size > 10_000
+
+
+def test_the_form_has_a_field_for_every_described_key(page):
+    """The form is built from the keys' description (`rocking keys --json`):
+    every number or string key with a field (`on_form`) has one, in every
+    section and for each ground type that takes it, with its unit (or a
+    dimensionless number's symbol) beside it; a hand-checked sample."""
+    described = json.loads(subprocess.run([BIN, "keys", "--json"], check=True, capture_output=True, text=True).stdout)["scenario"]
+    on_form = [k for k in described if k["on_form"] and k["kind"] in ("number", "string") and k["section"]]
+    assert len(on_form) == 33, [k["key"] for k in on_form]
+    page.locator('[id="has-initial"]').check()
+
+    def unit_of(key):
+        return page.locator(f'[name="{key}"]').locator("xpath=..").locator(".unit").text_content()
+
+    for k in on_form:
+        if k["section"] != "ground":
+            expect(page.locator(f'[name="{k["key"]}"]')).to_have_count(1)
+    for type_name in ["harmonic", "sine-pulse", "cosine-pulse", "rectangular-pulse", "ricker", "record", "none"]:
+        page.select_option('select[name="ground.type"]', type_name)
+        for k in on_form:
+            if k["section"] == "ground":
+                expect(page.locator(f'[name="{k["key"]}"]')).to_have_count(1 if type_name in k["types"] else 0)
+        if type_name == "record":
+            assert unit_of("ground.dt") == "s"
+            options = page.locator('select[name="ground.format"] option').all_text_contents()
+            assert options == ["(guess)", "at2", "esm", "csv"]
+        if type_name == "ricker":
+            assert page.locator('[name="ground.t0"]').get_attribute("placeholder") == "1.5 / f"
+    assert [unit_of(key) for key in ["tower.density", "building.mu_static", "initial.theta_dot", "simulation.g"]] == ["kg/m³", "μs", "rad/s", "m/s²"]
+    assert page.locator('[name="tower.depth"]').get_attribute("placeholder") == "= width"
+    # The tower's section leads its fields; the others follow the description's order.
+    names = page.locator("#form fieldset").first.locator("[name]").evaluate_all("els => els.map(e => e.name)")
+    assert names == ["tower.section", "tower.width", "tower.height", "tower.mass", "tower.density", "tower.depth",
+                     "tower.wall_thickness", "tower.inertia_pivot", "tower.restitution"]

@@ -29,6 +29,9 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let (history, events) = run::column_names();
     m.add("HISTORY_COLUMNS", pyo3::types::PyTuple::new(m.py(), history)?)?;
     m.add("EVENT_COLUMNS", pyo3::types::PyTuple::new(m.py(), events)?)?;
+    // The descriptions of the keys and of the derived quantities, as JSON text the package reads.
+    m.add("KEYS_JSON", rocking_scenario::keys_json().to_string())?;
+    m.add("DERIVED_JSON", rocking_scenario::columns::derived_json().to_string())?;
     m.add_class::<scenario::PyScenario>()?;
     m.add_function(wrap_pyfunction!(run::run_raw, m)?)?;
     m.add_function(wrap_pyfunction!(run::derived, m)?)?;

@@ -8,7 +8,7 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use rocking::{Event, Flow, Halt, History, Observer, Step};
-use rocking_scenario::columns::{Layout, Read, Value, EVENTS, HISTORY, HISTORY_POINTS};
+use rocking_scenario::columns::{Layout, Read, Value, DERIVED, EVENTS, HISTORY, HISTORY_POINTS};
 use rocking_scenario::{Outcome, RunOptions};
 use std::time::{Duration, Instant};
 
@@ -146,29 +146,15 @@ pub fn column_names() -> (Vec<&'static str>, Vec<&'static str>) {
 }
 
 /// The quantities derived from a scenario without running it (what `rocking
-/// check` prints): `alpha_rad`, `R_m`, `p_rad_s`, `restitution`,
-/// `uplift_acceleration_g`, `slip_acceleration_g` (named as in `summary.json`),
-/// `inertia_pivot_kg_m2`, `tower_mass_kg`, `sliding_mass_kg`, `g_m_s2`.
-/// A quantity of an absent body is `None`.
+/// check` prints), named and ordered as `rocking_scenario::columns::DERIVED`
+/// describes them (`alpha_rad`, `R_m`, … as in `summary.json`). A quantity of
+/// an absent body is `None`.
 #[pyfunction]
 pub fn derived<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyResult<Bound<'py, PyDict>> {
     let model = scenario.get().scenario().model();
-    let d = model.derived();
     let out = PyDict::new(py);
-    let items: [(&str, Option<f64>); 10] = [
-        ("alpha_rad", d.alpha),
-        ("R_m", d.radius),
-        ("p_rad_s", d.p),
-        ("restitution", d.restitution),
-        ("uplift_acceleration_g", d.uplift_acceleration_g),
-        ("slip_acceleration_g", d.slip_acceleration_g),
-        ("inertia_pivot_kg_m2", d.inertia_pivot),
-        ("tower_mass_kg", d.tower_mass),
-        ("sliding_mass_kg", d.sliding_mass),
-        ("g_m_s2", Some(model.gravity())),
-    ];
-    for (key, value) in items {
-        out.set_item(key, value)?;
+    for q in DERIVED {
+        out.set_item(q.name, (q.value)(model))?;
     }
     Ok(out)
 }

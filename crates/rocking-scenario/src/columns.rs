@@ -583,6 +583,107 @@ pub const WALL_TIME: Field = Field {
     read: |_| Cell::Empty,
 };
 
+/// A quantity derived from a scenario without running it: what `rocking
+/// check` prints, what `rocking.derived` returns in Python and the page shows
+/// beside the summary. Those the summary also holds have its name, unit and
+/// meaning (a test checks it).
+#[derive(Clone, Copy)]
+pub struct DerivedQuantity {
+    /// Key, named as in `summary.json` where the summary has it.
+    pub name: &'static str,
+    /// SI unit (`g` for an acceleration in units of gravity), empty for a ratio.
+    pub unit: &'static str,
+    /// What it is.
+    pub meaning: &'static str,
+    /// Its value for a model; `None` for a quantity of an absent body.
+    pub value: fn(&rocking::Model) -> Option<f64>,
+}
+
+impl std::fmt::Debug for DerivedQuantity {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("DerivedQuantity").field("name", &self.name).finish_non_exhaustive()
+    }
+}
+
+/// The quantities derived from a scenario without running it, in order.
+pub const DERIVED: &[DerivedQuantity] = &[
+    DerivedQuantity {
+        name: "g_m_s2",
+        unit: "m/s²",
+        meaning: "gravity g",
+        value: |m| Some(m.gravity()),
+    },
+    DerivedQuantity {
+        name: "alpha_rad",
+        unit: "rad",
+        meaning: "slenderness angle α of the tower",
+        value: |m| m.derived().alpha,
+    },
+    DerivedQuantity {
+        name: "alpha_deg",
+        unit: "°",
+        meaning: "slenderness angle α of the tower, in degrees",
+        value: |m| m.derived().alpha.map(f64::to_degrees),
+    },
+    DerivedQuantity {
+        name: "R_m",
+        unit: "m",
+        meaning: "distance R from a base corner to the centre of mass",
+        value: |m| m.derived().radius,
+    },
+    DerivedQuantity {
+        name: "p_rad_s",
+        unit: "rad/s",
+        meaning: "frequency parameter p of the tower",
+        value: |m| m.derived().p,
+    },
+    DerivedQuantity {
+        name: "restitution",
+        unit: "",
+        meaning: "coefficient of restitution r of an impact",
+        value: |m| m.derived().restitution,
+    },
+    DerivedQuantity {
+        name: "inertia_pivot_kg_m2",
+        unit: "kg·m²",
+        meaning: "moment of inertia I_O of the tower about a base corner",
+        value: |m| m.derived().inertia_pivot,
+    },
+    DerivedQuantity {
+        name: "tower_mass_kg",
+        unit: "kg",
+        meaning: "mass m2 of the tower",
+        value: |m| m.derived().tower_mass,
+    },
+    DerivedQuantity {
+        name: "sliding_mass_kg",
+        unit: "kg",
+        meaning: "mass M that slides on the foundation: the building and the tower it carries",
+        value: |m| m.derived().sliding_mass,
+    },
+    DerivedQuantity {
+        name: "uplift_acceleration_g",
+        unit: "g",
+        meaning: "ground acceleration that lifts the tower from rest",
+        value: |m| m.derived().uplift_acceleration_g,
+    },
+    DerivedQuantity {
+        name: "slip_acceleration_g",
+        unit: "g",
+        meaning: "ground acceleration that makes the building slip from rest",
+        value: |m| m.derived().slip_acceleration_g,
+    },
+];
+
+/// The derived quantities' descriptions as JSON, in order: `[{ name, unit, meaning }, …]`
+/// (the page's labels, the Python package's `rocking.DERIVED`).
+pub fn derived_json() -> serde_json::Value {
+    DERIVED
+        .iter()
+        .map(|q| serde_json::json!({ "name": q.name, "unit": q.unit, "meaning": q.meaning }))
+        .collect()
+}
+
 /// The header of `history.csv` for `layout`, from `columns` and `points`.
 pub fn history_header(columns: &[Column<Sample>], points: &[PointColumn], layout: &Layout) -> Vec<String> {
     let mut header: Vec<String> = columns.iter().filter(|c| (c.present)(layout)).map(|c| c.name.to_string()).collect();
@@ -771,6 +872,38 @@ mod tests {
                 assert!(ok, "{}: {:?} is not a {:?}", f.name, cell, f.kind);
             }
         }
+    }
+
+    /// A derived quantity the summary also holds has the summary's name,
+    /// unit and meaning, and the summary's value bit for bit; the others are
+    /// checked by hand on the tower on its church (4 m × 12 m, 1.5e5 kg,
+    /// solid: I_O = (m2/3)(B² + H²); the church 2.0e6 kg).
+    #[test]
+    fn the_derived_quantities_agree_with_the_summary() {
+        let text = format!("[tower]\nwidth = 4\nheight = 12.0\nmass = 1.5e5\n[building]\nmass = 2.0e6\nmu_static = 0.3\n{GROUND}");
+        let case = Scenario::from_toml_str(&text, Path::new("t.toml"))
+            .and_then(|s| s.build())
+            .unwrap_or_else(|e| panic!("{e}"));
+        let o = case.run(RunOptions::ALL).unwrap_or_else(|e| panic!("{e}"));
+        let mut shared = 0;
+        for q in DERIVED {
+            let value = (q.value)(&case.model);
+            if let Some(f) = SUMMARY.iter().find(|f| f.name == q.name) {
+                shared += 1;
+                assert_eq!((f.unit, f.meaning), (q.unit, q.meaning), "{}", q.name);
+                let Cell::Float(x) = (f.read)(&o) else { panic!("{}", q.name) };
+                assert_eq!(value.map(f64::to_bits), Some(x.to_bits()), "{}", q.name);
+            }
+        }
+        assert_eq!(shared, 6);
+        let of = |name: &str| DERIVED.iter().find(|q| q.name == name).and_then(|q| (q.value)(&case.model));
+        // Exact products and sums of exact decimals, to a few roundings.
+        let close = |name: &str, expected: f64| assert!(of(name).is_some_and(|v| (v - expected).abs() <= 1e-15 * expected), "{name}: {:?}", of(name));
+        close("inertia_pivot_kg_m2", 1.5e5 / 3.0 * (16.0 + 144.0));
+        close("tower_mass_kg", 1.5e5);
+        close("sliding_mass_kg", 2.15e6);
+        close("g_m_s2", 9.81);
+        close("alpha_deg", (1.0f64 / 3.0).atan().to_degrees());
     }
 
     #[test]

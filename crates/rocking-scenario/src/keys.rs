@@ -313,7 +313,7 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "as amplitude; needs a [tower]",
         "A / tan α: the amplitude as a multiple of the tower's uplift acceleration g tan α.",
         "1.5",
-    ).shown("a_p/(g tan α)", "amplitude ratio a_p/(g tan α)"),
+    ).shown("A/tan α", "amplitude ratio a_p/(g tan α)"),
     key(
         "ground.frequency",
         Number,

@@ -153,6 +153,15 @@ pub fn sweepable_keys() -> String {
     json!(*rocking_scenario::SWEEPABLE_KEYS).to_string()
 }
 
+/// Every key's description, as `rocking keys --json` prints it: the JSON text
+/// of `{ scenario: [{ key, section, name, kind, unit, symbol, label, default,
+/// placeholder, range, meaning, example, choices, sweepable, on_form, types? }, …],
+/// assessment: […] }`. The page builds its form from it.
+#[wasm_bindgen]
+pub fn keys() -> String {
+    rocking_scenario::keys_json().to_string()
+}
+
 /// The summary's fields as the outputs reference describes them: the JSON
 /// text of `[{ name, unit, meaning }, …]`, in the order of `summary.json`
 /// (dotted names for nested ones), `wall_time_s` last. The page labels its
@@ -165,6 +174,14 @@ pub fn summary_fields_json() -> String {
         .map(|f| json!({ "name": f.name, "unit": f.unit, "meaning": f.meaning }))
         .collect();
     Value::Array(fields).to_string()
+}
+
+/// The quantities of [`check`] that the summary may lack, described: the
+/// JSON text of `[{ name, unit, meaning }, …]` (`rocking_scenario::columns::DERIVED`).
+/// The page labels its table of derived quantities with them.
+#[wasm_bindgen(js_name = derivedFields)]
+pub fn derived_fields() -> String {
+    rocking_scenario::columns::derived_json().to_string()
 }
 
 /// See [`summary_fields_json`].

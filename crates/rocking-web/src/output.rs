@@ -8,7 +8,7 @@
 //! [`rocking_scenario::summary_json`] as is.
 
 use rocking::NormalForce;
-use rocking_scenario::columns::{history_header, Read, Value as CellValue, EVENTS, HISTORY, HISTORY_POINTS};
+use rocking_scenario::columns::{history_header, Read, Value as CellValue, DERIVED, EVENTS, HISTORY, HISTORY_POINTS};
 use rocking_scenario::{record_format_name, summary_json, Case, Cell, Outcome};
 use serde_json::{json, Map, Value};
 
@@ -111,12 +111,12 @@ fn events(outcome: &Outcome) -> Value {
 }
 
 /// The quantities `rocking check` prints, named as in `summary.json` where
-/// they appear there (`null` for an absent body): the tower's, the
-/// building's, the ground motion's and the record's.
+/// they appear there (`null` for an absent body): the name, the derived
+/// quantities ([`DERIVED`]), the points, the building's, the ground motion's
+/// and the record's.
 pub fn check(case: &Case) -> Value {
     let model = &case.model;
     let g = model.gravity();
-    let d = model.derived();
     let building = model.building().map(|b| {
         json!({
             "mass_kg": b.mass(),
@@ -139,22 +139,16 @@ pub fn check(case: &Case) -> Value {
         })
     });
     let (peak, peak_time) = case.ground.peak();
-    json!({
-        "name": case.name,
-        "g_m_s2": g,
-        "alpha_rad": d.alpha,
-        "alpha_deg": d.alpha.map(f64::to_degrees),
-        "R_m": d.radius,
-        "p_rad_s": d.p,
-        "restitution": d.restitution,
-        "inertia_pivot_kg_m2": d.inertia_pivot,
-        "tower_mass_kg": d.tower_mass,
-        "sliding_mass_kg": d.sliding_mass,
-        "uplift_acceleration_g": d.uplift_acceleration_g,
-        "slip_acceleration_g": d.slip_acceleration_g,
-        "points": case.points,
-        "building": building,
-        "ground": {
+    let mut out = Map::new();
+    out.insert("name".into(), json!(case.name));
+    for q in DERIVED {
+        out.insert(q.name.into(), json!((q.value)(model)));
+    }
+    out.insert("points".into(), json!(case.points));
+    out.insert("building".into(), json!(building));
+    out.insert(
+        "ground".into(),
+        json!({
             "type": info.kind.as_str(),
             "amplitude_g": info.amplitude_g,
             "frequency_hz": info.frequency_hz,
@@ -164,8 +158,9 @@ pub fn check(case: &Case) -> Value {
             "peak_acceleration_g": peak / g,
             "peak_time_s": peak_time,
             "record": record,
-        },
-    })
+        }),
+    );
+    Value::Object(out)
 }
 
 /// A sweep cell as JSON (`null` for an empty one).

@@ -236,4 +236,37 @@ fn a_grid_site_on_a_node_is_the_nodes_values_interpolated_in_the_return_period()
     assert!(e.starts_with("site.lon: "), "{e}");
     let e = grid_site_json(GRID, 14.30, 40.95, -1.0, 1.0).err().unwrap_or_default();
     assert!(e.starts_with("site.VN: "), "{e}");
+
+/// The page's description of the keys is every key of the scenario table,
+/// in order, with a hand-checked sample of what its form shows (units,
+/// choices, the types of [ground] that take a key).
+#[test]
+fn the_keys_are_every_scenario_key() {
+    let described = parsed(&keys());
+    let keys: Vec<&str> = described["scenario"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|k| k["key"].as_str())
+        .collect();
+    let table: Vec<&str> = rocking_scenario::SCENARIO_KEYS.iter().map(|k| k.key).collect();
+    assert_eq!(keys, table);
+    let of = |key: &str| {
+        described["scenario"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .find(|k| k["key"] == key)
+            .cloned()
+            .unwrap_or_default()
+    };
+    assert_eq!(
+        (of("tower.density")["unit"].clone(), of("tower.density")["on_form"].clone()),
+        (json!("kg/m³"), json!(true))
+    );
+    assert_eq!(of("tower.alpha")["on_form"], json!(false));
+    assert_eq!(of("building.normal_force")["choices"], json!(["constant", "dynamic"]));
+    assert_eq!(of("ground.t0")["types"], json!(["ricker"]));
+    assert_eq!(of("ground.t0")["placeholder"], json!("1.5 / f"));
+    assert_eq!(of("ground.vertical")["kind"], json!("table"));
 }
