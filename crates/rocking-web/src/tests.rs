@@ -236,6 +236,7 @@ fn a_grid_site_on_a_node_is_the_nodes_values_interpolated_in_the_return_period()
     assert!(e.starts_with("site.lon: "), "{e}");
     let e = grid_site_json(GRID, 14.30, 40.95, -1.0, 1.0).err().unwrap_or_default();
     assert!(e.starts_with("site.VN: "), "{e}");
+}
 
 /// The page's description of the keys is every key of the scenario table,
 /// in order, with a hand-checked sample of what its form shows (units,
