@@ -1,6 +1,7 @@
 //! The summary of a run: peaks located on the dense output, counts and times.
 
 use crate::equations::Kernel;
+use crate::event::{Event, EventKind};
 use crate::regime::{Motion, Regime, State, TowerRegime};
 
 /// Why a run ended (diffsol's `OdeSolverStopReason`).
@@ -141,7 +142,23 @@ pub(crate) struct Kept {
     pub(crate) tower_uplift_detected: bool,
 }
 
-/// Accumulates the summary during a run.
+/// What the run tells the summary when it ends.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Closing {
+    /// Right-hand side evaluations.
+    pub(crate) evaluations: u64,
+    /// The tower at the end.
+    pub(crate) end_state: EndState,
+    /// What its free motion from there does, if known.
+    pub(crate) will_overturn: Option<bool>,
+    /// The least `g + a_v`, with a vertical input.
+    pub(crate) min_effective_gravity: Option<f64>,
+}
+
+/// Accumulates the summary during a run: the engine's observer. Its counts
+/// and first instants come from the events ([`Tracker::event`]), its peaks
+/// from the instants and the peaks located inside steps; the screening reads
+/// the peaks kept so far through [`Tracker::kept`].
 #[derive(Debug, Clone)]
 pub(crate) struct Tracker {
     pub(crate) summary: Summary,
@@ -183,6 +200,28 @@ impl Tracker {
             max_top_abs_acceleration: s.max_top_abs_acceleration,
             max_pivot_friction_demand: s.max_pivot_friction_demand,
             tower_uplift_detected: s.tower_uplift_detected,
+        }
+    }
+
+    /// An event of the run: the number of events and impacts, the first
+    /// uplift and slip, and the overturning are read off the events alone.
+    #[inline]
+    pub(crate) fn event(&mut self, event: &Event) {
+        let s = &mut self.summary;
+        s.events += 1;
+        match event.kind {
+            EventKind::Impact => s.impacts += 1,
+            EventKind::Uplift => {
+                s.first_uplift_time.get_or_insert(event.time);
+            }
+            EventKind::Slip => {
+                s.first_slip_time.get_or_insert(event.time);
+            }
+            EventKind::Overturn => {
+                s.overturn_time = Some(event.time);
+                s.end_reason = EndReason::Overturned;
+            }
+            EventKind::Rest | EventKind::Stick | EventKind::Reverse => {}
         }
     }
 
@@ -255,10 +294,19 @@ impl Tracker {
         self.summary.time_in_motion[motion.index()] += dt;
     }
 
-    /// Closes the summary at the end of the run.
-    pub(crate) fn finish(mut self, kernel: &Kernel, t: f64, y: &State) -> Summary {
+    /// Whether an overturn event came.
+    pub(crate) fn overturned(&self) -> bool {
+        self.summary.overturned()
+    }
+
+    /// Closes the summary at the end of the run, at `t` in state `y`.
+    pub(crate) fn finish(mut self, kernel: &Kernel, t: f64, y: &State, closing: Closing) -> Summary {
         self.displacement(y.theta, y.slip);
         let s = &mut self.summary;
+        s.evaluations = closing.evaluations;
+        s.end_state = closing.end_state;
+        s.will_overturn = closing.will_overturn;
+        s.min_effective_gravity = closing.min_effective_gravity;
         s.end_time = t;
         s.final_slip = y.slip;
         // The top displacement relative to the building grows monotonically with θ

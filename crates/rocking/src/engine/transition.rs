@@ -10,7 +10,6 @@ use crate::event::{Event, EventKind};
 use crate::jet::Jet;
 use crate::observer::Observer;
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
-use crate::response::EndReason;
 use crate::simulate::REST_ANGULAR_VELOCITY;
 use std::ops::ControlFlow;
 
@@ -180,14 +179,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     Pivot::Positive
                 };
                 self.regime.tower = TowerRegime::Rocking(pivot);
-                self.report.tracker.summary.first_uplift_time.get_or_insert(self.integ.t);
                 EventKind::Uplift
             }
             Condition::Impact => return self.impact(),
             Condition::Overturn => {
                 self.finished = true;
-                self.report.tracker.summary.overturn_time = Some(self.integ.t);
-                self.report.tracker.summary.end_reason = EndReason::Overturned;
                 EventKind::Overturn
             }
             Condition::SlipNegative | Condition::SlipPositive => {
@@ -197,7 +193,6 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     SlipDirection::Positive
                 };
                 self.regime.building = BuildingRegime::Slip(dir);
-                self.report.tracker.summary.first_slip_time.get_or_insert(self.integ.t);
                 EventKind::Slip
             }
             Condition::SlipStop => {
@@ -236,7 +231,6 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.integ.y.theta = 0.0;
         self.integ.y.theta_dot = after.theta_dot;
         self.integ.y.slip_vel = after.slip_vel;
-        self.report.tracker.summary.impacts += 1;
         self.regime.tower = TowerRegime::Rocking(pivot.flipped());
         let old = self.regime.building;
         self.regime.building = after.building;
@@ -244,10 +238,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if after.building != old {
             let kind = match (old, after.building) {
                 (_, BuildingRegime::Stick) => EventKind::Stick,
-                (BuildingRegime::Stick, BuildingRegime::Slip(_)) => {
-                    self.report.tracker.summary.first_slip_time.get_or_insert(self.integ.t);
-                    EventKind::Slip
-                }
+                (BuildingRegime::Stick, BuildingRegime::Slip(_)) => EventKind::Slip,
                 (BuildingRegime::Slip(_), BuildingRegime::Slip(_)) => EventKind::Reverse,
             };
             let at = self.integ.y;
@@ -267,8 +258,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         Ok(())
     }
 
+    /// Emits an event at the current instant: to the summary, which derives
+    /// its counts and first instants from events alone, and to the observer.
     pub(super) fn emit(&mut self, kind: EventKind, before: State) -> Result<(), Error> {
-        self.report.tracker.summary.events += 1;
         let event = Event {
             time: self.integ.t,
             kind,
@@ -276,6 +268,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             after: self.integ.y,
             regime: self.regime,
         };
+        self.report.tracker.event(&event);
         if let ControlFlow::Break(halt) = self.report.observer.on_event(&event) {
             return Err(Error::halted(halt, self.integ.t));
         }
