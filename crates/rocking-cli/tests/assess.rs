@@ -159,6 +159,13 @@ fn bad_input_is_one_line_naming_the_key() {
         .iter()
         .map(|&(what, from, to, expected)| (what, edited(&base, from, to), expected))
         .collect();
+    let tables = "[site.SLD]\nag = 0.062\nF0 = 2.52\nTc_star = 0.30\n[site.SLV]\nag = 0.155\nF0 = 2.47\nTc_star = 0.36\n";
+    let grid = format!("grid = \"{}\"\n", arg(&root().join("data/hazard/synthetic_grid.txt")));
+    cases.push((
+        "a grid without the site",
+        edited(&edited(&base, tables, &grid), slc, ""),
+        "site.lon: required with grid",
+    ));
     cases.push((
         "a ground",
         format!("{base}\n[ground]\ntype = \"none\"\n"),
