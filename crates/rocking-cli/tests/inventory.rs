@@ -4,7 +4,7 @@
 //! their own error while the others are still right; inventory.geojson read
 //! back by the `geojson` crate.
 
-use crate::util::{arg, read, rocking, root, tempdir, write};
+use crate::util::{arg, read, rocking, root, staging_folder, tempdir, write};
 use std::path::Path;
 
 /// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
@@ -295,4 +295,75 @@ fn with_a_record_set_the_dynamic_checks_are_those_of_rocking_assess() {
     };
     assert_row_is_assess(&header, &rows[0], &assess(dir.path(), "a", &file(3.6, 30.0, "B", 14.34, 41.06)));
     assert_row_is_assess(&header, &rows[1], &assess(dir.path(), "b", &file(5.0, 20.0, "C", 14.41, 41.10)));
+}
+
+/// Ctrl-C while the towers run: the command ends with 130, after
+/// the towers under way, keeping the rows finished (complete, the first ones
+/// in input order) and an `inventory.geojson` of those towers.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_keeps_the_towers_finished() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    // Towers with the dynamic checks (a second or more each), 30 of them: far more than finish before the signal.
+    let limit = Duration::from_secs(120);
+    let dir = tempdir();
+    let grid = root().join("data/hazard/synthetic_grid.txt");
+    let records = root().join("data/records/synthetic");
+    let assessment = format!(
+        "[assessment]\nconfidence_factor = 1.35\nrecords = ['{0}/kt_01.AT2', '{0}/kt_02.AT2', '{0}/kt_03.AT2']\n",
+        records.display()
+    );
+    let assess_file = write(
+        dir.path(),
+        "town.toml",
+        &base(&grid).replace("[assessment]\nconfidence_factor = 1.35\n", &assessment),
+    );
+    let rows: String = (0..30).map(|i| format!("T{i:02},,14.{},41.06\n", 34 + i % 10)).collect();
+    let towers = write(dir.path(), "towers.csv", &format!("id,name,lon,lat\n{rows}"));
+    let out = dir.path().join("out");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(["inventory", arg(&towers), "--assess", arg(&assess_file), "--out", arg(&out), "--threads", "2"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let partial = staging_folder(&out, limit).expect("no staging folder").join("inventory.csv");
+    let start = Instant::now();
+    // The header is written when the towers start (the rows are buffered: how many
+    // are finished at the signal is not known, only that they cannot all be).
+    while std::fs::metadata(&partial).map_or(true, |m| m.len() == 0) && start.elapsed() < limit {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_secs(2));
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
+    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
+            break status;
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap_or_default();
+            panic!("the inventory did not stop");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    if let Some(mut pipe) = child.stderr.take() {
+        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
+    }
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    let (header, rows) = inventory_csv(&out);
+    assert!(rows.len() < 30, "{} rows", rows.len());
+    assert!(stderr.contains(&format!("interrupted: wrote {} of 30", rows.len())), "{stderr}");
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(cell(&header, row, "id"), format!("T{i:02}"));
+        assert!(!cell(&header, row, "SLC_nonlinear_dynamic_zeta_E").is_empty(), "row {i} incomplete");
+    }
+    let parsed: geojson::GeoJson = read(&out.join("inventory.geojson")).parse().unwrap_or_else(|e| panic!("{e}"));
+    let geojson::GeoJson::FeatureCollection(collection) = parsed else {
+        panic!("not a FeatureCollection")
+    };
+    assert_eq!(collection.features.len(), rows.len());
 }
