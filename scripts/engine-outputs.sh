@@ -41,35 +41,7 @@ run() {
     done
     "$rocking" sweep examples/figure6-sweep.toml --out "$out/sweep/figure6-sweep" >/dev/null
     "$rocking" sweep examples/sant-anna-cervino/figure6.toml --out "$out/sweep/sant-anna-figure6" >/dev/null
-    local tmp
-    tmp=$(mktemp -d)
-    trap 'rm -rf "$tmp"' RETURN
-    local frequencies
-    frequencies=$(python3 -c 'print(",".join(str(1 + 0.25 * i) for i in range(25)))')
-    cat >"$tmp/grid-100.toml" <<TOML
-name = "peer grid"
-
-[tower]
-width = 0.5
-height = 2.0
-mass = 1000.0
-
-[ground]
-type = "harmonic"
-amplitude = 0.5
-frequency = 1.0
-duration = 10.0
-
-[simulation]
-duration = 10.0
-rtol = 1e-8
-atol = 1e-10
-
-[sweep]
-"ground.amplitude" = [0.3,0.5,0.7,0.9]
-"ground.frequency" = [$frequencies]
-TOML
-    "$rocking" sweep "$tmp/grid-100.toml" --out "$out/sweep/grid-100" >/dev/null
+    "$rocking" sweep crates/rocking-scenario/benches/peer-grid.toml --out "$out/sweep/grid-100" >/dev/null
     "$rocking" fragility examples/fragility/tower-on-church.toml --out "$out/fragility" >/dev/null
     "$rocking" assess examples/sant-anna-cervino/assess.toml --out "$out/assess" >/dev/null
     "$rocking" inventory examples/town/towers.csv --assess examples/town/assess.toml --out "$out/inventory" >/dev/null

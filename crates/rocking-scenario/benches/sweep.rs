@@ -18,30 +18,8 @@ use std::convert::Infallible;
 use std::path::Path;
 use std::sync::atomic::AtomicBool;
 
-/// The peer's block and grid; `mass` does not change the rotation of a fixed-base block.
-const PEER_GRID: &str = r#"
-name = "peer grid"
-
-[tower]
-width = 0.5
-height = 2.0
-mass = 1000.0
-
-[ground]
-type = "harmonic"
-amplitude = 0.5
-frequency = 2.0
-duration = 10.0
-
-[simulation]
-duration = 10.0
-rtol = 1e-8
-atol = 1e-10
-
-[sweep]
-"ground.amplitude" = [0.3, 0.5, 0.7, 0.9]
-"ground.frequency" = { from = 1.0, to = 7.0, step = 0.25 }
-"#;
+/// The peer's block and grid (the performance chapter's 100 cases).
+const PEER_GRID: &str = include_str!("peer-grid.toml");
 
 fn sweep(c: &mut Criterion) {
     let sweep = match Sweep::from_toml_str(PEER_GRID, Path::new("peer-grid.toml")) {
