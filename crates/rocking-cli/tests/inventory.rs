@@ -356,7 +356,7 @@ fn ctrl_c_keeps_the_towers_finished() {
     assert_eq!(status.code(), Some(130), "{stderr}");
     let (header, rows) = inventory_csv(&out);
     assert!(rows.len() < 30, "{} rows", rows.len());
-    assert!(stderr.contains(&format!("interrupted: wrote {} of 30", rows.len())), "{stderr}");
+    assert!(stderr.contains(&format!("interrupted: wrote {} of 30 towers", rows.len())), "{stderr}");
     for (i, row) in rows.iter().enumerate() {
         assert_eq!(cell(&header, row, "id"), format!("T{i:02}"));
         assert!(!cell(&header, row, "SLC_nonlinear_dynamic_zeta_E").is_empty(), "row {i} incomplete");

@@ -153,7 +153,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         |cancel, sink| study.run_range(cases.clone(), threads, cancel, sink),
     )?;
     if done.cancelled {
-        return Err(Interrupted::keep(staging, done.written, cases.len(), stripes_path));
+        return Err(Interrupted::keep(staging, done.written, cases.len(), stripes_path, "cases"));
     }
     if let Some(shard) = args.shard {
         // The fits need every stripe: `rocking merge` makes them.
@@ -177,7 +177,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let interrupted = crate::signals::interrupted();
     let fits = tally.fits_until(interrupted);
     if interrupted.load(Ordering::Relaxed) {
-        return Err(Interrupted::keep(staging, done.written, study.len(), stripes_path));
+        return Err(Interrupted::keep(staging, done.written, study.len(), stripes_path, "cases"));
     }
     for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
         std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()))?;

@@ -514,7 +514,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let check_names = town.checks();
     let towers = town.finish()?;
     if done.cancelled {
-        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path));
+        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path, "towers"));
     }
     let mut part = String::new();
     if let Some(shard) = args.shard {

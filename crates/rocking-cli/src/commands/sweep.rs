@@ -55,15 +55,18 @@ pub struct Interrupted {
     pub total: usize,
     /// The file holding them.
     pub csv: PathBuf,
+    /// What a row is: `cases`, `towers`.
+    pub counted: &'static str,
 }
 
 impl fmt::Display for Interrupted {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "interrupted: wrote {} of {} cases to {} (complete rows, in order){}",
+            "interrupted: wrote {} of {} {} to {} (complete rows, in order){}",
             self.written,
             self.total,
+            self.counted,
             self.csv.display(),
             if self.written == self.total { "; nothing fitted" } else { "" }
         )
@@ -75,9 +78,9 @@ impl std::error::Error for Interrupted {}
 impl Interrupted {
     /// Keeps the rows finished (moves the staging folder's files into place)
     /// and returns the error that says how many of `total` were written.
-    pub fn keep(staging: output::Staging, written: usize, total: usize, csv: PathBuf) -> anyhow::Error {
+    pub fn keep(staging: output::Staging, written: usize, total: usize, csv: PathBuf, counted: &'static str) -> anyhow::Error {
         match staging.commit() {
-            Ok(()) => Self { written, total, csv }.into(),
+            Ok(()) => Self { written, total, csv, counted }.into(),
             Err(e) => e,
         }
     }
@@ -126,7 +129,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         |cancel, sink| sweep.run_range(cases.clone(), threads, cancel, sink),
     )?;
     if done.cancelled {
-        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path));
+        return Err(Interrupted::keep(staging, done.written, cases.len(), csv_path, "cases"));
     }
 
     let mut written = vec![SWEEP_CSV];
