@@ -10,6 +10,9 @@
 //! collapse). Each check gives the least `ag` at which it stops holding and
 //! `ζ_E = a_g,capacity / a_g`.
 //!
+//! A town's towers are assessed the same way, one row of a CSV each, by
+//! [`Inventory`] (`rocking inventory`), their GeoJSON and ranking by [`Town`].
+//!
 //! Units: lengths in m, spectral accelerations in m/s², site accelerations
 //! `ag` in g, periods in s.
 //!
@@ -39,10 +42,12 @@ mod check;
 mod dynamic;
 mod error;
 mod input;
+mod inventory;
 mod kinematic;
 mod outputs;
 mod search;
 mod site;
+mod town;
 
 pub use assess::Assessment;
 pub use capacity::{
@@ -53,6 +58,7 @@ pub use check::{acceleration_ratio, governing, Check, Method, Unit};
 pub use dynamic::{combined_response, dynamic_check, DynamicCheck, LambdaPoint, RecordResponse, RecordSet, SetRecord, LAMBDA_TOLERANCE};
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
+pub use inventory::{Inventory, InventoryError, OnAssessed};
 pub use kinematic::{
     activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_capacity, linear_kinematic_check,
     linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
@@ -63,3 +69,4 @@ pub use outputs::{
 };
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};
+pub use town::{degrees, ranking, Ranked, Town, IDENTITY};

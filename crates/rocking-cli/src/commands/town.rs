@@ -1,158 +1,30 @@
-//! The files of a town's inventory made from the rows of `inventory.csv`
-//! (the text of their fields, as written): `inventory.geojson`, and the
-//! towers ranked for the figures, the report and the terminal. `rocking
-//! inventory` feeds it each row as it is written and `rocking merge` the rows
-//! of the merged file, so the two write the same bytes.
+//! The files of a town's inventory: `inventory.csv` and `inventory.geojson`,
+//! the latter written from the rows of the former by
+//! [`rocking_assess::Town`]. `rocking inventory` feeds it each row as it is
+//! written and `rocking merge` the rows of the merged file ([`from_csv`]), so
+//! the two write the same bytes.
 
 use anyhow::Context;
+use rocking_assess::{Ranked, Town};
 use std::fs::File;
-use std::io::{BufWriter, Write};
-use std::path::{Path, PathBuf};
+use std::io::BufWriter;
+use std::path::Path;
 
 /// One row per tower: each check's ag capacity and ζ_E, the governing one, the error.
 pub const INVENTORY_CSV: &str = "inventory.csv";
 /// The same as RFC 7946 points.
 pub const INVENTORY_GEOJSON: &str = "inventory.geojson";
 
-/// The columns of a tower's identity and place, first in `inventory.csv`.
-pub const IDENTITY: [&str; 4] = ["id", "name", "lon", "lat"];
-
-/// Whether a column of `inventory.csv` holds numbers (an ag capacity or a ζ_E).
-fn is_number_column(name: &str) -> bool {
-    name.ends_with("_ag_capacity_g") || name.ends_with("zeta_E")
-}
-
-/// A coordinate's text as degrees within ±`limit`, if it is one.
-pub fn degrees(text: &str, limit: f64) -> Option<f64> {
-    text.trim().parse::<f64>().ok().filter(|x| x.is_finite() && x.abs() <= limit)
-}
-
-/// One tower as the ranking, the map and the report show it.
-#[derive(Debug, Clone)]
-pub struct Ranked {
-    /// Its place in the file's rows (0 the first).
-    pub index: usize,
-    /// Its `id`.
-    pub id: String,
-    /// Its `name`.
-    pub name: String,
-    /// Its place (lon, lat degrees), when both are numbers.
-    pub point: Option<(f64, f64)>,
-    /// The governing ζ_E, if any check was completed.
-    pub zeta: Option<f64>,
-    /// The governing check (`SLV linear_kinematic`), or empty.
-    pub governing: String,
-    /// Every check's ζ_E, in the order of [`Town::checks`] (`None`: not completed).
-    pub check_zetas: Vec<Option<f64>>,
-    /// The row's error, or empty.
-    pub error: String,
-}
-
-/// The towers of an inventory, read from its rows as they come; writes `inventory.geojson` on the way.
-pub struct Town {
-    header: Vec<String>,
-    /// The column of each check's ζ_E and its check's name (`SLV_nonlinear_kinematic`).
-    checks: Vec<(usize, String)>,
-    geojson: BufWriter<File>,
-    shown: PathBuf,
-    first: bool,
-    /// Every tower, in input order.
-    pub towers: Vec<Ranked>,
-}
-
-impl Town {
-    /// Starts `inventory.geojson` at `path` (`shown` names it in errors) for rows of `header`.
-    pub fn new(header: &[String], path: &Path, shown: &Path) -> anyhow::Result<Self> {
-        let context = || format!("cannot write {}", shown.display());
-        let mut geojson = BufWriter::new(File::create(path).with_context(context)?);
-        geojson.write_all(b"{\"type\":\"FeatureCollection\",\"features\":[").with_context(context)?;
-        let checks = header
-            .iter()
-            .enumerate()
-            .filter_map(|(i, h)| h.strip_suffix("_zeta_E").map(|check| (i, check.to_string())))
-            .collect();
-        Ok(Self {
-            header: header.to_vec(),
-            checks,
-            geojson,
-            shown: shown.to_path_buf(),
-            first: true,
-            towers: Vec::new(),
-        })
-    }
-
-    /// The checks' names (`SLD_activation`…), in the order of [`Ranked::check_zetas`].
-    pub fn checks(&self) -> Vec<String> {
-        self.checks.iter().map(|(_, n)| n.clone()).collect()
-    }
-
-    /// Takes one row (its fields' text, in the header's order).
-    pub fn push(&mut self, fields: &[&str]) -> anyhow::Result<()> {
-        use serde_json::Value as J;
-        let field = |name: &str| self.header.iter().position(|h| h == name).and_then(|i| fields.get(i)).copied().unwrap_or("");
-        let number = |text: &str| text.parse::<f64>().ok();
-        let point = degrees(field("lon"), 180.0).zip(degrees(field("lat"), 90.0));
-        let mut p = geojson::JsonObject::new();
-        for (name, text) in self.header.iter().zip(fields) {
-            let value = match name.as_str() {
-                "lon" | "lat" => continue,
-                "id" | "name" => J::from(*text),
-                n if is_number_column(n) => number(text).map_or(J::Null, J::from),
-                _ if text.is_empty() => J::Null,
-                _ => J::from(*text),
-            };
-            p.insert(name.clone(), value);
-        }
-        let id = field("id");
-        let feature = geojson::Feature {
-            bbox: None,
-            geometry: point.map(|(lon, lat)| geojson::Geometry::new(geojson::Value::Point(vec![lon, lat]))),
-            id: (!id.is_empty()).then(|| geojson::feature::Id::String(id.to_string())),
-            properties: Some(p),
-            foreign_members: None,
-        };
-        let context = || format!("cannot write {}", self.shown.display());
-        self.geojson.write_all(if self.first { b"\n" } else { b",\n" }).with_context(context)?;
-        serde_json::to_writer(&mut self.geojson, &feature).with_context(context)?;
-        self.first = false;
-        self.towers.push(Ranked {
-            index: self.towers.len(),
-            id: id.to_string(),
-            name: field("name").to_string(),
-            point,
-            zeta: number(field("zeta_E")),
-            governing: field("governing").to_string(),
-            check_zetas: self.checks.iter().map(|(i, _)| fields.get(*i).and_then(|t| number(t))).collect(),
-            error: field("error").to_string(),
-        });
-        Ok(())
-    }
-
-    /// Ends `inventory.geojson`; the towers in input order.
-    pub fn finish(mut self) -> anyhow::Result<Vec<Ranked>> {
-        let context = || format!("cannot write {}", self.shown.display());
-        self.geojson.write_all(b"\n]}\n").with_context(context)?;
-        self.geojson.flush().with_context(context)?;
-        Ok(self.towers)
-    }
-}
-
-/// The towers with a governing ζ_E, least first (input order among equals).
-pub fn ranking(towers: &[Ranked]) -> Vec<&Ranked> {
-    let mut ranked: Vec<&Ranked> = towers.iter().filter(|t| t.zeta.is_some()).collect();
-    ranked.sort_by(|a, b| a.zeta.unwrap_or(f64::INFINITY).total_cmp(&b.zeta.unwrap_or(f64::INFINITY)));
-    ranked
-}
-
-/// Reads `inventory.csv` at `path` and writes `inventory.geojson` at `geojson` from its rows: the towers.
+/// Reads `inventory.csv` at `path` and writes `inventory.geojson` at `geojson` (`shown` names it in errors) from its rows: the towers.
 pub fn from_csv(path: &Path, geojson: &Path, shown: &Path) -> anyhow::Result<Vec<Ranked>> {
     let context = || format!("cannot read {}", path.display());
+    let written = || format!("cannot write {}", shown.display());
     let mut reader = csv::ReaderBuilder::new().from_path(path).with_context(context)?;
     let header: Vec<String> = reader.headers().with_context(context)?.iter().map(String::from).collect();
-    let mut town = Town::new(&header, geojson, shown)?;
+    let mut town = Town::new(&header, BufWriter::new(File::create(geojson).with_context(written)?)).with_context(written)?;
     for record in reader.records() {
         let record = record.with_context(context)?;
-        town.push(&record.iter().collect::<Vec<_>>())?;
+        town.push(&record.iter().collect::<Vec<_>>()).with_context(written)?;
     }
-    town.finish()
+    Ok(town.finish().with_context(written)?.0)
 }

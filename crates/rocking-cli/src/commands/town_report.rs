@@ -5,8 +5,8 @@
 //! when `--details` wrote it), and the towers not assessed with their error.
 
 use super::assess_report::{esc, scalable, STYLE};
-use super::town::{ranking, Ranked};
 use crate::format::sig;
+use rocking_assess::{ranking, Ranked};
 use std::fmt::Write;
 
 /// What the page says besides the towers.

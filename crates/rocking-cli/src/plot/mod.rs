@@ -97,7 +97,7 @@ pub const TOWN_FIGURES: [&str; 4] = ["town_map.svg", "town_map.png", "town_ranki
 /// Draws the figures of a town's inventory into `dir`: `town_map` (the towers
 /// at their place coloured by ζ_E) and `town_ranking` (the towers of least ζ_E
 /// and their governing checks); `checks` are the checks' names in column order.
-pub fn town_figures(dir: &Path, title: &str, towers: &[crate::commands::town::Ranked], checks: &[String]) -> anyhow::Result<Vec<PathBuf>> {
+pub fn town_figures(dir: &Path, title: &str, towers: &[rocking_assess::Ranked], checks: &[String]) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = style::render(dir, "town_map", town::MAP_SIZE, &town::MapFigure { title, towers })?;
     let ranking = town::RankingFigure { title, towers, checks };
     files.extend(style::render(dir, "town_ranking", town::RankingFigure::size(towers), &ranking)?);
@@ -105,7 +105,7 @@ pub fn town_figures(dir: &Path, title: &str, towers: &[crate::commands::town::Ra
 }
 
 /// The town's map and ranking as SVG strings with their sizes, for its page.
-pub fn town_svgs(title: &str, towers: &[crate::commands::town::Ranked], checks: &[String]) -> anyhow::Result<[(String, (u32, u32)); 2]> {
+pub fn town_svgs(title: &str, towers: &[rocking_assess::Ranked], checks: &[String]) -> anyhow::Result<[(String, (u32, u32)); 2]> {
     let map = style::render_svg(town::MAP_SIZE, &town::MapFigure { title, towers })?;
     let size = town::RankingFigure::size(towers);
     let ranking = style::render_svg(size, &town::RankingFigure { title, towers, checks })?;

@@ -5,11 +5,11 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::style::{self, size, text, viridis, Figure, CYCLE, GREY, INK};
-use crate::commands::town::{ranking, Ranked};
 use crate::format::sig;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use rocking_assess::{ranking, Ranked};
 
 /// Size of the map (px).
 pub const MAP_SIZE: (u32, u32) = (1000, 820);

@@ -1,0 +1,452 @@
+//! Every bell tower of a town assessed as one assessment file assesses one
+//! tower: the inventory behind `rocking inventory`, `rocking.inventory` in
+//! Python and the page's town tab.
+//!
+//! Each row of the towers' CSV is the assessment file's table with the row's
+//! cells set in it (a dotted column is a key, `soil`, `topography`, `ag_SLV`…
+//! are the site's, `lon`, `lat` the place on the hazard grid), read by the
+//! same functions as the file, so a tower's numbers are those of the
+//! assessment of a file with the same values. The hazard grid and each record
+//! file are read once for all the towers ([`GridCache`], [`RecordCache`]).
+//! An [`Inventory`] is the [`Cases`] of the sweep's engine (one row per
+//! tower, in input order); a bad row gets its `error` (one line naming the
+//! file, the row, the column and what is wrong) and the others go on.
+
+use crate::assess::Assessment;
+use crate::check::Method;
+use crate::input::AssessmentInput;
+use crate::site::Role;
+use crate::town::IDENTITY;
+use crate::RecordSet;
+use rocking_codes::LimitState;
+use rocking_scenario::{set_dotted, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// The kinematic checks in the order of their columns, by the role of their limit state.
+const KINEMATIC: [(Role, Method); 4] = [
+    (Role::Damage, Method::Activation),
+    (Role::LifeSafety, Method::LinearKinematic),
+    (Role::LifeSafety, Method::NonlinearKinematic),
+    (Role::Collapse, Method::NonlinearKinematic),
+];
+/// The dynamic checks, after the kinematic ones when the assessment file has a record set.
+const DYNAMIC: [(Role, Method); 2] = [(Role::LifeSafety, Method::NonlinearDynamic), (Role::Collapse, Method::NonlinearDynamic)];
+/// Site columns that are keys of `[site]` under the same name.
+const SITE_COLUMNS: [&str; 5] = ["soil", "topography", "ST", "VN", "CU"];
+/// The keys of `[site]` that give the parameters from a hazard grid.
+const GRID_KEYS: [&str; 5] = ["grid", "lon", "lat", "VN", "CU"];
+
+/// Why an inventory cannot start: the assessment file is not valid by itself
+/// (its error names the file, the key and the cause), a record of its set
+/// cannot be read, or the towers' file cannot be read or has a bad header
+/// (one line naming the file and the column).
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum InventoryError {
+    /// The assessment file, or a record of its set.
+    #[error(transparent)]
+    Assessment(#[from] rocking_scenario::Error),
+    /// The towers' file.
+    #[error("{0}")]
+    Towers(String),
+}
+
+/// What a column of the towers' file sets.
+#[derive(Debug, Clone, PartialEq)]
+enum Column {
+    /// `id`, `name`, `lon` or `lat`.
+    Identity,
+    /// A key of `[site]` (`site.soil`, `site.SLV.ag`).
+    Site(String),
+    /// Any other dotted key of the assessment file (`tower.width`).
+    Key(String),
+}
+
+/// Where each column goes, from the header; a header fault is one line naming the file and the column.
+fn columns(header: &csv::StringRecord, code: Code, file: &Path) -> Result<Vec<Column>, String> {
+    let mut seen = HashMap::new();
+    let mut out = Vec::new();
+    for (i, name) in header.iter().enumerate() {
+        if let Some(first) = seen.insert(name, i) {
+            return Err(format!("{}: column {name} appears twice (columns {} and {})", file.display(), first + 1, i + 1));
+        }
+        let state_param = name.rsplit_once('_').and_then(|(param, state)| {
+            let state = code.limit_states().iter().find(|s| s.as_str() == state)?;
+            let keys = if code == Code::Ntc2018 {
+                rocking_scenario::NTC_STATE_KEYS
+            } else {
+                rocking_scenario::EC8_STATE_KEYS
+            };
+            keys.contains(&param).then(|| format!("site.{state}.{param}"))
+        });
+        out.push(if IDENTITY.contains(&name) {
+            Column::Identity
+        } else if SITE_COLUMNS.contains(&name) {
+            Column::Site(format!("site.{name}"))
+        } else if let Some(key) = state_param {
+            Column::Site(key)
+        } else if name.contains('.') && !name.starts_with("site.") && !name.starts_with("ground.") {
+            Column::Key(name.to_string())
+        } else {
+            return Err(format!(
+                "{}: unknown column {name:?}; a column is id, name, lon, lat, soil, topography, ST, VN, CU, a limit state's site parameter \
+                 (ag_SLV, F0_SLV, Tc_star_SLV with code = \"ntc2018\"; ag_SD with \"ec8\") or a dotted key of the assessment file (tower.width)",
+                file.display()
+            ));
+        });
+    }
+    for required in ["id", "lon", "lat"] {
+        if !seen.contains_key(required) {
+            return Err(format!("{}: no column {required} (a tower needs id, lon and lat)", file.display()));
+        }
+    }
+    Ok(out)
+}
+
+/// A cell as a TOML value: a number, a boolean or a quoted string as TOML reads it, else the text as a string.
+fn cell_value(cell: &str) -> Value {
+    format!("v = {cell}")
+        .parse::<Table>()
+        .ok()
+        .and_then(|mut t| t.remove("v"))
+        .unwrap_or_else(|| Value::String(cell.to_string()))
+}
+
+/// One cell given in a row: its column's name, what the column sets, its text.
+#[derive(Debug, Clone)]
+struct Given {
+    name: String,
+    column: Column,
+    text: String,
+}
+
+/// The cells of one row by column name (empty cells left out).
+#[derive(Debug, Clone)]
+struct Line {
+    /// Its row number in the file (1 the first after the header).
+    number: usize,
+    cells: Vec<Given>,
+}
+
+impl Line {
+    fn get(&self, name: &str) -> Option<&str> {
+        self.cells.iter().find(|c| c.name == name).map(|c| c.text.as_str())
+    }
+    /// `TOWERS.csv row N (id X): what`.
+    fn failure(&self, file: &Path, what: impl std::fmt::Display) -> String {
+        let id = self.get("id").map(|id| format!(" (id {id})")).unwrap_or_default();
+        format!("{} row {}{id}: {what}", file.display(), self.number)
+    }
+    /// `TOWERS.csv row N (id X), column C: what`.
+    fn fault(&self, file: &Path, column: &str, what: impl std::fmt::Display) -> String {
+        let id = self.get("id").map(|id| format!(" (id {id})")).unwrap_or_default();
+        format!("{} row {}{id}, column {column}: {what}", file.display(), self.number)
+    }
+}
+
+/// The coordinate of a row: a number within ±`limit` degrees.
+fn coordinate(row: &Line, file: &Path, name: &str, limit: f64) -> Result<f64, String> {
+    let text = row
+        .get(name)
+        .ok_or_else(|| row.fault(file, name, "missing: a tower needs its place (WGS84 degrees)"))?;
+    crate::town::degrees(text, limit).ok_or_else(|| match text.trim().parse::<f64>() {
+        Ok(x) => row.fault(file, name, format!("must be within ±{limit} degrees, got {x}")),
+        Err(_) => row.fault(file, name, format!("not a number: {text:?}")),
+    })
+}
+
+/// The assessment file's table with the row's cells set in it.
+fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
+    let mut table = base.clone();
+    let site = match table.entry("site").or_insert_with(|| Value::Table(Table::new())) {
+        Value::Table(t) => t,
+        _ => return Err(row.fault(file, "site", "the assessment file's site is not a table")),
+    };
+    let has = |name: &str| row.get(name).is_some();
+    // A row's own limit-state parameters replace the grid; its topography or ST replaces the other.
+    if row.cells.iter().any(|c| matches!(&c.column, Column::Site(k) if k.matches('.').count() == 2)) {
+        for key in GRID_KEYS {
+            site.remove(key);
+        }
+    }
+    if has("topography") {
+        site.remove("ST");
+    }
+    if has("ST") {
+        site.remove("topography");
+    }
+    if site.contains_key("grid") {
+        site.insert("lon".into(), Value::Float(lon));
+        site.insert("lat".into(), Value::Float(lat));
+    }
+    for given in &row.cells {
+        let key = match &given.column {
+            Column::Identity => continue,
+            Column::Site(key) | Column::Key(key) => key,
+        };
+        let value = if matches!(given.name.as_str(), "soil" | "topography") {
+            Value::String(given.text.clone())
+        } else {
+            cell_value(&given.text)
+        };
+        set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
+    }
+    Ok(table)
+}
+
+/// What is done with each tower's assessment besides its row (`rocking
+/// inventory --details` writes its files): the tower's index and its id, its
+/// input and its assessment; an error becomes the tower's.
+pub type OnAssessed = dyn Fn(usize, &str, &AssessmentInput, &Assessment) -> Result<(), String> + Sync;
+
+/// The towers of a town and the assessment file they start from: one [`Row`]
+/// per tower in the order of [`Inventory::header`].
+pub struct Inventory {
+    /// The assessment file's table and the file.
+    base: Table,
+    origin: PathBuf,
+    /// The towers' file, which errors name.
+    file: PathBuf,
+    lines: Vec<Line>,
+    /// The first row of the same id, for a repeated one.
+    repeats: Vec<Option<usize>>,
+    /// A row whose number of cells is not the header's.
+    short: Vec<Option<String>>,
+    /// The checks of the columns, in order.
+    checks: Vec<(LimitState, Method)>,
+    /// The files the assessment file reads (its grid, its records).
+    inputs: Vec<PathBuf>,
+    /// The hazard grid and the records, read once for all the towers.
+    grids: GridCache,
+    records: RecordCache,
+    on_assessed: Option<Box<OnAssessed>>,
+}
+
+impl std::fmt::Debug for Inventory {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Inventory")
+            .field("origin", &self.origin)
+            .field("file", &self.file)
+            .field("towers", &self.lines.len())
+            .field("checks", &self.checks)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Inventory {
+    /// The inventory of the towers' CSV text `towers` (`file` names it in
+    /// errors) on the assessment file's TOML text `assess` (`origin`: the file,
+    /// named in errors, the folder of its grid and records). The assessment
+    /// file must be valid by itself, and every record of its set is read here:
+    /// a bad record stops the inventory before it starts.
+    pub fn new(assess: &str, origin: &Path, towers: &[u8], file: &Path) -> Result<Self, InventoryError> {
+        let table = rocking_scenario::parse_toml(assess, origin)?;
+        Self::from_table(table, origin, towers, file, GridCache::default())
+    }
+
+    /// As [`Inventory::new`], the assessment file given as its table (a Python
+    /// dict, the page's JSON give one), the hazard grid taken from `grids`
+    /// when it holds it (the page gives the grid's text, not a file).
+    pub fn from_table(base: Table, origin: &Path, towers: &[u8], file: &Path, grids: GridCache) -> Result<Self, InventoryError> {
+        let input = AssessmentInput::new(AssessmentFile::from_table_on(base.clone(), origin, &grids)?)?;
+        let ntc = input.site.is_ntc();
+        let records = RecordCache::with_capacity(input.file.records.len());
+        let mut checks: Vec<(LimitState, Method)> = KINEMATIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)).collect();
+        if !input.file.records.is_empty() {
+            // Every record read once, here.
+            RecordSet::read_cached(&input, input.capacity()?.t_slc, &records)?;
+            checks.extend(DYNAMIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)));
+        }
+
+        let cannot_read = |e: csv::Error| InventoryError::Towers(format!("cannot read {}: {e}", file.display()));
+        let mut reader = csv::ReaderBuilder::new().flexible(true).trim(csv::Trim::All).from_reader(towers);
+        let header = reader.headers().map_err(cannot_read)?.clone();
+        let columns = columns(&header, input.file.site.code, file).map_err(InventoryError::Towers)?;
+        let rows = reader.records().collect::<Result<Vec<_>, _>>().map_err(cannot_read)?;
+        let lines: Vec<Line> = rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| Line {
+                number: i + 1,
+                cells: header
+                    .iter()
+                    .zip(&columns)
+                    .zip(r.iter())
+                    .filter(|(_, text)| !text.is_empty())
+                    .map(|((name, column), text)| Given {
+                        name: name.to_string(),
+                        column: column.clone(),
+                        text: text.to_string(),
+                    })
+                    .collect(),
+            })
+            .collect();
+        // The first row of each id; a later row with the same id is refused.
+        let mut first_of: HashMap<&str, usize> = HashMap::new();
+        let repeats: Vec<Option<usize>> = lines
+            .iter()
+            .map(|row| {
+                let id = row.get("id")?;
+                match first_of.get(id) {
+                    Some(&first) => Some(first),
+                    None => {
+                        first_of.insert(id, row.number);
+                        None
+                    }
+                }
+            })
+            .collect();
+        let short: Vec<Option<String>> = rows
+            .iter()
+            .zip(&lines)
+            .map(|(r, row)| {
+                (r.len() != header.len()).then(|| format!("{} row {}: {} cells, the header has {}", file.display(), row.number, r.len(), header.len()))
+            })
+            .collect();
+        Ok(Self {
+            base,
+            origin: origin.to_path_buf(),
+            file: file.to_path_buf(),
+            lines,
+            repeats,
+            short,
+            checks,
+            inputs: input.inputs(),
+            grids,
+            records,
+            on_assessed: None,
+        })
+    }
+
+    /// Calls `f` with each tower's assessment (after it, before its row).
+    pub fn on_assessed(&mut self, f: Box<OnAssessed>) {
+        self.on_assessed = Some(f);
+    }
+
+    /// The files the assessment file reads: its hazard grid, its records.
+    pub fn inputs(&self) -> &[PathBuf] {
+        &self.inputs
+    }
+
+    /// The checks of the columns, in order (the dynamic ones with a record set).
+    pub fn checks(&self) -> &[(LimitState, Method)] {
+        &self.checks
+    }
+
+    /// The header of `inventory.csv`: `id`, `name`, `lon`, `lat`, each check's
+    /// `<LS>_<method>_ag_capacity_g` and `<LS>_<method>_zeta_E`, `zeta_E`, `governing`, `error`.
+    pub fn header(&self) -> Vec<String> {
+        let mut header: Vec<String> = IDENTITY.iter().map(|s| s.to_string()).collect();
+        for (state, method) in &self.checks {
+            header.push(format!("{state}_{method}_ag_capacity_g"));
+            header.push(format!("{state}_{method}_zeta_E"));
+        }
+        header.extend(["zeta_E", "governing", "error"].map(String::from));
+        header
+    }
+
+    /// The `id` of tower `index` as given (empty if none).
+    pub fn id(&self, index: usize) -> &str {
+        self.lines.get(index).and_then(|l| l.get("id")).unwrap_or("")
+    }
+
+    /// The identity cells of row `index`: id, name, lon, lat as given.
+    fn identity(&self, index: usize) -> Vec<Cell> {
+        let line = &self.lines[index];
+        IDENTITY.iter().map(|n| Cell::Text(line.get(n).unwrap_or("").to_string())).collect()
+    }
+
+    /// Assesses tower `index`: its input and its assessment, or the one line of its error.
+    pub fn assess(&self, index: usize) -> Result<(AssessmentInput, Assessment), String> {
+        let (row, file) = (&self.lines[index], self.file.as_path());
+        if let Some(e) = &self.short[index] {
+            return Err(e.clone());
+        }
+        let lon = coordinate(row, file, "lon", 180.0);
+        let lat = coordinate(row, file, "lat", 90.0);
+        if row.get("id").is_none() {
+            return Err(row.fault(file, "id", "missing: each tower needs an id"));
+        }
+        if let Some(first) = self.repeats[index] {
+            return Err(row.fault(file, "id", format!("the same id as row {first}")));
+        }
+        let table = row_table(&self.base, row, file, lon?, lat?)?;
+        // A fault names the key; the row's column that set it, else the assessment file's key.
+        let fault = |e: rocking_scenario::Error| {
+            let key = e.key().unwrap_or("");
+            let column = row
+                .cells
+                .iter()
+                .find(|c| match &c.column {
+                    Column::Site(k) | Column::Key(k) => k == key,
+                    Column::Identity => key == format!("site.{}", c.name),
+                })
+                .map_or_else(|| format!("{key} (of {})", self.origin.display()), |c| format!("{} ({:?})", c.name, c.text));
+            row.fault(file, &column, e.kind())
+        };
+        let input = AssessmentFile::from_table_on(table, &self.origin, &self.grids)
+            .and_then(AssessmentInput::new)
+            .map_err(fault)?;
+        let done = Assessment::run_cached(&input, &self.records).map_err(fault)?;
+        Ok((input, done))
+    }
+
+    /// The row of tower `index`.
+    pub fn row(&self, index: usize) -> Row {
+        let (input, done) = match self.assess(index) {
+            Ok(assessed) => assessed,
+            Err(e) => return self.failed_row(index, &e),
+        };
+        if let Some(f) = &self.on_assessed {
+            if let Err(e) = f(index, self.id(index), &input, &done) {
+                return self.failed_row(index, &self.lines[index].failure(&self.file, e));
+            }
+        }
+        let mut cells = self.identity(index);
+        let completed = done.completed();
+        for (state, method) in &self.checks {
+            match completed.iter().find(|c| c.limit_state == *state && c.method == *method) {
+                Some(c) => cells.extend([Cell::Float(c.ag_capacity.value()), Cell::Float(c.zeta_e)]),
+                None => cells.extend([Cell::Empty, Cell::Empty]),
+            }
+        }
+        match done.governing() {
+            Some(g) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}", g.limit_state, g.method))]),
+            None => cells.extend([Cell::Empty, Cell::Empty]),
+        }
+        // A dynamic check that could not be completed: the others stand, the reason is the error.
+        let incomplete: Vec<String> = done
+            .dynamic
+            .iter()
+            .filter_map(|d| {
+                d.error
+                    .as_ref()
+                    .map(|e| format!("{} {}: could not be completed: {e}", d.limit_state, Method::NonlinearDynamic))
+            })
+            .collect();
+        cells.push(if incomplete.is_empty() {
+            Cell::Empty
+        } else {
+            Cell::Text(self.lines[index].failure(&self.file, incomplete.join("; ")))
+        });
+        Row { index, cells }
+    }
+}
+
+impl Cases for Inventory {
+    fn len(&self) -> usize {
+        self.lines.len()
+    }
+    /// A tower is not stopped part-way: a cancel stops the run after the towers under way.
+    fn run_case_until(&self, index: usize, _halted: &dyn Fn() -> bool) -> Option<Row> {
+        Some(self.row(index))
+    }
+    fn failed_row(&self, index: usize, message: &str) -> Row {
+        let mut cells = self.identity(index);
+        cells.extend(std::iter::repeat_n(Cell::Empty, 2 * self.checks.len() + 2));
+        cells.push(Cell::Text(message.to_string()));
+        Row { index, cells }
+    }
+}
