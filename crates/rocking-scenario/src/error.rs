@@ -144,6 +144,9 @@ pub fn key_of(parameter: rocking::Parameter) -> &'static str {
     if parameter == rocking::Parameter::Bodies {
         return "tower";
     }
+    if parameter == rocking::Parameter::Blocks {
+        return "block";
+    }
     crate::SCENARIO_KEYS
         .iter()
         .find(|k| k.parameter == Some(parameter))

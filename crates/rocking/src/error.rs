@@ -128,6 +128,8 @@ pub enum Parameter {
     InitialThetaDot,
     /// The bodies of a model (a tower, a building, or both).
     Bodies,
+    /// The blocks stacked on the tower.
+    Blocks,
 }
 
 impl Parameter {
@@ -158,6 +160,7 @@ impl Parameter {
         Self::InitialTheta,
         Self::InitialThetaDot,
         Self::Bodies,
+        Self::Blocks,
     ];
 
     /// A description in words (`the tower's width B`), for users of the library itself.
@@ -188,6 +191,7 @@ impl Parameter {
             Self::InitialTheta => "the initial rotation",
             Self::InitialThetaDot => "the initial angular velocity",
             Self::Bodies => "the bodies of the model",
+            Self::Blocks => "the blocks stacked on the tower",
         }
     }
 }

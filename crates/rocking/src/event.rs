@@ -47,6 +47,10 @@ pub struct Event {
     pub before: State,
     /// State just after (differs from `before` in `θ̇` at an impact).
     pub after: State,
-    /// Regime after the event.
+    /// Regime after the event (of the tower and the building in a stacked run).
     pub regime: Regime,
+    /// Whose event: 0 the tower's or the building's, `k` the `k`-th block
+    /// above the tower (stacked runs); `before` and `after` then hold that
+    /// block's `θ` and `θ̇` relative to the block below.
+    pub block: usize,
 }

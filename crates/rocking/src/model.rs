@@ -3,6 +3,7 @@
 
 use crate::body::{Building, Tower};
 use crate::error::{positive, Error, Parameter};
+use crate::stack::{Block, Stack, StackError, MAX_BLOCKS};
 
 /// A tower, a building, or both, under gravity `g`. Valid by construction.
 #[derive(Debug, Clone, PartialEq)]
@@ -10,6 +11,8 @@ pub struct Model {
     tower: Option<Tower>,
     building: Option<Building>,
     gravity: f64,
+    /// The blocks stacked on the tower, the lowest first (none: the tower alone).
+    blocks: Vec<Block>,
 }
 
 /// Quantities derived from a model without running it (what `rocking check` prints).
@@ -55,7 +58,65 @@ impl Model {
                 reason: "a scenario needs a [tower], a [building], or both".into(),
             });
         }
-        Ok(Self { tower, building, gravity })
+        Ok(Self {
+            tower,
+            building,
+            gravity,
+            blocks: Vec::new(),
+        })
+    }
+    /// The model with `blocks` stacked on its tower, the lowest first, each
+    /// standing centred on the one below and no wider than it (a belfry on
+    /// its shaft, the drums of a column; docs/src/model.md, "A stack of
+    /// blocks"). [`crate::simulate`] then runs the stack; without blocks it
+    /// runs the tower alone, as before. A restitution given to the tower
+    /// applies to a tower alone: with blocks above it, it is an error.
+    pub fn with_blocks(self, blocks: &[Block]) -> Result<Self, Error> {
+        let invalid = |reason: String| Error::InvalidParameter {
+            parameter: Parameter::Blocks,
+            reason,
+        };
+        if blocks.is_empty() {
+            return Ok(Self { blocks: Vec::new(), ..self });
+        }
+        let Some(tower) = self.tower else {
+            return Err(invalid("blocks stand on a tower: give a [tower]".into()));
+        };
+        if blocks.len() > MAX_BLOCKS - 1 {
+            return Err(invalid(format!("at most {} blocks stand on the tower, got {}", MAX_BLOCKS - 1, blocks.len())));
+        }
+        let housner = 1.0 - 2.0 * tower.mass() * tower.radius() * tower.radius() * libm::sin(tower.alpha()).powi(2) / tower.inertia_pivot();
+        if (tower.restitution() - housner).abs() > 1e-12 {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::TowerRestitution,
+                reason: "applies to a tower alone: with blocks above it, every impact follows the generalized-momentum law of the stack".into(),
+            });
+        }
+        let mut all = vec![Block::from_tower(&tower)];
+        all.extend_from_slice(blocks);
+        Stack::new(&all, self.building, self.gravity).map_err(|e| match e {
+            StackError::WiderThanBelow { index, width, below } => invalid(format!(
+                "block {} is {width} m wide, wider than the {below} m of the {} below it",
+                index - 1,
+                if index == 2 { "tower".to_string() } else { format!("block {}", index - 2) }
+            )),
+            other => invalid(other.to_string()),
+        })?;
+        Ok(Self {
+            blocks: blocks.to_vec(),
+            ..self
+        })
+    }
+    /// The blocks stacked on the tower, the lowest first.
+    pub fn blocks(&self) -> &[Block] {
+        &self.blocks
+    }
+    /// The tower and the blocks on it as a [`Stack`]; `None` without blocks.
+    pub fn stack(&self) -> Option<Stack> {
+        let tower = self.tower.as_ref().filter(|_| !self.blocks.is_empty())?;
+        let mut all = vec![Block::from_tower(tower)];
+        all.extend_from_slice(&self.blocks);
+        Stack::new(&all, self.building, self.gravity).ok()
     }
     /// The tower, if any.
     pub fn tower(&self) -> Option<&Tower> {

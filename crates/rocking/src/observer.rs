@@ -11,6 +11,7 @@ use crate::event::Event;
 use crate::ground::Piece;
 use crate::integrator::DenseOutput;
 use crate::regime::{Motion, Pivot, Regime, State, TowerRegime};
+use crate::stack::StackState;
 use std::ops::ControlFlow;
 
 /// Why an observer ends a run.
@@ -94,8 +95,20 @@ pub struct Step<'a> {
     pub t0: f64,
     /// End (s).
     pub t1: f64,
-    /// Regime throughout the step.
+    /// Regime throughout the step (of the tower and the building in a stacked run).
     pub regime: Regime,
+    /// In a stacked run, the response of the whole stack ([`Sample::stack`]).
+    pub(crate) stack: Option<StackSampler<'a>>,
+}
+
+/// The response of a stacked run at an instant of a step.
+#[derive(Clone, Copy)]
+pub(crate) struct StackSampler<'a>(pub(crate) &'a dyn Fn(f64) -> Sample);
+
+impl std::fmt::Debug for StackSampler<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("StackSampler")
+    }
 }
 
 /// The response at one instant.
@@ -119,12 +132,18 @@ pub struct Sample {
     pub top_abs_acc: f64,
     /// Combined motion.
     pub motion: Motion,
-    pivot: Option<Pivot>,
+    /// In a stacked run, every interface's rotation and angular velocity
+    /// (index 0 the tower, as `state`; `k` the block `k + 1`) and the slip.
+    pub stack: Option<StackState>,
+    pub(crate) pivot: Option<Pivot>,
 }
 
 impl Step<'_> {
     /// The response at `t` in `[t0, t1]`.
     pub fn sample(&self, t: f64) -> Sample {
+        if let Some(StackSampler(at)) = self.stack {
+            return at(t);
+        }
         let y = match self.interpolant {
             Interpolant::Constant(y) => y,
             Interpolant::Dense(d) => State::from_components(&d.state(t)),
@@ -155,6 +174,7 @@ impl Step<'_> {
             top_dx,
             top_abs_acc,
             motion: self.regime.motion(),
+            stack: None,
             pivot,
         }
     }

@@ -111,6 +111,8 @@ pub struct Summary {
     /// What the free motion from the end does ([`free_motion_overturns`]):
     /// `None` while ground motion remains after the end or the building slides.
     pub will_overturn: Option<bool>,
+    /// What a stacked run found of the blocks above the tower; `None` without them.
+    pub stack: Option<crate::stack::StackSummary>,
 }
 
 impl Summary {
@@ -187,6 +189,7 @@ impl Tracker {
                 min_effective_gravity: None,
                 end_state: EndState::Rest,
                 will_overturn: None,
+                stack: None,
             },
         }
     }

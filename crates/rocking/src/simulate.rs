@@ -88,7 +88,11 @@ pub struct Initial {
     pub theta_dot: f64,
 }
 
-/// Runs `model` under `ground` from `initial` and reports to `observer`.
+/// Runs `model` under `ground` from `initial` and reports to `observer`. A
+/// model with blocks on its tower ([`Model::with_blocks`]) runs as a stack:
+/// the summary's tower quantities are the tower's (block 1), and
+/// [`Summary::stack`] holds the blocks'; samples carry every block's state
+/// ([`crate::Sample::stack`]) and events say whose they are ([`crate::Event::block`]).
 pub fn simulate(model: &Model, ground: &GroundMotion, initial: Initial, settings: &Settings, observer: &mut impl Observer) -> Result<Summary, Error> {
     simulate_with_vertical(model, ground, None, initial, settings, observer)
 }
@@ -113,6 +117,9 @@ pub fn simulate_with_vertical(
             parameter: Parameter::InitialTheta,
             reason: format!("|θ| must be below π/2 (overturned), got {}", initial.theta),
         });
+    }
+    if let Some(stack) = model.stack() {
+        return crate::stack::simulate(model, &stack, ground, vertical, initial, settings, observer);
     }
     let kernel = Kernel::new(model);
     if !kernel.has_tower && (initial.theta != 0.0 || initial.theta_dot != 0.0) {

@@ -230,6 +230,7 @@ mod tests {
             before: state,
             after: state,
             regime: Regime { tower, building },
+            block: 0,
         }
     }
 

@@ -310,6 +310,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 t0: self.integ.t,
                 t1,
                 regime: self.regime,
+                stack: None,
             };
             if let ControlFlow::Break(halt) = self.report.observer.on_step(&step) {
                 return Err(Error::halted(halt, self.integ.t));

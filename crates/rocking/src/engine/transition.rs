@@ -267,6 +267,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             before,
             after: self.integ.y,
             regime: self.regime,
+            block: 0,
         };
         self.report.tracker.event(&event);
         if let ControlFlow::Break(halt) = self.report.observer.on_event(&event) {

@@ -36,12 +36,15 @@ pub mod geometry;
 pub mod impact;
 mod linalg;
 pub mod run;
+mod simulate;
 #[cfg(test)]
 mod tests;
 
 use crate::body::{Building, Tower};
 use crate::regime::{BuildingRegime, Pivot};
 use arrayvec::ArrayVec;
+pub(crate) use simulate::simulate;
+pub use simulate::StackSummary;
 
 /// The most blocks a stack may have.
 pub const MAX_BLOCKS: usize = 6;

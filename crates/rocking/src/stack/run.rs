@@ -31,8 +31,10 @@ use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::error::Error;
 use crate::ground::GroundMotion;
 use crate::integrator::{find_crossing, DenseOutput, Dop853, StepFailure};
+use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
 use crate::simulate::REST_ANGULAR_VELOCITY;
+use std::ops::ControlFlow;
 
 /// How a stack is run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,10 +113,25 @@ pub struct BlockSummary {
     /// The largest `|θ_k|` (rad), located where `θ̇_k` changes sign inside a
     /// step (by root finding on the dense output) or at an event.
     pub max_abs_theta: f64,
+    /// The least and the largest `θ_k` (rad), located as `max_abs_theta`.
+    pub theta_range: (f64, f64),
+    /// The largest friction demand `|T'| / N'` of the interface under the
+    /// block ([`super::dynamics::InterfaceLoad::friction_demand`]; infinite
+    /// where the blocks above lost contact): kept by [`crate::simulate`], 0
+    /// from [`run`].
+    pub max_friction_demand: f64,
     /// Impacts of the interface (those that seat it included).
     pub impacts: usize,
     /// The time (s) of the interface's first uplift, if one happened.
     pub first_uplift_time: Option<f64>,
+}
+
+impl BlockSummary {
+    /// A value of `θ_k` reached.
+    fn reach(&mut self, theta: f64) {
+        self.theta_range = (self.theta_range.0.min(theta), self.theta_range.1.max(theta));
+        self.max_abs_theta = self.max_abs_theta.max(theta.abs());
+    }
 }
 
 /// What a run leaves.
@@ -153,10 +170,31 @@ pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
 
 /// Runs `stack` under the horizontal `ground` motion from `initial`.
 pub fn run(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings) -> Result<StackRun, Error> {
+    run_with(stack, ground, initial, settings, &mut ())
+}
+
+/// What a run tells as it goes, besides what it keeps in [`StackRun`]: each
+/// stretch of smooth motion and each regime change. Either may end the run
+/// (an observer's `ControlFlow::Break`).
+pub(crate) trait Hook {
+    /// The motion of `regime` over `[t0, t1]`, `at(t)` the state there.
+    fn step(&mut self, _regime: &StackRegime, _at: &dyn Fn(f64) -> StackState, _t0: f64, _t1: f64) -> Flow {
+        Flow::Continue(())
+    }
+    /// A regime change.
+    fn event(&mut self, _event: &StackEvent) -> Flow {
+        Flow::Continue(())
+    }
+}
+
+impl Hook for () {}
+
+/// [`run`], telling `hook` the steps and events as they come.
+pub(crate) fn run_with(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings, hook: &mut dyn Hook) -> Result<StackRun, Error> {
     macro_rules! sized {
         ($($n:literal => $s:literal),*) => {
             match stack.len() {
-                $($n => Runner::<$s> { stack, ground, settings }.run(initial),)*
+                $($n => Runner::<$s> { stack, ground, settings }.run(initial, hook),)*
                 _ => unreachable!("a stack has 1 to MAX_BLOCKS blocks"),
             }
         };
@@ -389,7 +427,7 @@ impl<const S: usize> Runner<'_, S> {
         best
     }
 
-    fn run(&self, initial: &StackState) -> Result<StackRun, Error> {
+    fn run(&self, initial: &StackState, hook: &mut dyn Hook) -> Result<StackRun, Error> {
         let settings = self.settings;
         let mut regime = initial_regime(self.stack, initial);
         let mut state = *initial;
@@ -400,6 +438,7 @@ impl<const S: usize> Runner<'_, S> {
             blocks: (0..self.n())
                 .map(|k| BlockSummary {
                     max_abs_theta: state.theta[k].abs(),
+                    theta_range: (state.theta[k].min(0.0), state.theta[k].max(0.0)),
                     ..BlockSummary::default()
                 })
                 .collect(),
@@ -423,7 +462,7 @@ impl<const S: usize> Runner<'_, S> {
                         last: "stack transition",
                     });
                 }
-                if self.apply(&mut out, &mut regime, &mut state, watch, t) {
+                if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
                     break 'run;
                 }
             }
@@ -448,6 +487,9 @@ impl<const S: usize> Runner<'_, S> {
                 let crossing = self.first_crossing(&regime, &dense, t0, t1);
                 let reached = crossing.map_or(t1, |(_, te)| te);
                 self.track_peaks(&mut out, &regime, &dense, t0, reached);
+                if let ControlFlow::Break(halt) = hook.step(&regime, &|t| self.unpack(&dense.state(t)), t0, reached) {
+                    return Err(Error::halted(halt, t0));
+                }
                 while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {
                     let ts = next_sample as f64 * settings.sample_interval;
                     out.samples.push(StackSample {
@@ -460,7 +502,7 @@ impl<const S: usize> Runner<'_, S> {
                 t = reached;
                 if let Some((watch, te)) = crossing {
                     state = self.unpack(&dense.state(te));
-                    if self.apply(&mut out, &mut regime, &mut state, watch, te) {
+                    if self.apply(&mut out, &mut regime, &mut state, watch, te, hook)? {
                         break 'run;
                     }
                     continue 'run;
@@ -491,7 +533,7 @@ impl<const S: usize> Runner<'_, S> {
             }
             let theta = |t: f64| dense.state(t)[k];
             let rate = |t: f64| dense.state(t)[n + k];
-            let mut peak = theta(t0).abs().max(theta(t1).abs());
+            let (mut low, mut high) = (theta(t0).min(theta(t1)), theta(t0).max(theta(t1)));
             let (mut ta, mut fa) = (t0, rate(t0));
             for j in 1..=PARTS {
                 let tb = if j == PARTS { t1 } else { t0 + (t1 - t0) * j as f64 / PARTS as f64 };
@@ -500,19 +542,23 @@ impl<const S: usize> Runner<'_, S> {
                     // Orient the bracket so that the function rises through 0.
                     let sign = fb.signum();
                     let at = find_crossing(|t| sign * rate(t), ta, sign * fa, tb, sign * fb, 0.0);
-                    peak = peak.max(theta(at.ta).abs()).max(theta(at.tb).abs());
+                    for t in [at.ta, at.tb] {
+                        (low, high) = (low.min(theta(t)), high.max(theta(t)));
+                    }
                 }
                 (ta, fa) = (tb, fb);
             }
-            out.blocks[k].max_abs_theta = out.blocks[k].max_abs_theta.max(peak);
+            out.blocks[k].reach(low);
+            out.blocks[k].reach(high);
         }
     }
 
     /// Applies the transition of `watch` at `t`, records it, and says whether
     /// the run ends (an overturning).
-    fn apply(&self, out: &mut StackRun, regime: &mut StackRegime, state: &mut StackState, watch: Watch, t: f64) -> bool {
+    #[allow(clippy::too_many_arguments)]
+    fn apply(&self, out: &mut StackRun, regime: &mut StackRegime, state: &mut StackState, watch: Watch, t: f64, hook: &mut dyn Hook) -> Result<bool, Error> {
         let (next_regime, next_state, kind, ratio) = self.switch(regime, watch, t, state);
-        out.events.push(StackEvent {
+        let event = StackEvent {
             time: t,
             kind,
             regime_before: *regime,
@@ -520,7 +566,11 @@ impl<const S: usize> Runner<'_, S> {
             regime: next_regime,
             after: next_state,
             seat_impulse_ratio: ratio,
-        });
+        };
+        out.events.push(event);
+        if let ControlFlow::Break(halt) = hook.event(&event) {
+            return Err(Error::halted(halt, t));
+        }
         out.max_seat_impulse_ratio = out.max_seat_impulse_ratio.max(ratio);
         match kind {
             StackEventKind::Impact(k) | StackEventKind::Rest(k) => out.blocks[k].impacts += 1,
@@ -530,14 +580,14 @@ impl<const S: usize> Runner<'_, S> {
             _ => {}
         }
         for (k, block) in out.blocks.iter_mut().enumerate() {
-            block.max_abs_theta = block.max_abs_theta.max(state.theta[k].abs());
+            block.reach(state.theta[k]);
         }
         *regime = next_regime;
         *state = next_state;
         if let StackEventKind::Overturn(k) = kind {
             out.overturned = Some(k);
-            return true;
+            return Ok(true);
         }
-        false
+        Ok(false)
     }
 }
