@@ -4,11 +4,12 @@
 
 use crate::capacity::Capacity;
 use crate::check::{governing, Check};
-use crate::dynamic::{dynamic_check, DynamicCheck, RecordSet};
+use crate::dynamic::{dynamic_check_ticking, most_runs, DynamicCheck, RecordSet};
 use crate::input::AssessmentInput;
 use crate::outputs::{assessment_json, capacity_csv, records_csv, spectra_csv};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The outcome of an assessment.
 #[derive(Debug, Clone)]
@@ -32,15 +33,26 @@ impl Assessment {
     /// As [`Assessment::run`], the records taken from `cache` when read before
     /// (one read of each record file for all the towers of an inventory).
     pub fn run_cached(input: &AssessmentInput, cache: &RecordCache) -> Result<Self, Error> {
+        Self::run_observed(input, cache, &|_, _| {})
+    }
+
+    /// As [`Assessment::run_cached`], `progress(done, most)` told after each
+    /// record's run of the dynamic checks: the runs done, and the most there
+    /// can be ([`most_runs`] of each check).
+    pub fn run_observed(input: &AssessmentInput, cache: &RecordCache, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Self, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
         let (set, dynamic) = if input.file.records.is_empty() {
             (None, Vec::new())
         } else {
             let set = RecordSet::read_cached(input, capacity.t_slc, cache)?;
-            let dynamic = [Role::LifeSafety, Role::Collapse]
+            let roles = [Role::LifeSafety, Role::Collapse];
+            let most = roles.len() * most_runs(set.records.len(), &input.lambda);
+            let done = AtomicUsize::new(0);
+            let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, most);
+            let dynamic = roles
                 .into_iter()
-                .map(|role| dynamic_check(input, &set, &capacity, role))
+                .map(|role| dynamic_check_ticking(input, &set, &capacity, role, &tick))
                 .collect::<Result<Vec<_>, _>>()?;
             (Some(set), dynamic)
         };

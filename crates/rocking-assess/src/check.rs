@@ -30,6 +30,48 @@ impl Method {
     }
 }
 
+/// What a check is, for a reader: the words of the report and of the page.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MethodText {
+    /// Its name in words: `activation`, `linear kinematic`, `non-linear kinematic`, `non-linear dynamic`.
+    pub name: &'static str,
+    /// When it stops holding, in HTML (indices as `<sub>`), with the Circolare's section.
+    pub formula_html: String,
+}
+
+impl Method {
+    /// Every method, in the order of the checks.
+    pub const ALL: [Method; 4] = [
+        Method::Activation,
+        Method::LinearKinematic,
+        Method::NonlinearKinematic,
+        Method::NonlinearDynamic,
+    ];
+
+    /// Its name and formula, `q` the behaviour factor of the linear kinematic check.
+    pub fn text(self, q: f64) -> MethodText {
+        let (name, formula_html) = match self {
+            Method::Activation => (
+                "activation",
+                "a<sub>g</sub> S(a<sub>g</sub>) ≥ a<sub>0</sub>* activates (Circolare 2019 eq. C8.7.1.8)".to_string(),
+            ),
+            Method::LinearKinematic => (
+                "linear kinematic",
+                format!("a<sub>g</sub> &gt; q · a<sub>g,capacity</sub>(activation), q = {q} (§C8.7.1.2.1.7)"),
+            ),
+            Method::NonlinearKinematic => (
+                "non-linear kinematic",
+                "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)".to_string(),
+            ),
+            Method::NonlinearDynamic => (
+                "non-linear dynamic",
+                "records run through the model: none beyond d<sub>0</sub>, mean (largest with fewer than 7) ≤ d<sub>LS</sub> (§C8.7.1.2.1.9)".to_string(),
+            ),
+        };
+        MethodText { name, formula_html }
+    }
+}
+
 impl fmt::Display for Method {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())

@@ -14,7 +14,7 @@
 
 use crate::capacity::Capacity;
 use crate::check::{Check, Method, Unit};
-use crate::input::AssessmentInput;
+use crate::input::{AssessmentInput, LambdaScan};
 use crate::search::AgCapacity;
 use crate::site::Role;
 use rayon::prelude::*;
@@ -144,10 +144,11 @@ impl RecordSet {
             .file
             .records
             .par_iter()
-            .map(|path| {
+            .map(|entry| {
+                let path = &entry.path;
                 // The record's duration is not known before it is read: a first case reads it.
                 let read = |duration: f64| {
-                    Scenario::from_table(input.record_table(path, duration)?, origin)
+                    Scenario::from_table(input.record_table(entry, duration)?, origin)
                         .and_then(|s| s.build_cached(cache))
                         .map_err(|mut e| {
                             // The keys of the record's [ground] are the set's.
@@ -159,8 +160,7 @@ impl RecordSet {
                             e.fault.key = Some(key.into());
                             // The message names the record (that of a file that
                             // cannot be read does; one of the case built on it may not).
-                            let name = path.rsplit('/').next().unwrap_or(path);
-                            if !e.fault.kind.to_string().contains(name) {
+                            if !e.fault.kind.to_string().contains(entry.name()) {
                                 e.fault.kind = rocking_scenario::ErrorKind::Invalid(format!("{path}: {}", e.fault.kind));
                             }
                             e
@@ -177,7 +177,7 @@ impl RecordSet {
                     .into_iter()
                     .map(|a| a / g)
                     .collect();
-                let name = path.rsplit('/').next().unwrap_or(path).to_string();
+                let name = entry.name().to_string();
                 Ok(SetRecord {
                     path: path.clone(),
                     name,
@@ -206,9 +206,34 @@ impl RecordSet {
     }
 }
 
+/// Told after each record's run of a dynamic check (a progress bar's tick).
+pub type Tick<'a> = &'a (dyn Fn() + Sync);
+
+/// The most record runs of one dynamic check with `records` records and the
+/// scan `lambda`: the set at λ = 1, at every λ of the scan, and at each step
+/// of the bisection (a bracket no wider than the scan's step, or its first λ,
+/// halved down to [`LAMBDA_TOLERANCE`]). Fewer are run when the check holds
+/// over the whole scan, or a record fails.
+pub fn most_runs(records: usize, lambda: &LambdaScan) -> usize {
+    let mut width = lambda.step.max(lambda.from);
+    let mut halvings = 0;
+    while width > LAMBDA_TOLERANCE {
+        width *= 0.5;
+        halvings += 1;
+    }
+    records * (1 + lambda.values().len() + halvings)
+}
+
 /// The set's responses at λ (each record at λ times its scale) and the verdict there.
-fn at_lambda(set: &RecordSet, scales: &[f64], lambda: f64, rule: SetRule, capacity: &Capacity, d_ls: f64) -> LambdaPoint {
-    let responses: Vec<Result<RecordResponse, String>> = (0..scales.len()).into_par_iter().map(|i| set.run(i, lambda * scales[i], capacity)).collect();
+fn at_lambda(set: &RecordSet, scales: &[f64], lambda: f64, rule: SetRule, capacity: &Capacity, d_ls: f64, tick: Tick<'_>) -> LambdaPoint {
+    let responses: Vec<Result<RecordResponse, String>> = (0..scales.len())
+        .into_par_iter()
+        .map(|i| {
+            let r = set.run(i, lambda * scales[i], capacity);
+            tick();
+            r
+        })
+        .collect();
     point(lambda, responses, rule, capacity, d_ls)
 }
 
@@ -232,6 +257,11 @@ fn point(lambda: f64, responses: Vec<Result<RecordResponse, String>>, rule: SetR
 
 /// The non-linear dynamic check of the life-safety or collapse state `role`.
 pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capacity, role: Role) -> Result<DynamicCheck, Error> {
+    dynamic_check_ticking(input, set, capacity, role, &|| {})
+}
+
+/// As [`dynamic_check`], `tick` told after each record's run (at most [`most_runs`]).
+pub fn dynamic_check_ticking(input: &AssessmentInput, set: &RecordSet, capacity: &Capacity, role: Role, tick: Tick<'_>) -> Result<DynamicCheck, Error> {
     let origin = input.origin();
     let spectrum = input.site.spectrum(role);
     let limit_state = input.site.limit_state(role);
@@ -246,13 +276,17 @@ pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capaci
         fit_record_set(&set.periods, &spectra, &target_g, set.range).map_err(|e| Fault::invalid("assessment.records", e.to_string()).in_file(origin))?;
     let rule = fitted.rule;
     let scales = fitted.scales.clone();
-    let at_one = at_lambda(set, &scales, 1.0, rule, capacity, d_ls);
+    let at_one = at_lambda(set, &scales, 1.0, rule, capacity, d_ls, tick);
     // The scan: every (λ, record) pair in parallel; the whole curve is kept.
     let lambdas = input.lambda.values();
     let n = scales.len();
     let runs: Vec<Result<RecordResponse, String>> = (0..lambdas.len() * n)
         .into_par_iter()
-        .map(|k| set.run(k % n, lambdas[k / n] * scales[k % n], capacity))
+        .map(|k| {
+            let r = set.run(k % n, lambdas[k / n] * scales[k % n], capacity);
+            tick();
+            r
+        })
         .collect();
     let mut scan: Vec<LambdaPoint> = runs
         .chunks(n)
@@ -282,7 +316,7 @@ pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capaci
     if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
         while hi - lo > LAMBDA_TOLERANCE {
             let mid = 0.5 * (lo + hi);
-            let p = at_lambda(set, &scales, mid, rule, capacity, d_ls);
+            let p = at_lambda(set, &scales, mid, rule, capacity, d_ls, tick);
             if !p.complete {
                 error = incomplete(&p);
                 break;

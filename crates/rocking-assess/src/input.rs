@@ -8,7 +8,7 @@
 use crate::capacity::{Capacity, CurveKind};
 use crate::check::Check;
 use crate::site::{Role, Site};
-use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario};
+use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario, SetEntry};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
 
@@ -142,17 +142,23 @@ impl AssessmentInput {
     }
     /// The input files besides the assessment file: the grid and the records.
     pub fn inputs(&self) -> Vec<PathBuf> {
-        let mut inputs: Vec<PathBuf> = self.file.records.iter().map(|r| self.file.folder().join(r)).collect();
+        let mut inputs: Vec<PathBuf> = self
+            .file
+            .records
+            .iter()
+            .filter(|r| r.text.is_none())
+            .map(|r| self.file.folder().join(&r.path))
+            .collect();
         if let rocking_scenario::SiteSource::Grid { path, .. } = &self.file.site.source {
             inputs.push(path.clone());
         }
         inputs
     }
     /// The scenario table of one record's run: the file's scenario with
-    /// `[ground]` the record file `record` (relative to the file's folder,
-    /// a CSV file with the set's `units` and `dt`) and `simulation.duration`
-    /// the given one.
-    pub fn record_table(&self, record: &str, duration: f64) -> Result<Table, Error> {
+    /// `[ground]` the record of the set `record` (a file relative to the
+    /// file's folder or a text, a CSV record with the set's `units` and
+    /// `dt`) and `simulation.duration` the given one.
+    pub fn record_table(&self, record: &SetEntry, duration: f64) -> Result<Table, Error> {
         Ok(with_ground(&self.file.scenario, self.file.record_ground(record)?, duration))
     }
 

@@ -54,8 +54,10 @@ pub use capacity::{
     activation_acceleration, activation_multiplier, collapse_displacement, exact_acceleration_at, exact_capacity_curve, linear_capacity_curve,
     secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind, DEFAULT_CONFIDENCE_FACTOR,
 };
-pub use check::{acceleration_ratio, governing, Check, Method, Unit};
-pub use dynamic::{combined_response, dynamic_check, DynamicCheck, LambdaPoint, RecordResponse, RecordSet, SetRecord, LAMBDA_TOLERANCE};
+pub use check::{acceleration_ratio, governing, Check, Method, MethodText, Unit};
+pub use dynamic::{
+    combined_response, dynamic_check, dynamic_check_ticking, most_runs, DynamicCheck, LambdaPoint, RecordResponse, RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
+};
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
 pub use inventory::{Inventory, InventoryError, OnAssessed};

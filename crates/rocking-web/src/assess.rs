@@ -3,9 +3,11 @@
 //! the site parameters of a hazard grid at a site (rocking-codes), so that a
 //! grid's site fills the page's fields with the numbers the command uses.
 
-use rocking_assess::{assessment_json, AssessmentInput, CAPACITY_POINTS};
+use rocking_assess::{assessment_json, Assessment, AssessmentInput, Method, CAPACITY_POINTS};
 use rocking_codes::{HazardGrid, LimitState};
+use rocking_scenario::RecordCache;
 use serde_json::{json, Value};
+use std::cell::RefCell;
 use std::path::Path;
 use wasm_bindgen::prelude::*;
 
@@ -20,12 +22,10 @@ pub const ASSESS_ORIGIN: &str = "assess.toml";
 /// `curve`, the capacity curve `[[d*, a*], …]` of `capacity.csv`. An error is
 /// the command's one line, the file named `assess.toml`.
 pub fn assess_json(text: &str) -> Result<String, String> {
-    let value: Value = serde_json::from_str(text).map_err(|e| format!("{ASSESS_ORIGIN}: not a JSON object: {e}"))?;
-    let table: toml::Table = serde_json::from_value(crate::strip_nulls(value)).map_err(|e| format!("{ASSESS_ORIGIN}: {e}"))?;
-    let input = AssessmentInput::from_table(table, Path::new(ASSESS_ORIGIN)).map_err(|e| e.to_string())?;
+    let input = input(text)?;
     if !input.file.records.is_empty() {
         return Err(format!(
-            "{ASSESS_ORIGIN}: assessment.records: the page runs the kinematic checks only: run the dynamic ones with rocking assess"
+            "{ASSESS_ORIGIN}: assessment.records: the kinematic checks take no record set: the dynamic checks are assess_dynamic_json's"
         ));
     }
     let capacity = input.capacity().map_err(|e| e.to_string())?;
@@ -57,6 +57,87 @@ pub fn grid_site_json(grid: &str, lon: f64, lat: f64, nominal_life: f64, use_coe
         out.insert(state.as_str().into(), json!({ "ag": site.ag, "F0": site.f0, "Tc_star": site.tc_star }));
     }
     Ok(Value::Object(out).to_string())
+}
+
+/// The whole of `rocking assess` for an assessment file given as the JSON text
+/// of its table, the record set given as text: `assessment.records` is
+/// `[{ "name": "elcentro.AT2", "text": "…the file's content…" }, …]`, each
+/// record read by the reader of the command's files. The JSON text of
+/// `assessment.json` as the command writes it (with the dynamic checks), plus
+/// `curve` (the capacity curve, `[[d*, a*], …]`), `records_csv` and
+/// `spectra_csv` (the texts of `records.csv` and `spectra.csv`).
+/// `progress(done, most)` is told after each record's run. An error is the
+/// command's one line, the file named `assess.toml`; a record that fails to
+/// run leaves its check not completed, as in the command's `assessment.json`.
+pub fn assess_dynamic_json(text: &str, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<String, String> {
+    let input = input(text)?;
+    if input.file.records.is_empty() {
+        return Err(format!(
+            "{ASSESS_ORIGIN}: assessment.records: give the record set (3 records or more) for the dynamic checks"
+        ));
+    }
+    let done = Assessment::run_observed(&input, &RecordCache::with_capacity(input.file.records.len()), progress).map_err(|e| e.to_string())?;
+    let mut out = done.json(&input);
+    if let Value::Object(map) = &mut out {
+        map.insert("curve".into(), json!(done.capacity.curve_points(CAPACITY_POINTS)));
+        if let Some((records, spectra)) = done.set_csvs() {
+            map.insert("records_csv".into(), json!(records));
+            map.insert("spectra_csv".into(), json!(spectra));
+        }
+    }
+    Ok(out.to_string())
+}
+
+/// Each check's name and formula (HTML) as the command's report.html writes
+/// them, for the behaviour factor `q`: the JSON text of `{ "activation": {
+/// "name", "formula_html" }, … }`, keyed by the method's name in the outputs.
+pub fn check_texts_json(q: f64) -> String {
+    let map: serde_json::Map<String, Value> = Method::ALL
+        .iter()
+        .map(|m| {
+            let t = m.text(q);
+            (m.as_str().to_string(), json!({ "name": t.name, "formula_html": t.formula_html }))
+        })
+        .collect();
+    Value::Object(map).to_string()
+}
+
+/// The assessment file's table from its JSON text, validated.
+fn input(text: &str) -> Result<AssessmentInput, String> {
+    let value: Value = serde_json::from_str(text).map_err(|e| format!("{ASSESS_ORIGIN}: not a JSON object: {e}"))?;
+    let table: toml::Table = serde_json::from_value(crate::strip_nulls(value)).map_err(|e| format!("{ASSESS_ORIGIN}: {e}"))?;
+    AssessmentInput::from_table(table, Path::new(ASSESS_ORIGIN)).map_err(|e| e.to_string())
+}
+
+thread_local! {
+    /// The page's progress function during [`assess_dynamic`] (the page's
+    /// engine runs on one thread: rayon runs its work where it is called).
+    static PROGRESS: RefCell<Option<js_sys::Function>> = const { RefCell::new(None) };
+}
+
+/// Tells the page's progress function, if any, the runs done and the most.
+fn tell_progress(done: usize, most: usize) {
+    PROGRESS.with(|p| {
+        if let Some(f) = &*p.borrow() {
+            // A progress function that throws does not stop the assessment.
+            let _ = f.call2(&JsValue::NULL, &JsValue::from(done as f64), &JsValue::from(most as f64));
+        }
+    });
+}
+
+/// See [`assess_dynamic_json`]; `progress` a JavaScript function `(done, most) => …`.
+#[wasm_bindgen(js_name = assessDynamic)]
+pub fn assess_dynamic(text: &str, progress: js_sys::Function) -> Result<String, JsError> {
+    PROGRESS.with(|p| *p.borrow_mut() = Some(progress));
+    let out = assess_dynamic_json(text, &tell_progress);
+    PROGRESS.with(|p| *p.borrow_mut() = None);
+    out.map_err(|e| JsError::new(&e))
+}
+
+/// See [`check_texts_json`].
+#[wasm_bindgen(js_name = checkTexts)]
+pub fn check_texts(q: f64) -> String {
+    check_texts_json(q)
 }
 
 /// See [`assess_json`].

@@ -26,7 +26,7 @@ mod assess;
 mod output;
 mod spectrum;
 
-pub use assess::{assess_json, grid_site_json, ASSESS_ORIGIN};
+pub use assess::{assess_dynamic_json, assess_json, check_texts_json, grid_site_json, ASSESS_ORIGIN};
 pub use spectrum::record_spectrum_json;
 
 use rocking_scenario::{Scenario, Sweep};

@@ -42,27 +42,15 @@ fn verdict(c: &Check) -> String {
     }
 }
 
-fn formula(c: &Check, q: f64) -> String {
-    match c.method {
-        Method::Activation => "a<sub>g</sub> S(a<sub>g</sub>) ≥ a<sub>0</sub>* activates (Circolare 2019 eq. C8.7.1.8)".into(),
-        Method::LinearKinematic => format!("a<sub>g</sub> &gt; q · a<sub>g,capacity</sub>(activation), q = {q} (§C8.7.1.2.1.7)"),
-        Method::NonlinearKinematic => {
-            "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)".into()
-        }
-        Method::NonlinearDynamic => {
-            "records run through the model: none beyond d<sub>0</sub>, mean (largest with fewer than 7) ≤ d<sub>LS</sub> (§C8.7.1.2.1.9)".into()
-        }
-    }
-}
-
 fn check_row(out: &mut String, c: &Check, q: f64) {
     let bound = if c.ag_capacity.is_lower_bound() { "≥ " } else { "" };
+    let text = c.method.text(q);
     let _ = writeln!(
         out,
         "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{} {}</td><td class=\"n\">{} {}</td><td class=\"n\">{}</td><td class=\"n\">{bound}{}</td><td class=\"n\">{bound}{}</td><td>{}</td></tr>",
         c.limit_state,
-        c.method.as_str().replace('_', " "),
-        formula(c, q),
+        text.name,
+        text.formula_html,
         sig(c.demand, 4),
         c.unit.as_str().replace("m/s2", "m/s²"),
         sig(c.capacity, 4),
@@ -280,7 +268,7 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
             out,
             "<p><b>Governing check: {} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
             g.limit_state,
-            g.method.as_str().replace('_', " "),
+            g.method.text(input.file.q).name,
             if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
             sig(g.zeta_e, 3),
             verdict(g)
@@ -365,8 +353,9 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
         for c in d.iter().filter(|c| c.check.is_none()) {
             let _ = writeln!(
                 out,
-                "<tr><td>{}</td><td>nonlinear dynamic</td><td colspan=\"7\" class=\"fails\">could not be completed: {}</td></tr>",
+                "<tr><td>{}</td><td>{}</td><td colspan=\"7\" class=\"fails\">could not be completed: {}</td></tr>",
                 c.limit_state,
+                Method::NonlinearDynamic.text(input.file.q).name,
                 esc(c.error.as_deref().unwrap_or("a record failed"))
             );
         }

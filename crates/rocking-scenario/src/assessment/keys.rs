@@ -218,8 +218,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         List,
         "",
         "none (no dynamic check)",
-        "glob patterns matching at least one file; 3 or more records to fit",
-        "The record set of the dynamic checks, relative to the assessment file; format guessed.",
+        "glob patterns matching at least one file, or tables { name, text } (a record's file name and content); 3 or more records to fit",
+        "The record set of the dynamic checks, relative to the assessment file (or given as text, as the page gives the files picked); format guessed.",
         "[\"records/*.AT2\"]",
     ),
     key(

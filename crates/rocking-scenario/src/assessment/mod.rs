@@ -56,6 +56,25 @@ pub enum Capacity {
     Exact,
 }
 
+/// One record of an assessment's set: a file (matched by a glob pattern of
+/// `assessment.records`), or its content given as text with its name
+/// (`records = [{ name = "elcentro.AT2", text = "…" }, …]`, as the page gives
+/// the files a user picks). Either is read by the reader of `[ground]`'s records.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SetEntry {
+    /// The file, relative to the assessment file's folder; or the name given with the text.
+    pub path: String,
+    /// The record's content, when given as text; `None` for a file.
+    pub text: Option<std::sync::Arc<str>>,
+}
+
+impl SetEntry {
+    /// The file name (the outputs' column and row name).
+    pub fn name(&self) -> &str {
+        self.path.rsplit('/').next().unwrap_or(&self.path)
+    }
+}
+
 /// The `[site]` and `[assessment]` of an assessment file, validated.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AssessmentFile {
@@ -68,8 +87,8 @@ pub struct AssessmentFile {
     pub q: f64,
     /// The capacity curve.
     pub capacity: Capacity,
-    /// The record files of the set, relative to the file's folder, in order; empty without a set.
-    pub records: Vec<String>,
+    /// The records of the set, in order; empty without a set.
+    pub records: Vec<SetEntry>,
     /// `units` and `dt` of the set's CSV records (as `[ground]` takes them for a CSV record).
     pub csv: CsvOptions,
     /// `units` and `dt` as written, for the `[ground]` of each CSV record of the set.
@@ -147,7 +166,11 @@ impl AssessmentFile {
             .choice("capacity", &[("linear", Capacity::Linear), ("exact", Capacity::Exact)])?
             .unwrap_or(Capacity::Linear);
         let records = match a.get("records") {
-            Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?,
+            Some(Value::Array(items)) if items.iter().any(Value::is_table) => given_records(items)?,
+            Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?
+                .into_iter()
+                .map(|path| SetEntry { path, text: None })
+                .collect(),
             None => Vec::new(),
         };
         let units = a.choice("units", &crate::ground::ACCELERATION_UNITS)?;
@@ -221,9 +244,14 @@ impl AssessmentFile {
     pub fn read_records(&self) -> Result<Vec<(String, Record)>, Error> {
         self.records
             .iter()
-            .map(|path| {
-                read_record_with(&self.folder().join(path), &self.csv, self.g)
-                    .map(|r| (path.clone(), r))
+            .map(|entry| {
+                let file = self.folder().join(&entry.path);
+                let text = match &entry.text {
+                    Some(text) => Ok(std::borrow::Cow::Borrowed(&**text)),
+                    None => read_record_text(&file).map(std::borrow::Cow::Owned),
+                };
+                text.and_then(|text| parse_record_guessed(&text, &file, &self.csv, self.g))
+                    .map(|r| (entry.path.clone(), r))
                     .map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))
             })
             .collect()
@@ -235,13 +263,19 @@ impl AssessmentFile {
     /// file's folder): `type = "record"`, its `file`, and, when it reads as a
     /// CSV record (format guessed), the set's `units` and `dt` (an AT2 or ESM
     /// file carries its own). An error names `assessment.records` and the file.
-    pub fn record_ground(&self, path: &str) -> Result<Table, Error> {
+    pub fn record_ground(&self, entry: &SetEntry) -> Result<Table, Error> {
         let mut ground = Table::new();
         ground.insert("type".into(), Value::String("record".into()));
-        ground.insert("file".into(), Value::String(path.into()));
+        match &entry.text {
+            Some(text) => ground.insert("text".into(), Value::String(text.to_string())),
+            None => ground.insert("file".into(), Value::String(entry.path.clone())),
+        };
         if !self.csv_keys.is_empty() {
-            let file = self.folder().join(path);
-            let text = read_record_text(&file).map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))?;
+            let file = self.folder().join(&entry.path);
+            let text = match &entry.text {
+                Some(text) => text.to_string(),
+                None => read_record_text(&file).map_err(|kind| Fault::new("assessment.records", kind).in_file(&self.origin))?,
+            };
             let format = Record::guess_format(&text)
                 .map_err(|source| Fault::new("assessment.records", ErrorKind::Record { path: file, source }).in_file(&self.origin))?;
             if format == RecordFormat::Csv {
@@ -281,7 +315,7 @@ pub fn kinematic_damping_pct(state: LimitState) -> Option<f64> {
 /// Reads a record file as `[ground]` does with `format` guessed and no CSV
 /// options (values in g, `g` in m/s²), or what is wrong with it.
 pub fn read_record(path: &Path, g: f64) -> Result<Record, ErrorKind> {
-    read_record_with(path, &CsvOptions::default(), g)
+    parse_record_guessed(&read_record_text(path)?, path, &CsvOptions::default(), g)
 }
 
 /// The text of a record file, or what is wrong with it.
@@ -293,16 +327,69 @@ fn read_record_text(path: &Path) -> Result<String, ErrorKind> {
     })
 }
 
-/// Reads a record file as `[ground]` does with `format` guessed and, for a
-/// CSV file, the options `csv`.
-fn read_record_with(path: &Path, csv: &CsvOptions, g: f64) -> Result<Record, ErrorKind> {
-    let text = read_record_text(path)?;
+/// Parses a record's text (of the file `path`, named in errors) as `[ground]`
+/// does with `format` guessed and, for a CSV record, the options `csv`.
+fn parse_record_guessed(text: &str, path: &Path, csv: &CsvOptions, g: f64) -> Result<Record, ErrorKind> {
     let record = |source| ErrorKind::Record {
         path: path.to_path_buf(),
         source,
     };
-    let format = Record::guess_format(&text).map_err(record)?;
-    Record::parse(&text, Some(format), csv, g).map_err(record)
+    let format = Record::guess_format(text).map_err(record)?;
+    Record::parse(text, Some(format), csv, g).map_err(record)
+}
+
+/// The records of `assessment.records` given as tables `{ name, text }`:
+/// each name non-empty and unique.
+fn given_records(items: &[Value]) -> Result<Vec<SetEntry>, Fault> {
+    let mut entries: Vec<SetEntry> = Vec::with_capacity(items.len());
+    for (i, item) in items.iter().enumerate() {
+        let key = format!("assessment.records[{i}]");
+        let Value::Table(t) = item else {
+            return Err(Fault::new(
+                &key,
+                ErrorKind::WrongType {
+                    expected: "a table { name, text } like the others (patterns and given records do not mix)",
+                    got: with_article(item),
+                },
+            ));
+        };
+        if let Some(k) = t.keys().find(|k| !["name", "text"].contains(&k.as_str())) {
+            return Err(Fault::new(
+                format!("{key}.{k}"),
+                ErrorKind::UnknownKey {
+                    suggestion: closest(k, &["name", "text"]),
+                    valid: vec!["name", "text"],
+                },
+            ));
+        }
+        let string = |k: &str| match t.get(k) {
+            None => Err(Fault::new(
+                format!("{key}.{k}"),
+                ErrorKind::Missing(format!("required: the record's {}", if k == "name" { "file name" } else { "content" })),
+            )),
+            Some(Value::String(s)) => Ok(s.as_str()),
+            Some(other) => Err(Fault::new(
+                format!("{key}.{k}"),
+                ErrorKind::WrongType {
+                    expected: "a string",
+                    got: with_article(other),
+                },
+            )),
+        };
+        let name = string("name")?;
+        if name.is_empty() {
+            return Err(Fault::invalid(format!("{key}.name"), "must not be empty"));
+        }
+        let text = string("text")?;
+        if entries.iter().any(|e| e.path == name) {
+            return Err(Fault::invalid(format!("{key}.name"), format!("\"{name}\" is given twice")));
+        }
+        entries.push(SetEntry {
+            path: name.to_string(),
+            text: Some(text.into()),
+        });
+    }
+    Ok(entries)
 }
 
 /// A `[from, to]` pair of finite numbers.
