@@ -34,6 +34,7 @@ from ._rocking import Scenario, __version__
 from ._rocking import assess_raw as _assess_raw
 from ._rocking import derived as _derived
 from ._rocking import fragility_raw as _fragility_raw
+from ._rocking import inventory_raw as _inventory_raw
 from ._rocking import code_spectrum_raw as _code_spectrum_raw
 from ._rocking import run_raw as _run_raw
 from ._rocking import spectrum_raw as _spectrum_raw
@@ -48,7 +49,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["DERIVED", "KEYS", "Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "run", "spectrum", "sweep", "__version__"]
+__all__ = ["DERIVED", "KEYS", "Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "inventory", "run", "spectrum", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""
@@ -351,6 +352,57 @@ def assess(file: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threads: 
     """
     raw = file if isinstance(file, Mapping) else os.fspath(file)
     return Assessment(_assess_raw(raw, threads))
+
+
+def inventory(
+    towers: PathLike,
+    assess: Union[PathLike, Mapping[str, Any]],
+    *,
+    threads: Optional[int] = None,
+    client: Optional["distributed.Client"] = None,
+    blocks: Optional[int] = None,
+) -> Dict[str, "np.ndarray"]:
+    """Assesses every bell tower of a town, as ``rocking inventory`` does, on all cores with the GIL released.
+
+    Each row of ``towers`` is the assessment file with the row's cells set in
+    it (a dotted column is a key, ``soil``, ``topography``, ``ag_SLV``… are the
+    site's, ``lon``, ``lat`` the place on its hazard grid; an empty cell keeps
+    the file's value), assessed as :func:`assess` would assess it: the
+    kinematic checks, and the dynamic ones when the file has a record set.
+
+    Args:
+        towers: The path of the towers' CSV file (``id``, ``name``, ``lon``, ``lat``, …).
+        assess: The assessment file every tower starts from: its path, or a dict
+            with its keys (relative paths of a dict resolve against the current directory).
+        threads: Worker threads; ``None`` for one per core. With a ``client``: the
+            threads of each block (default 1).
+        client: A ``dask.distributed.Client``: the towers are cut into contiguous
+            blocks, each assessed by a task in a worker process, and their columns
+            put end to end: the same columns as the local call. The workers read the
+            hazard grid and the records at the same paths as this process.
+        blocks: With a ``client``, the number of blocks (default: 4 per worker
+            thread of the cluster, at most one per tower).
+
+    Returns:
+        The columns of ``inventory.csv``, one row per tower in input order: ``id``,
+        ``name`` (object arrays of ``str``), ``lon``, ``lat`` (float64, ``NaN`` where
+        not a number), each check's ``<LS>_<method>_ag_capacity_g`` and
+        ``<LS>_<method>_zeta_E`` (float64, ``NaN`` where not completed), ``zeta_E``
+        (the governing, least one), ``governing`` (``"SLV linear_kinematic"``) and
+        ``error`` (``""``, or the one line of a bad row: the other towers are assessed).
+
+    Raises:
+        FileNotFoundError: A file does not exist (``OSError`` if it cannot be read otherwise).
+        ValueError: The assessment file is invalid by itself, a record of its set is
+            malformed, or the towers' file has a bad header.
+        KeyboardInterrupt: Ctrl-C stops the inventory after the towers under way.
+    """
+    raw_assess: Union[str, Mapping[str, Any]] = assess if isinstance(assess, Mapping) else os.fspath(assess)
+    if client is None:
+        return _inventory_raw(os.fspath(towers), raw_assess, threads)
+    from ._dask import inventory_on
+
+    return inventory_on(client, towers, raw_assess, threads, blocks)
 
 
 def spectrum(

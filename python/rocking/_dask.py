@@ -1,4 +1,4 @@
-"""Sweeps on a Dask cluster: the cases cut into contiguous blocks, one task per block.
+"""Sweeps and inventories on a Dask cluster: the cases cut into contiguous blocks, one task per block.
 
 Block ``i`` of ``B`` runs the cases ``floor(i·n/B) … floor((i+1)·n/B) − 1`` of
 the ``n`` in case order (the blocks of ``rocking sweep --shard K/N``), in a
@@ -11,11 +11,13 @@ worker needs no file but the ground-motion records, read at the same paths.
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 
 from ._rocking import Scenario
+from ._rocking import inventory_len_raw as _inventory_len_raw
+from ._rocking import inventory_raw as _inventory_raw
 from ._rocking import sweep_file_len_raw as _sweep_file_len_raw
 from ._rocking import sweep_file_raw as _sweep_file_raw
 from ._rocking import sweep_len_raw as _sweep_len_raw
@@ -92,5 +94,33 @@ def sweep_file_on(client: "distributed.Client", path: "os.PathLike[str] | str", 
     futures = [
         client.submit(_run_file_block, absolute, text, _task_threads(threads), first, count, pure=False)
         for first, count in _blocks(client, cases, threads, blocks)
+    ]
+    return _gather(client, futures)
+
+
+def _run_inventory_block(
+    towers: str, towers_text: str, assess: Union[str, Mapping[str, Any]], assess_text: Optional[str], threads: int, first: int, count: int
+) -> Dict[str, "np.ndarray"]:
+    """The columns of towers ``first .. first + count`` of the towers' file ``towers`` whose content is ``towers_text``."""
+    return _inventory_raw(towers, assess, threads, first, count, towers_text, assess_text)
+
+
+def inventory_on(
+    client: "distributed.Client", towers: "os.PathLike[str] | str", assess: Union[str, Mapping[str, Any]], threads: Optional[int], blocks: Optional[int]
+) -> Dict[str, "np.ndarray"]:
+    """``rocking.inventory(towers, assess, client=client)``: the workers get both files' text."""
+    given = os.fspath(towers)
+    with open(given, encoding="utf-8") as f:
+        towers_text = f.read()
+    assess_text: Optional[str] = None
+    if isinstance(assess, str):
+        with open(assess, encoding="utf-8") as f:
+            assess_text = f.read()
+        # Absolute: a worker in another directory finds the grid and the records relative to the file.
+        assess = os.path.abspath(assess)
+    count = _inventory_len_raw(given, assess, towers_text, assess_text)  # checks both files here, before any task
+    futures = [
+        client.submit(_run_inventory_block, given, towers_text, assess, assess_text, _task_threads(threads), first, n, pure=False)
+        for first, n in _blocks(client, count, threads, blocks)
     ]
     return _gather(client, futures)

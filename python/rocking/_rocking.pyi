@@ -112,6 +112,30 @@ def assess_raw(file: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads:
     """
     ...
 
+def inventory_raw(
+    towers: Union[str, "os.PathLike[str]"],
+    assess: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    threads: Optional[int] = None,
+    first: int = 0,
+    count: Optional[int] = None,
+    towers_text: Optional[str] = None,
+    assess_text: Optional[str] = None,
+) -> Dict[str, "np.ndarray"]:
+    """Assesses towers ``first .. first + count`` (default: all) of a town with the GIL released; see ``rocking.inventory``.
+
+    Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
+    """
+    ...
+
+def inventory_len_raw(
+    towers: Union[str, "os.PathLike[str]"],
+    assess: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    towers_text: Optional[str] = None,
+    assess_text: Optional[str] = None,
+) -> int:
+    """The number of towers of a town (both files checked as ``inventory_raw`` checks them)."""
+    ...
+
 def spectrum_raw(records: List[str], damping: float, periods: Tuple[float, float, int]) -> Dict[str, "np.ndarray"]:
     """Response spectra (g) of record files: ``{"period_s", <file name>...}``; see ``rocking.spectrum``.
 

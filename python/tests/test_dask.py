@@ -1,6 +1,7 @@
-"""`rocking.sweep(..., client=...)` on a Dask LocalCluster of 2 worker processes:
-the same columns, value for value, as the local call (a second method: the
-cases cut into blocks and run in other processes, then put end to end).
+"""`rocking.sweep(..., client=...)` and `rocking.inventory(..., client=...)` on a
+Dask LocalCluster of 2 worker processes: the same columns, value for value, as
+the local call (a second method: the cases cut into blocks and run in other
+processes, then put end to end).
 
 Dask is an optional extra (``pip install "./python[dask]"``); without it these
 tests skip, unless ``ROCKING_REQUIRE_DASK=1`` (set by ``scripts/python-tests.sh``).
@@ -81,6 +82,20 @@ def test_a_sweep_file_on_the_cluster(client, tmp_path: Path) -> None:
     local = rocking.sweep(path)
     assert len(local["max_theta_over_alpha"]) == 12
     assert_same(rocking.sweep(path, client=client, blocks=5), local)
+
+
+def test_a_town_on_the_cluster(client, tmp_path: Path) -> None:
+    # The example town with one bad row (a negative width) among them: its error travels with its block.
+    towers = tmp_path / "towers.csv"
+    lines = (EXAMPLES / "town" / "towers.csv").read_text(encoding="utf-8").splitlines()
+    lines[3] = lines[3].replace(",3.6,", ",-3.6,")
+    towers.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    assess = EXAMPLES / "town" / "assess.toml"
+    local = rocking.inventory(towers, assess.resolve())
+    assert len(local["zeta_E"]) == 12
+    assert [i for i, e in enumerate(local["error"]) if e] == [2], "the third tower, width -3.6"
+    for blocks in (None, 5):
+        assert_same(rocking.inventory(towers, assess, client=client, blocks=blocks), local)
 
 
 def test_bad_axes_fail_here_before_any_task(client) -> None:

@@ -199,7 +199,7 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
 /// What is done with each tower's assessment besides its row (`rocking
 /// inventory --details` writes its files): the tower's index and its id, its
 /// input and its assessment; an error becomes the tower's.
-pub type OnAssessed = dyn Fn(usize, &str, &AssessmentInput, &Assessment) -> Result<(), String> + Sync;
+pub type OnAssessed = dyn Fn(usize, &str, &AssessmentInput, &Assessment) -> Result<(), String> + Send + Sync;
 
 /// The towers of a town and the assessment file they start from: one [`Row`]
 /// per tower in the order of [`Inventory::header`].
@@ -433,6 +433,17 @@ impl Inventory {
         });
         Row { index, cells }
     }
+}
+
+/// The pool to run `cases` towers from on `threads` workers (`None`: one per
+/// core), by [`rocking_scenario::run_cases`] called inside its `install`. A
+/// tower's dynamic checks run in parallel on the pool they are called from: a
+/// pool of one thread while there are towers enough for every worker (the
+/// workers' own pool holds the others), all of them when fewer.
+pub fn calling_pool(cases: usize, threads: Option<usize>) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
+    let workers = threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+    let outer = if cases >= workers { 1 } else { workers };
+    rayon::ThreadPoolBuilder::new().num_threads(outer).build()
 }
 
 impl Cases for Inventory {

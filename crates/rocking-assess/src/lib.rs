@@ -60,7 +60,7 @@ pub use dynamic::{
 };
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
-pub use inventory::{Inventory, InventoryError, OnAssessed};
+pub use inventory::{calling_pool, Inventory, InventoryError, OnAssessed};
 pub use kinematic::{
     activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_capacity, linear_kinematic_check,
     linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,

@@ -4,7 +4,7 @@
 //! (`python/` at the repository root, built by maturin). It wraps
 //! `rocking-scenario`: a scenario from a TOML file or a dict, a run with its
 //! history as NumPy arrays, a parametric sweep on all cores, and the derived
-//! quantities, fragility studies, and response and code spectra. The Python package adds the `Result` class and the docs; the
+//! quantities, fragility studies, the towers of a town, and response and code spectra. The Python package adds the `Result` class and the docs; the
 //! stubs are in `python/rocking/_rocking.pyi`.
 //!
 //! The GIL is released while a case or a sweep runs. Errors are `ValueError`
@@ -15,6 +15,7 @@ mod assess;
 mod convert;
 mod error;
 mod fragility;
+mod inventory;
 mod run;
 mod scenario;
 mod spectra;
@@ -41,6 +42,8 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_file_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(fragility::fragility_raw, m)?)?;
     m.add_function(wrap_pyfunction!(assess::assess_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(inventory::inventory_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(inventory::inventory_len_raw, m)?)?;
     m.add_function(wrap_pyfunction!(spectra::spectrum_raw, m)?)?;
     m.add_function(wrap_pyfunction!(spectra::code_spectrum_raw, m)?)?;
     Ok(())

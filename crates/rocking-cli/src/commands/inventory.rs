@@ -140,15 +140,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let total = inventory.len();
     let cases = args.shard.map_or(0..total, |s| s.cases(total));
     let threads = args.threads.map(|n| n as usize);
-    // The dynamic checks of a tower run in parallel on the pool they are
-    // called from: a pool of one thread while there are towers enough for
-    // every worker (the workers' own pool holds the others), all of them when fewer.
-    let workers = threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
-    let outer = if cases.len() >= workers { 1 } else { workers };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(outer)
-        .build()
-        .context("starting the worker threads")?;
+    let pool = rocking_assess::calling_pool(cases.len(), threads).context("starting the worker threads")?;
     let mut pushed = Ok(());
     let Written { done, wall } = pool.install(|| {
         write_rows(
