@@ -5,12 +5,16 @@
 //! other checks whole), then ends with one line naming the assessment file,
 //! the check, the record file and what went wrong, and exit status 1.
 //!
-//! The failing run: the synthetic record kt_02 at λ = 1.6 times its scale
-//! fitted to the SLV spectrum of the tests' tower on subsoil B makes the
-//! tower lift by 1e-13 rad at t = 4.58 s, where the engine's regime switches
-//! do not settle (an error of the engine's at that grazing uplift). Should the
-//! engine run it one day, the first assertion says so: another input that
-//! fails to run must then take its place.
+//! The failing run fails by design: the tests' tower made square (12 m ×
+//! 12 m, tan α = 1) on a 10 kg slab with μs = μk = 3 and the dynamic normal
+//! force. Where the slab slides under the rocking tower towards the side of
+//! its pivot, (T), (B) and (N) have no solution (Painlevé's paradox: the
+//! system's determinant over m2² R² is 4/3 · M/m2 − cos² φ − μk sin φ cos φ,
+//! −0.67 at φ = α), and the engine says so. The synthetic record kt_02 at
+//! λ = 22 times its scale fitted to the SLV spectrum gets there at
+//! t = 3.94 s; λ = 21.5 and the SLC check's records do not. Should that run
+//! end one day, the first assertion says so: another λ must then take its
+//! place.
 //!
 //! A record that reads but whose case cannot be built (too long for the
 //! history's rows) was refused without naming it; the line now names it.
@@ -23,22 +27,27 @@ use serde_json::Value;
 fn a_record_that_fails_to_run_is_one_line_and_exit_1_after_whole_files() {
     let dir = tempdir();
     synthetic_records(dir.path(), "records");
+    let slab = "[building]\nmass = 10.0\nmu_static = 3.0\nmu_kinetic = 3.0\nnormal_force = \"dynamic\"\n\n[site]";
+    let tower = tower_on_b();
+    assert!(tower.contains("width = 4.0") && tower.contains("\n[site]"), "the tests' tower has changed");
+    let square = tower.replacen("width = 4.0", "width = 12.0", 1).replacen("[site]", slab, 1);
     // [assessment] is the file's last table.
-    let text = tower_on_b() + "records = [\"records/*.AT2\"]\nlambda = { from = 1.55, to = 1.6, step = 0.05 }\n";
+    let text = square + "records = [\"records/*.AT2\"]\nlambda = { from = 21.5, to = 22.0, step = 0.5 }\n";
     let file = write(dir.path(), "assess.toml", &text);
     let out = dir.path().join("out");
     let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
     assert_eq!(
         r.code,
         Some(1),
-        "kt_02 at λ = 1.6 no longer fails to run: pick another failing input\n{}{}",
+        "kt_02 at λ = 22 no longer meets Painlevé's paradox: pick another λ\n{}{}",
         r.stdout,
         r.stderr
     );
     assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
     for needle in [
         "assess.toml: assessment.records: the SLV non-linear dynamic check could not be completed: ",
-        "record records/kt_02.AT2 at λ = 1.6: regime switches do not settle",
+        "record records/kt_02.AT2 at λ = 22: integration failed at t = 3.9",
+        "Painlevé's paradox",
     ] {
         assert!(r.stderr.contains(needle), "{needle:?} not in {}", r.stderr);
     }

@@ -132,6 +132,14 @@ impl Condition {
         toward - normal * mu_s
     }
 
+    /// Whether the condition starts its regime on zero and moves away from
+    /// it: the impact (`θ = 0` after an uplift or an impact) and the end of
+    /// a slip (`u̇ = 0` when it starts). Such a condition is armed once the
+    /// motion has left zero.
+    pub(crate) fn departs_from_zero(self) -> bool {
+        matches!(self, Condition::Impact | Condition::SlipStop)
+    }
+
     /// Whether the condition is a function of `θ` alone (its extrema are those of `θ`).
     pub(crate) fn of_theta(self) -> bool {
         matches!(self, Condition::Impact | Condition::Overturn)

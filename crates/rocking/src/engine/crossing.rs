@@ -101,6 +101,7 @@ fn theta_crossing<const N: usize>(e: &Ends, i: usize, d: &DenseOutput<N>, theta_
     points.push((e.t1, e.w1.conditions[i].v));
     first_crossing(
         points.as_slice(),
+        c.departs_from_zero(),
         |ta, va, tb, vb| {
             // With its derivative (θ̇ from the same dense output) for Newton.
             let f = |t: f64| {
@@ -151,6 +152,7 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
     points.push((t1, e.w1.conditions[i].v));
     first_crossing(
         points.as_slice(),
+        c.departs_from_zero(),
         |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
         |ta, tb| leaving_point(&value, ta, tb),
     )
@@ -159,9 +161,12 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
 /// The first instant in `points` (ordered, the condition monotone between
 /// consecutive ones) where a condition reaches zero: `locate(ta, va, tb, vb)`
 /// narrows a bracket `va < 0 <= vb`; `leaving(ta, tb)` finds where a
-/// condition that starts on zero has become negative.
+/// condition that starts on zero has become negative. `departs`: the
+/// condition is one that starts its regime on zero and moves away from it
+/// ([`Condition::departs_from_zero`]).
 pub(super) fn first_crossing(
     points: &[(f64, f64)],
+    departs: bool,
     mut locate: impl FnMut(f64, f64, f64, f64) -> f64,
     leaving: impl Fn(f64, f64) -> Option<(f64, f64)>,
 ) -> Option<f64> {
@@ -175,12 +180,24 @@ pub(super) fn first_crossing(
             return Some(locate(ta, va, tb, vb));
         }
         // Only the start can be on zero (any later point at or above zero
-        // would have ended the search): find where the motion left it. If it
-        // never did, the condition grew from zero: a transition at once.
-        return Some(match leaving(ta, tb) {
-            Some((tl, vl)) => locate(tl, vl, tb, vb),
-            None => ta,
-        });
+        // would have ended the search): find where the motion left it.
+        if let Some((tl, vl)) = leaving(ta, tb) {
+            return Some(locate(tl, vl, tb, vb));
+        }
+        // It never did: the condition grew from zero, a transition at once,
+        // unless it departs from zero. Which way such a condition leaves zero
+        // was decided at the switch that set it there, by the next
+        // derivative (`falls_back`, `slides_on`), and the regime was kept: a
+        // start on the wrong side is the rounding of that derivative (after a
+        // grazing uplift θ̈ is zero, computed as ±1e-16). It is armed where
+        // it is first negative, and at once only if it never is in the step.
+        if !departs {
+            return Some(ta);
+        }
+        let Some(j) = points.iter().position(|&(_, v)| v < 0.0) else {
+            return Some(ta);
+        };
+        return first_crossing(&points[j..], false, locate, leaving);
     }
     None
 }

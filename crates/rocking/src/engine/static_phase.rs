@@ -49,6 +49,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 points.push((t1, v1));
                 let hit = first_crossing(
                     points.as_slice(),
+                    c.departs_from_zero(),
                     |ta, va, tb, vb| find_crossing(|t| value(c, t), ta, va, tb, vb, 0.0).tb,
                     |ta, tb| leaving_point(&|t| value(c, t), ta, tb),
                 );
