@@ -25,9 +25,11 @@
 mod assess;
 mod output;
 mod spectrum;
+mod town;
 
 pub use assess::{assess_dynamic_json, assess_json, check_texts_json, grid_site_json, ASSESS_ORIGIN};
 pub use spectrum::record_spectrum_json;
+pub use town::WebTown;
 
 use rocking_scenario::{Scenario, Sweep};
 use serde_json::{json, Value};

@@ -259,6 +259,14 @@ fn static_key(state: LimitState) -> &'static str {
 pub struct GridCache(Mutex<Option<(PathBuf, Arc<HazardGrid>)>>);
 
 impl GridCache {
+    /// A cache holding the grid of `file` read from its text (the page has
+    /// the text of a grid, not the file): a site whose grid resolves to
+    /// `file` takes it, and reads no file. An error says what is wrong with the text.
+    pub fn holding(file: &Path, text: &str) -> Result<Self, String> {
+        let grid = HazardGrid::parse(text).map_err(|e| format!("{}: {e}", file.display()))?;
+        Ok(Self(Mutex::new(Some((file.to_path_buf(), Arc::new(grid))))))
+    }
+
     /// The grid of `file`: the one kept if it is that file's, else read and parsed (and kept).
     fn grid(&self, file: &Path) -> Result<Arc<HazardGrid>, Fault> {
         let mut kept = self.0.lock().unwrap_or_else(PoisonError::into_inner);
