@@ -1,18 +1,20 @@
-"""Rocking blocks under one-sine and one-cosine pulses of ground acceleration,
-the problem of N. Makris and Y. Roussos ("Rocking response of rigid blocks
-under near-source ground motions", Geotechnique 50(3), 243-262, 2000) and
-J. Zhang and N. Makris ("Rocking response of free-standing blocks under
-cycloidal pulses", Journal of Engineering Mechanics 127(5), 473-483, 2001).
+"""Rocking blocks under one-sine, one-cosine and half-sine pulses of ground
+acceleration, the problem of N. Makris and Y. Roussos ("Rocking response of
+rigid blocks under near-source ground motions", Geotechnique 50(3), 243-262,
+2000) and J. Zhang and N. Makris ("Rocking response of free-standing blocks
+under cycloidal pulses", Journal of Engineering Mechanics 127(5), 473-483,
+2001).
 
 Both papers linearise the block's equation for slender blocks
 (sin(alpha - |theta|) ~ alpha - |theta|, cos ~ 1), solve it in closed form
 piece by piece (between uplift, impacts and the pulse's end), and draw the
 least pulse amplitude that overturns the block against the pulse's
 frequency, omega_p / p: the overturning acceleration spectrum, with its two
-modes (overturning after one impact, and without impact). Their printed
-values could not be read from a source this project can cite, so this
-script derives their analytic results again, independently of the engine,
-and compares three answers for each pulse:
+modes (overturning after one impact, and without impact). Their figures and
+tables could not be read from a source this project can cite (the book's
+validation page says where they were looked for), so this script derives
+their analytic results again, independently of the engine, and compares
+three answers for each pulse:
 
 - the paper's linearised model, solved in closed form: on each piece
   theta = s alpha + K sin(omega t + phi) + c1 cosh p(t - t0) + c2 sinh p(t - t0),
@@ -21,13 +23,19 @@ and compares three answers for each pulse:
   times r at each. After the pulse the block is free, and it overturns iff
   the coefficient of e^(p t) points away from the pivot: s (theta - s alpha)
   + s theta_dot / p > 0, or it comes back to theta = 0 with enough energy
-  left after the impact (times r^2) to pass the top on the other side. For the one-sine pulse and overturning without
-  impact this gives the closed form (eta = a_p / (g alpha), psi the phase at
-  uplift, sin psi = 1 / eta, Omega = omega_p / p)
+  left after the impact (times r^2) to pass the top on the other side. For a
+  pulse of n half-cycles of a sine (n = 2: one-sine, n = 1: half-sine) and
+  overturning without impact, y = theta - alpha + theta_dot / p obeys
+  y' = p y + p alpha eta sin(omega t) from y = -alpha at uplift, and the
+  block overturns iff y > 0 when the pulse ends; with eta = a_p / (g alpha),
+  psi the phase at uplift (sin psi = 1 / eta) and Omega = omega_p / p:
 
-      eta cos(psi) - Omega = eta exp(-(2 pi - psi) / Omega)
+      eta cos(psi) - (-1)^n eta exp(-(n pi - psi) / Omega) = Omega
 
-  whose least root is the mode's threshold;
+  whose least root is the mode's threshold. A half-sine pushes one way only:
+  a block that comes back after it lands on a corner that the pulse no longer
+  loads and has less energy than it needs, so its least overturning amplitude
+  is the mode without impact, this closed form;
 - the exact non-linear equation, theta_dd = -p^2 [s sin(alpha - s theta)
   + (a_g / g) cos(alpha - s theta)], integrated with SciPy (DOP853, rtol
   1e-12) from uplift, impact to impact, and after the pulse the exact energy
@@ -35,14 +43,21 @@ and compares three answers for each pulse:
   beyond it and cannot come back, or comes back to theta = 0 with enough
   energy to pass the top on the other side after the impact);
 - the engine, `rocking run`, with the same pulse (`sine-pulse`,
-  `cosine-pulse`), its verdict `overturned` bisected.
+  `cosine-pulse`; the half-sine, which the engine has no type for, as a
+  record sampled N times over the pulse, which the engine interpolates
+  linearly: its threshold converges to the exact one as N^-2, shown), its
+  verdict `overturned` bisected.
 
 The least overturning amplitude of each method is found the same way: its
 verdict on a fixed geometric grid of amplitudes from the uplift threshold
 up (the first grid point that overturns; the overturning set can have
 islands), then bisection. The engine must match the exact answer to its
 integration tolerance; the linearised one differs from it by an amount that
-grows as alpha^2, as Housner's does.
+grows as alpha^2, as Housner's does. The slender-block limit of the engine
+(its thresholds at alpha = 0.025 and 0.05 extrapolated to alpha = 0) must be
+the papers' closed forms; at omega_p / p = 5 it must be the 2.22 g alpha that
+Zhang & Makris (2001) give for the one-sine pulse (omega_p = 15.7 rad/s on a
+block of p = pi rad/s), to the digits printed.
 """
 
 import math
@@ -62,9 +77,20 @@ R = 3.0 * G / (4.0 * P * P)
 ALPHAS = (0.025, 0.05, 0.1, 0.2, 0.3)
 # omega_p / p: a one-cosine pulse above 4 p needs over 30 g alpha (its least
 # overturning amplitude grows as (omega_p / p)^2)
-OMEGAS = {"sine": (1.0, 2.0, 4.0, 8.0), "cosine": (1.0, 2.0, 3.0, 4.0)}
-SHAPES = ("sine", "cosine")
-PHASE = {"sine": 0.0, "cosine": 0.5 * math.pi}
+OMEGAS = {"sine": (1.0, 2.0, 4.0, 5.0, 8.0), "cosine": (1.0, 2.0, 3.0, 4.0), "half-sine": (1.0, 2.0, 4.0, 8.0)}
+SHAPES = ("sine", "cosine", "half-sine")
+NAME = {"sine": "one-sine", "cosine": "one-cosine", "half-sine": "half-sine"}
+PHASE = {"sine": 0.0, "cosine": 0.5 * math.pi, "half-sine": 0.0}
+HALVES = {"sine": 2, "cosine": 2, "half-sine": 1}  # half-cycles of the pulse
+# The half-sine as a record: samples over the pulse in the table, and the
+# sampling's convergence shown on one block (alpha, omega_p / p)
+SAMPLES = 4096
+SAMPLINGS = (16, 32, 64, 128, 256, 512, 1024, 2048, 4096)
+SAMPLING_CASE = (0.1, 2.0)
+# Zhang & Makris (2001): the one-sine pulse of 15.7 rad/s overturns a block of
+# p = pi rad/s (omega_p / p = 5) from 2.22 g alpha; printed to three digits
+PRINTED = {"omega_ratio": 5.0, "eta": 2.22, "half_unit": 0.005}
+RESTITUTIONS = (0.9999, 0.999, 0.99, 0.95, 0.9)  # how the printed value pins r
 GRID = [float(x) for x in np.geomspace(1.0 + 1e-6, 30.0, 240)]  # amplitude / uplift threshold: 1.4% apart
 BISECT = 1e-10  # relative width of the final bracket
 TAIL = 30.0  # s the engine runs after the pulse: a block 1e-10 from the threshold hangs ln(1e10)/p = 11.5 s
@@ -76,6 +102,16 @@ TAIL = 30.0  # s the engine runs after the pulse: a block 1e-10 from the thresho
 # both brackets are 1e-10 wide. 1e-7 leaves a margin of 100 for other
 # platforms; the differences measured are below 3e-9.
 TOL_ENGINE = 1e-7
+# The half-sine record: linear interpolation between N samples over the pulse
+# falls short of the sine by (pi/N)^2/12 of its impulse (the chords of a
+# concave arc; the leading term of the trapezoidal rule's error), and the
+# threshold rises by about as much. Its tolerance adds twice that to
+# TOL_ENGINE; the table of the sampling shows the measured ratio (1.000 to
+# 1.003) and the order 2.
+def tol_sampled(samples):
+    return TOL_ENGINE + 2.0 * (math.pi / samples) ** 2 / 12.0
+
+
 # The closed form of the one-sine pulse's mode without impact and the
 # piece-by-piece linearised solver are two forms of one solution: they agree
 # to the root finders' 1e-10, and to the bisection's width.
@@ -88,6 +124,15 @@ TOL_CLOSED = 1e-8
 # 1.4% grid (which may pick an island at one alpha and not the other: then
 # the slope is not taken) leave it.
 TOL_SLOPE = 0.1
+# The slender-block limit: the engine's thresholds eta(alpha) = eta0 (1 + c2
+# alpha^2 + c4 alpha^4 + c6 alpha^6 ...) at alpha = 0.025, 0.05 and 0.1,
+# extrapolated to alpha = 0 by the quadratic in alpha^2 through them, leave
+# -64 c6 (0.025)^6 = 1.6e-8 c6 of eta0. The fits give c2 up to 3 and c4 up to
+# about 25 (the one-sine's least at omega_p / p = 5, whose impact brings in
+# r = 1 - 1.5 sin^2 alpha): coefficients growing about 8-fold an order, c6
+# about 200, a residual of about 3e-6; 2e-5 leaves a margin of 6.
+TOL_SLENDER = 2e-5
+SLENDER_ALPHAS = ALPHAS[:3]
 
 
 def restitution(alpha):
@@ -96,8 +141,8 @@ def restitution(alpha):
 
 
 def pulse(shape, omega):
-    """a_g / (E g) = sin(omega t + phase) for 0 <= t < 2 pi / omega."""
-    return PHASE[shape], 2.0 * math.pi / omega
+    """a_g / (E g) = sin(omega t + phase) for 0 <= t < T: (phase, T)."""
+    return PHASE[shape], HALVES[shape] * math.pi / omega
 
 
 def uplift_time(E, phase, omega, t0, t_end, threshold):
@@ -134,12 +179,13 @@ def settle(t, v, away, r, alpha):
 # --- the papers' linearised model, in closed form piece by piece ----------------
 
 
-def linear_outcome(alpha, eta, Omega, shape):
-    """Overturns? and the impacts before: eta = a_p / (g alpha), Omega = omega_p / p."""
+def linear_outcome(alpha, eta, Omega, shape, r=None):
+    """Overturns? and the impacts before: eta = a_p / (g alpha), Omega = omega_p / p;
+    the restitution Housner's r(alpha) unless given."""
     omega = Omega * P
     E = eta * alpha
     phase, T = pulse(shape, omega)
-    r = restitution(alpha)
+    r = restitution(alpha) if r is None else r
     K = P * P * E / (P * P + omega * omega)
     t = uplift_time(E, phase, omega, 0.0, T, alpha)
     if t is None:
@@ -190,14 +236,15 @@ def linear_outcome(alpha, eta, Omega, shape):
             s, v = -math.copysign(1.0, math.sin(omega * t + phase)), 0.0
 
 
-def sine_mode2_closed(Omega):
-    """The least eta = a_p / (g alpha) of the one-sine pulse's overturning
-    without impact, linearised: the least root of eta cos psi - Omega =
-    eta exp(-(2 pi - psi) / Omega), sin psi = 1/eta."""
+def closed_no_impact(Omega, halves):
+    """The least eta = a_p / (g alpha) that overturns without impact under a pulse of
+    `halves` half-cycles of a sine (2: one-sine, 1: half-sine), linearised: the least
+    root of eta cos psi - (-1)^n eta exp(-(n pi - psi) / Omega) = Omega, sin psi = 1/eta."""
+    sign = 1.0 if halves % 2 == 0 else -1.0
 
     def f(eta):
         psi = math.asin(1.0 / eta)
-        return eta * math.cos(psi) - Omega - eta * math.exp(-(2.0 * math.pi - psi) / Omega)
+        return eta * math.cos(psi) - Omega - sign * eta * math.exp(-(halves * math.pi - psi) / Omega)
 
     etas = np.geomspace(1.0 + 1e-12, 100.0, 4000)
     values = [f(e) for e in etas]
@@ -261,34 +308,50 @@ def exact_outcome(alpha, eta_t, Omega, shape):
 # --- the engine ---------------------------------------------------------------------
 
 
-def scenario(alpha, Omega, shape, amplitude_g=None):
-    frequency = Omega * P / (2.0 * math.pi)
-    amplitude = "" if amplitude_g is None else f"amplitude = {float(amplitude_g)!r}\n"
-    return f"""name = "{shape} pulse"
+def half_sine_record(omega, samples):
+    """The half-sine sin(omega t), 0 <= t <= pi / omega, as CSV text in g: `samples`
+    intervals, the last sample exactly 0 (the engine takes a_g = 0 after it)."""
+    T = math.pi / omega
+    rows = ["time,acceleration"]
+    for k in range(samples + 1):
+        t = k * T / samples
+        rows.append(f"{t!r},{(math.sin(omega * t) if k < samples else 0.0)!r}")
+    return "\n".join(rows) + "\n"
+
+
+def scenario(alpha, Omega, shape, amplitude_g=None, samples=SAMPLES):
+    omega = Omega * P
+    T = pulse(shape, omega)[1]
+    if shape == "half-sine":
+        scale = "" if amplitude_g is None else f"scale = {float(amplitude_g)!r}\n"
+        ground = f'type = "record"\nformat = "csv"\nunits = "g"\n{scale}text = """{half_sine_record(omega, samples)}"""\n'
+    else:
+        amplitude = "" if amplitude_g is None else f"amplitude = {float(amplitude_g)!r}\n"
+        ground = f'type = "{shape}-pulse"\n{amplitude}frequency = {omega / (2.0 * math.pi)!r}\n'
+    return f"""name = "{NAME[shape]} pulse"
 [tower]
 width = {2.0 * R * math.sin(alpha)!r}
 height = {2.0 * R * math.cos(alpha)!r}
 mass = 1000.0
 [ground]
-type = "{shape}-pulse"
-{amplitude}frequency = {frequency!r}
-[simulation]
-duration = {1.0 / frequency + TAIL!r}
+{ground}[simulation]
+duration = {T + TAIL!r}
 g = {G!r}
-output_dt = {1.0 / frequency + TAIL!r}
+output_dt = {T + TAIL!r}
 rtol = 1e-10
 atol = 1e-12
 """
 
 
-def engine_grid(alpha, Omega, shape, etas_t):
+def engine_grid(alpha, Omega, shape, etas_t, samples=SAMPLES):
     """The engine's verdicts (overturned, impacts) on a grid of a_p / (g tan alpha), in one sweep."""
-    rows = sweep(scenario(alpha, Omega, shape), "ground.amplitude", [e * math.tan(alpha) for e in etas_t])
+    key = "ground.scale" if shape == "half-sine" else "ground.amplitude"
+    rows = sweep(scenario(alpha, Omega, shape, samples=samples), key, [e * math.tan(alpha) for e in etas_t])
     return [(row["overturned"] == "true", int(row["impacts"])) for row in rows]
 
 
-def engine_outcome(alpha, eta_t, Omega, shape):
-    summary = run(scenario(alpha, Omega, shape, eta_t * math.tan(alpha)))
+def engine_outcome(alpha, eta_t, Omega, shape, samples=SAMPLES):
+    summary = run(scenario(alpha, Omega, shape, eta_t * math.tan(alpha), samples))
     return summary["overturned"], summary["impacts"]
 
 
@@ -318,6 +381,11 @@ def least(outcome, verdicts, want=lambda over, impacts: over):
     return high, outcome(high)[1]
 
 
+def modes(shape):
+    """The half-sine overturns without impact or not at all (see the module's text): one mode."""
+    return (("any", lambda over, impacts: over),) + ((("no_impact", lambda over, impacts: over and impacts == 0),) if shape != "half-sine" else ())
+
+
 def thresholds(alpha, Omega, shape):
     """Least overturning amplitude (any mode, and without impact), by the three methods, in units of g."""
     t = math.tan(alpha)
@@ -326,9 +394,8 @@ def thresholds(alpha, Omega, shape):
     en = lambda eta: engine_outcome(alpha, eta, Omega, shape)
     lin_grid, ex_grid = {}, {}  # filled up to the first overturning point
     en_grid = engine_grid(alpha, Omega, shape, GRID)
-    no_impact = lambda over, impacts: over and impacts == 0
     out = {}
-    for mode, want in (("any", lambda over, impacts: over), ("no_impact", no_impact)):
+    for mode, want in modes(shape):
         eta_l, n_l = least(lin, lin_grid, want)
         eta_x, n_x = least(ex, ex_grid, want)
         eta_e, n_e = least(en, en_grid, want)
@@ -347,46 +414,108 @@ def slope(alphas, values):
     return (math.log(values[1]) - math.log(values[0])) / (math.log(alphas[1]) - math.log(alphas[0]))
 
 
+def sampling():
+    """The half-sine record's threshold against its sampling, on SAMPLING_CASE."""
+    alpha, Omega = SAMPLING_CASE
+    exact = least(lambda eta: exact_outcome(alpha, eta, Omega, "half-sine"), {})[0]
+    rows, previous = [], None
+    for samples in SAMPLINGS:
+        en = lambda eta, n=samples: engine_outcome(alpha, eta, Omega, "half-sine", n)
+        eta = least(en, engine_grid(alpha, Omega, "half-sine", GRID, samples))[0]
+        error = (eta - exact) / exact
+        deficit = (math.pi / samples) ** 2 / 12.0
+        order = math.log2(previous / error) if previous is not None and previous > 0 and error > 0 else float("nan")
+        d, ok = check(f"half-sine sampled {samples} times: engine", eta, exact, tol_sampled(samples))
+        rows.append({"samples": samples, "engine_over_tan": eta, "exact_over_tan": exact, "error": error, "deficit": deficit, "ratio": error / deficit, "order": order, "tolerance": tol_sampled(samples), "within": "yes" if ok else "NO"})
+        previous = error
+    # the order 2 of linear interpolation, where the error is above the bisection's 1e-10 by 100
+    for row in rows:
+        if row["order"] == row["order"] and row["error"] > 1e-8:
+            _, ok = check(f"half-sine sampled {row['samples']} times: order of convergence", row["order"], 2.0, TOL_SLOPE, relative=False)
+            row["within"] = "yes" if ok and row["within"] == "yes" else "NO"
+    return rows
+
+
+def richardson(rows, pulse_name, Omega, mode):
+    """The engine's eta = a_p / (g tan alpha) at the three most slender blocks, extrapolated
+    to alpha = 0 by the quadratic in alpha^2 through them: (eta0, the three values, the quadratic)."""
+    sel = [r for r in rows if r["pulse"] == pulse_name and r["omega_ratio"] == Omega and r["mode"] == mode and r["alpha_rad"] in SLENDER_ALPHAS]
+    x = np.array([r["alpha_rad"] ** 2 for r in sel])
+    etas = [r["engine_over_tan"] for r in sel]
+    fit = np.polyfit(x, etas, 2)
+    return float(fit[-1]), etas, fit
+
+
+def slender(rows):
+    """The engine's slender-block limit against the papers' closed forms, and the printed example."""
+    out = []
+    for shape in ("sine", "half-sine"):
+        mode = "no_impact" if shape == "sine" else "any"
+        for Omega in OMEGAS[shape]:
+            limit, (e1, e2, e3), _ = richardson(rows, NAME[shape], Omega, mode)
+            closed = closed_no_impact(Omega, HALVES[shape])
+            d, ok = check(f"{NAME[shape]}, omega/p {Omega}: the engine's slender limit against the closed form", limit, closed, TOL_SLENDER)
+            out.append({"pulse": NAME[shape], "omega_ratio": Omega, "mode": "without impact", "engine_0025": e1, "engine_005": e2, "engine_01": e3, "engine_limit": limit, "reference": closed, "reference_name": "closed form", "difference": d, "tolerance": TOL_SLENDER, "within": "yes" if ok else "NO"})
+    # the least (after one impact) at omega_p / p = 5: the linearised model with r -> 1 (alpha = 1e-4)
+    Omega = PRINTED["omega_ratio"]
+    limit, (e1, e2, e3), _ = richardson(rows, "one-sine", Omega, "any")
+    linear = least(lambda eta: linear_outcome(1e-4, eta, Omega, "sine"), {})[0]
+    d, ok = check(f"one-sine, omega/p {Omega}: the engine's slender limit against the linearised model", limit, linear, TOL_SLENDER)
+    out.append({"pulse": "one-sine", "omega_ratio": Omega, "mode": "least (one impact)", "engine_0025": e1, "engine_005": e2, "engine_01": e3, "engine_limit": limit, "reference": linear, "reference_name": "linearised, r → 1", "difference": d, "tolerance": TOL_SLENDER, "within": "yes" if ok else "NO"})
+    d, ok = check(f"one-sine, omega/p {Omega}: the engine's slender limit against Zhang & Makris's printed {PRINTED['eta']}", limit, PRINTED["eta"], PRINTED["half_unit"], relative=False)
+    out.append({"pulse": "one-sine", "omega_ratio": Omega, "mode": "least (one impact)", "engine_0025": e1, "engine_005": e2, "engine_01": e3, "engine_limit": limit, "reference": PRINTED["eta"], "reference_name": "printed (Zhang & Makris 2001)", "difference": d, "tolerance": PRINTED["half_unit"], "within": "yes" if ok else "NO"})
+    return out
+
+
 def main():
     rows = []
     for shape in SHAPES:
         for Omega in OMEGAS[shape]:
-            closed = sine_mode2_closed(Omega) if shape == "sine" else None
+            closed = closed_no_impact(Omega, HALVES[shape]) if shape != "cosine" else None
             for alpha in ALPHAS:
                 found = thresholds(alpha, Omega, shape)
+                tolerance = tol_sampled(SAMPLES) if shape == "half-sine" else TOL_ENGINE
                 for mode, values in found.items():
-                    row = {"pulse": f"one-{shape}", "omega_ratio": Omega, "alpha_rad": alpha, "mode": mode, **values}
+                    row = {"pulse": NAME[shape], "omega_ratio": Omega, "alpha_rad": alpha, "mode": mode, **values}
                     row["linear_over_alpha"] = values["linear_g"] / alpha
                     row["exact_over_tan"] = values["exact_g"] / math.tan(alpha)
                     row["engine_over_tan"] = values["engine_g"] / math.tan(alpha)
-                    d, ok = check(f"one-{shape}, omega/p {Omega}, alpha {alpha}, {mode}: engine", values["engine_g"], values["exact_g"], TOL_ENGINE)
+                    d, ok = check(f"{NAME[shape]}, omega/p {Omega}, alpha {alpha}, {mode}: engine", values["engine_g"], values["exact_g"], tolerance)
                     row["engine_rel"] = d
+                    row["tolerance"] = tolerance
                     row["linear_rel"] = abs(values["linear_g"] - values["exact_g"]) / values["exact_g"]
                     row["closed_over_alpha"] = float("nan")
-                    if closed is not None and mode == "no_impact":
+                    if closed is not None and (mode == "no_impact" or shape == "half-sine"):
                         row["closed_over_alpha"] = closed
-                        _, ok_closed = check(f"one-sine, omega/p {Omega}: closed form against the linearised solver", row["linear_over_alpha"], closed, TOL_CLOSED)
+                        _, ok_closed = check(f"{NAME[shape]}, omega/p {Omega}: closed form against the linearised solver", row["linear_over_alpha"], closed, TOL_CLOSED)
                         ok = ok and ok_closed
+                    if shape == "half-sine":  # overturning without impact, by every method
+                        _, ok_mode = check(f"half-sine, omega/p {Omega}, alpha {alpha}: impacts before overturning", max(values["impacts_linear"], values["impacts_exact"], values["impacts_engine"]), 0.0, 0.0, relative=False)
+                        ok = ok and ok_mode
                     row["within"] = "yes" if ok else "NO"
                     rows.append(row)
-                print(f"one-{shape}, omega/p {Omega}, alpha {alpha}: least {found['any']['engine_g']:.6g} g (exact {found['any']['exact_g']:.6g} g)")
+                print(f"{NAME[shape]}, omega/p {Omega}, alpha {alpha}: least {found['any']['engine_g']:.6g} g (exact {found['any']['exact_g']:.6g} g)", flush=True)
     # the linearised model's error grows as alpha^2
     slopes = []
     for shape in SHAPES:
         for Omega in OMEGAS[shape]:
-            for mode in ("any", "no_impact"):
-                pair = [r for r in rows if r["pulse"] == f"one-{shape}" and r["omega_ratio"] == Omega and r["mode"] == mode][:2]
+            for mode, _ in modes(shape):
+                pair = [r for r in rows if r["pulse"] == NAME[shape] and r["omega_ratio"] == Omega and r["mode"] == mode][:2]
                 same = pair[0]["impacts_exact"] == pair[1]["impacts_exact"] and all(r["linear_rel"] > 0 for r in pair)
                 value = slope(ALPHAS[:2], [r["linear_rel"] for r in pair]) if same else float("nan")
                 if same:
-                    check(f"one-{shape}, omega/p {Omega}, {mode}: slope of the linearised error in alpha", value, 2.0, TOL_SLOPE, relative=False)
-                slopes.append({"pulse": f"one-{shape}", "omega_ratio": Omega, "mode": mode, "slope": value})
-    write_tables(rows, slopes)
-    figure(rows)
+                    check(f"{NAME[shape]}, omega/p {Omega}, {mode}: slope of the linearised error in alpha", value, 2.0, TOL_SLOPE, relative=False)
+                slopes.append({"pulse": NAME[shape], "omega_ratio": Omega, "mode": mode, "slope": value})
+    samplings = sampling()
+    limits = slender(rows)
+    restitutions = [{"r": r, "eta": least(lambda eta, r=r: linear_outcome(1e-3, eta, PRINTED["omega_ratio"], "sine", r), {})[0]} for r in RESTITUTIONS]
+    write_tables(rows, slopes, samplings, limits)
+    write_table("makris-restitution", [("r", "restitution r", "g"), ("eta", f"linearised least ap/(g α), one-sine, ωp/p = {PRINTED['omega_ratio']:g}", ".4f")], restitutions)
+    figure(rows, samplings)
     finish("makris")
 
 
-def write_tables(rows, slopes):
+def write_tables(rows, slopes, samplings, limits):
     mode_name = {"any": "least (any mode)", "no_impact": "without impact"}
     table_rows = [dict(r, mode_name=mode_name[r["mode"]], impacts=r["impacts_engine"]) for r in rows]
     write_table(
@@ -400,10 +529,11 @@ def write_tables(rows, slopes):
             ("exact_over_tan", "exact ap/(g tan α)", ".8f"),
             ("engine_over_tan", "engine ap/(g tan α)", ".8f"),
             ("engine_rel", "engine vs exact", ".1e"),
+            ("tolerance", "tolerance", ".1e"),
             ("linear_over_alpha", "linearised ap/(g α)", ".6f"),
             ("closed_over_alpha", "closed form ap/(g α)", ".6f"),
             ("linear_rel", "linearised vs exact (ap)", ".2%"),
-            ("within", "within 1e-7 (1e-8)", ""),
+            ("within", "within", ""),
         ],
         table_rows,
         csv_only=("linear_g", "exact_g", "engine_g", "impacts_linear", "impacts_exact"),
@@ -413,41 +543,81 @@ def write_tables(rows, slopes):
         [("pulse", "pulse", ""), ("omega_ratio", "ωp/p", "g"), ("mode", "overturning", ""), ("slope", "slope of log(linearised vs exact) in log α, α = 0.025 to 0.05", ".3f")],
         slopes,
     )
+    write_table(
+        "makris-sampling",
+        [
+            ("samples", "samples N over the half-sine", "d"),
+            ("engine_over_tan", "engine ap/(g tan α)", ".10f"),
+            ("exact_over_tan", "exact (the sine itself)", ".10f"),
+            ("error", "engine − exact (relative)", ".3e"),
+            ("deficit", "(π/N)²/12", ".3e"),
+            ("ratio", "ratio", ".3f"),
+            ("order", "order", ".3f"),
+            ("tolerance", "tolerance", ".1e"),
+            ("within", "within", ""),
+        ],
+        samplings,
+    )
+    write_table(
+        "makris-slender",
+        [
+            ("pulse", "pulse", ""),
+            ("omega_ratio", "ωp/p", "g"),
+            ("mode", "overturning", ""),
+            ("engine_0025", "engine ap/(g tan α), α = 0.025", ".7f"),
+            ("engine_005", "α = 0.05", ".7f"),
+            ("engine_01", "α = 0.1", ".7f"),
+            ("engine_limit", "extrapolated to α = 0", ".7f"),
+            ("reference_name", "compared with", ""),
+            ("reference", "its value ap/(g α)", ".7g"),
+            ("difference", "difference", ".1e"),
+            ("tolerance", "tolerance", ".1e"),
+            ("within", "within", ""),
+        ],
+        limits,
+    )
 
 
-def figure(rows):
-    fig, axes = plt.subplots(1, 3, figsize=(17, 5.4))
-    for ax, shape in zip(axes[:2], SHAPES):
-        Omegas = np.linspace(0.5, 1.1 * OMEGAS[shape][-1], 60)
-        # the linearised spectrum, dense in omega_p / p (slender-block limit: independent of alpha)
-        alpha = 1e-3
-        least_any, least_two = [], []
-        for Omega in Omegas:
-            grid = {}
-            lin = lambda eta, Omega=Omega: linear_outcome(alpha, eta, Omega, shape)
-            least_any.append(least(lin, grid)[0])
+def spectrum(ax, shape, rows, top):
+    """The linearised spectrum, dense in omega_p / p (slender-block limit: alpha = 1e-3),
+    its closed form, and the exact and engine thresholds of two blocks."""
+    Omegas = np.linspace(0.5, 1.1 * OMEGAS[shape][-1], 60)
+    alpha = 1e-3
+    least_any, least_two = [], []
+    for Omega in Omegas:
+        grid = {}
+        lin = lambda eta, Omega=Omega: linear_outcome(alpha, eta, Omega, shape)
+        least_any.append(least(lin, grid)[0])
+        if shape != "half-sine":
             least_two.append(least(lin, grid, lambda over, impacts: over and impacts == 0)[0])
+    if shape != "half-sine":
         ax.plot(Omegas, least_two, "-", color="0.6", lw=3, label="linearised, without impact")
-        ax.plot(Omegas, least_any, "k-", lw=1.2, label="linearised, least (any mode)")
-        if shape == "sine":
-            ax.plot(Omegas, [sine_mode2_closed(O) for O in Omegas], "w--", lw=1, label="closed form, without impact")
-        for alpha, color in ((0.1, "tab:blue"), (0.3, "tab:red")):
-            sel = [r for r in rows if r["pulse"] == f"one-{shape}" and r["alpha_rad"] == alpha and r["mode"] == "any"]
-            ax.plot([r["omega_ratio"] for r in sel], [r["exact_g"] / alpha for r in sel], "s", color=color, ms=9, mfc="none", label=f"α = {alpha}: exact")
-            ax.plot([r["omega_ratio"] for r in sel], [r["engine_g"] / alpha for r in sel], "x", color=color, ms=7, label=f"α = {alpha}: engine")
-        ax.set_xlabel("pulse frequency ωp / p")
-        ax.set_ylabel("least overturning amplitude ap / (g α)")
-        ax.set_title(f"One-{shape} pulse: overturning spectrum (p = {P:g} rad/s)")
-        ax.set_ylim(0, 18 if shape == "sine" else 12)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="upper left")
-    ax = axes[2]
+    ax.plot(Omegas, least_any, "k-", lw=1.2, label="linearised, least (any mode)")
+    if shape != "cosine":
+        ax.plot(Omegas, [closed_no_impact(O, HALVES[shape]) for O in Omegas], "w--", lw=1, label="closed form, without impact")
+    for alpha, color in ((0.1, "tab:blue"), (0.3, "tab:red")):
+        sel = [r for r in rows if r["pulse"] == NAME[shape] and r["alpha_rad"] == alpha and r["mode"] == "any"]
+        ax.plot([r["omega_ratio"] for r in sel], [r["exact_g"] / alpha for r in sel], "s", color=color, ms=9, mfc="none", label=f"α = {alpha}: exact")
+        ax.plot([r["omega_ratio"] for r in sel], [r["engine_g"] / alpha for r in sel], "x", color=color, ms=7, label=f"α = {alpha}: engine" + (f" (record, N = {SAMPLES})" if shape == "half-sine" else ""))
+    ax.set_xlabel("pulse frequency ωp / p")
+    ax.set_ylabel("least overturning amplitude ap / (g α)")
+    ax.set_title(f"{NAME[shape].capitalize()} pulse: overturning spectrum (p = {P:g} rad/s)")
+    ax.set_ylim(0, top)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left")
+
+
+def figure(rows, samplings):
+    fig, axes = plt.subplots(2, 3, figsize=(18, 11))
+    for ax, shape, top in zip(axes[0], SHAPES, (18, 12, 6)):
+        spectrum(ax, shape, rows, top)
+    ax = axes[1][0]
     alphas = np.array(ALPHAS)
-    for shape, marker in (("sine", "o"), ("cosine", "s")):
-        for Omega, color in zip(OMEGAS[shape], ("tab:blue", "tab:orange", "tab:green", "tab:red")):
-            sel = [r for r in rows if r["pulse"] == f"one-{shape}" and r["omega_ratio"] == Omega and r["mode"] == "any"]
-            ax.loglog([r["alpha_rad"] for r in sel], [r["linear_rel"] for r in sel], marker + ("-" if shape == "sine" else ":"), color=color, mfc="none", label=f"one-{shape}, ωp/p = {Omega:g}")
-    ax.loglog(alphas, alphas**2, "k--", lw=1, label="α²")
+    for shape, marker, line in (("sine", "o", "-"), ("cosine", "s", ":"), ("half-sine", "^", "--")):
+        for Omega, color in zip(OMEGAS[shape], ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:red")):
+            sel = [r for r in rows if r["pulse"] == NAME[shape] and r["omega_ratio"] == Omega and r["mode"] == "any"]
+            ax.loglog([r["alpha_rad"] for r in sel], [r["linear_rel"] for r in sel], marker + line, color=color, mfc="none", lw=0.8, label=f"{NAME[shape]}, ωp/p = {Omega:g}")
+    ax.loglog(alphas, alphas**2, "k--", lw=1.5, label="α²")
     ax.loglog(alphas, [max(r["engine_rel"], 1e-16) for r in rows if r["pulse"] == "one-sine" and r["omega_ratio"] == 4.0 and r["mode"] == "any"], "kx:", label="engine vs exact (one-sine, ωp/p = 4)")
     ax.set_xlabel("slenderness α (rad)")
     ax.set_ylabel("relative difference of the least overturning ap")
@@ -455,7 +625,35 @@ def figure(rows):
     ax.set_xticks(ALPHAS, [f"{a:g}" for a in ALPHAS])
     ax.minorticks_off()
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.14))
+    ax.legend(fontsize=6, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.12))
+    ax = axes[1][1]
+    n = np.array([r["samples"] for r in samplings], float)
+    ax.loglog(n, [r["error"] for r in samplings], "o-", color="tab:blue", label="engine, record of N samples, vs exact")
+    ax.loglog(n, (math.pi / n) ** 2 / 12.0, "k--", lw=1, label="(π/N)²/12: the record's impulse deficit")
+    ax.loglog(n, [tol_sampled(int(k)) for k in n], ":", color="tab:red", label="tolerance")
+    alpha, Omega = SAMPLING_CASE
+    ax.set_xlabel("samples N over the half-sine")
+    ax.set_ylabel("relative difference of the least overturning ap")
+    ax.set_title(f"Half-sine as a record: converges as N⁻² (α = {alpha:g}, ωp/p = {Omega:g})")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    ax = axes[1][2]
+    Omega = PRINTED["omega_ratio"]
+    sel = [r for r in rows if r["pulse"] == "one-sine" and r["omega_ratio"] == Omega and r["mode"] == "any"]
+    a2 = np.array([r["alpha_rad"] ** 2 for r in sel])
+    limit, _, fit = richardson(rows, "one-sine", Omega, "any")
+    ax.axhspan(PRINTED["eta"] - PRINTED["half_unit"], PRINTED["eta"] + PRINTED["half_unit"], color="0.85", label=f"printed {PRINTED['eta']} ± {PRINTED['half_unit']} (Zhang & Makris 2001)")
+    ax.plot(a2, [r["exact_over_tan"] for r in sel], "s", ms=9, mfc="none", color="k", label="exact")
+    ax.plot(a2, [r["engine_over_tan"] for r in sel], "x", ms=8, color="tab:red", label="engine")
+    x = np.linspace(0.0, SLENDER_ALPHAS[-1] ** 2, 50)
+    ax.plot(x, np.polyval(fit, x), "-", color="tab:red", lw=1, label=f"engine, α = 0.025–0.1, extrapolated to α = 0: {limit:.5f}")
+    ax.set_xlim(-0.0004, 1.08 * SLENDER_ALPHAS[-1] ** 2)
+    ax.set_ylim(PRINTED["eta"] - 0.02, 1.02 * sel[len(SLENDER_ALPHAS) - 1]["engine_over_tan"])
+    ax.set_xlabel("α² (rad²); α = 0.025, 0.05, 0.1")
+    ax.set_ylabel("least overturning amplitude ap / (g tan α)")
+    ax.set_title(f"One-sine pulse, ωp/p = {Omega:g} (15.7 rad/s on p = π rad/s)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
     save_figure(fig, "makris")
 
