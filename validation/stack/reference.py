@@ -287,13 +287,16 @@ class Stack:
                 return regime
         return regime
 
-    def run(self, duration, y0=None, s0=None, rtol=1e-10, atol=1e-12, output_dt=0.005):
-        """Integrates to `duration`; returns (history rows (t, u, theta_1..N), events, summary)."""
+    def run(self, duration, y0=None, s0=None, rtol=1e-10, atol=1e-12, output_dt=0.005, t0=0.0, base0=None):
+        """Integrates from t0 (at rest, or from the state y0 with the pivots s0 and the
+        building's regime base0) to `duration`; returns (history rows (t, u, theta_1..N),
+        events, summary)."""
         n = self.n
         y = np.zeros(2 * (n + 1)) if y0 is None else np.array(y0, float)
-        base0 = "fixed" if self.fixed else ("free" if self.mu_s == 0.0 and self.mu_k == 0.0 else "stick")
+        if base0 is None:
+            base0 = "fixed" if self.fixed else ("free" if self.mu_s == 0.0 and self.mu_k == 0.0 else "stick")
         regime = (base0, list(s0) if s0 is not None else [0] * n)
-        t = 0.0
+        t = t0
         regime = self.settle(t, y, regime)
         history, events = [], []
         peak = np.zeros(n)
@@ -303,8 +306,8 @@ class Stack:
         first_uplift = [None] * n
         for j in range(n):
             if regime[1][j] != 0:
-                first_uplift[j] = 0.0
-        samples = iter(np.arange(0.0, duration + 0.5 * output_dt, output_dt))
+                first_uplift[j] = t0
+        samples = iter(np.arange(t0, duration + 0.5 * output_dt, output_dt))
         next_sample = next(samples)
         impacts = [0] * n
         while t < duration and overturned is None:
