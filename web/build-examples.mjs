@@ -16,10 +16,13 @@ const records = {};
 // the hazard grids they name (`grid = "…"`), by their paths from the root.
 const assessments = [];
 const grids = {};
+// The towers of a town (`towers.csv`) for the page's town tab, by their paths from the root.
+const towns = [];
 (function walk(dir) {
   for (const name of readdirSync(dir).sort()) {
     const path = join(dir, name);
     if (statSync(path).isDirectory()) walk(path);
+    else if (name === "towers.csv") towns.push({ path: relative(top, path), csv: readFileSync(path, "utf8") });
     else if (name.endsWith(".toml")) {
       const toml = readFileSync(path, "utf8");
       if (/^\[site[\].]/m.test(toml) && !/^\[study[\].]/m.test(toml)) {
@@ -47,6 +50,7 @@ writeFileSync(
     `export const records = ${JSON.stringify(records)};\n` +
     `export const assessments = ${JSON.stringify(assessments, null, 1)};\n` +
     `export const grids = ${JSON.stringify(grids)};\n` +
+    `export const towns = ${JSON.stringify(towns, null, 1)};\n` +
     `export default ${JSON.stringify(found, null, 1)};\n`,
 );
-console.log(`${found.length} examples, ${Object.keys(records).length} record files, ${assessments.length} assessment files, ${Object.keys(grids).length} hazard grids`);
+console.log(`${found.length} examples, ${Object.keys(records).length} record files, ${assessments.length} assessment files, ${Object.keys(grids).length} hazard grids, ${towns.length} towns`);

@@ -7,7 +7,9 @@ import { drawHeatmap } from "./heatmap.js";
 import { Animation } from "./animation.js";
 import { Charts } from "./charts.js";
 import { SpectrumView } from "./spectrum.js";
-import { AssessView, setupTabs } from "./assess.js";
+import { AssessView } from "./assess.js";
+import { setupTabs } from "./tabs.js";
+import { TownView } from "./town.js";
 import examples, { records } from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
@@ -835,7 +837,11 @@ async function main() {
       recompute();
     },
   });
-  setupTabs(assessView);
+  setupTabs([
+    { tab: "tab-simulate", name: "simulate", panels: ["inputs", "results", "sweep"], view: null },
+    { tab: "tab-assess", name: "assess", panels: ["inputs", "assess"], view: assessView },
+    { tab: "tab-town", name: "town", panels: ["town"], view: new TownView($("town")) },
+  ]);
   $("status").textContent = "Engine loaded.";
   if (loadFromUrl()) {
     buildForm();

@@ -455,34 +455,3 @@ export class AssessView {
     setTimeout(() => URL.revokeObjectURL(a.href), 1000);
   }
 }
-
-/**
- * The tabs "Simulate" and "Assess to the code" (WAI-ARIA tabs: the selected
- * one in the Tab order, the arrow keys, Home and End move between them): the
- * results and the sweep, or the assessment, beside the form.
- */
-export function setupTabs(view) {
-  const tabs = [$("tab-simulate"), $("tab-assess")];
-  const select = (tab, focus) => {
-    for (const t of tabs) {
-      t.setAttribute("aria-selected", String(t === tab));
-      t.tabIndex = t === tab ? 0 : -1;
-    }
-    const assess = tab === tabs[1];
-    $("results").hidden = assess;
-    $("sweep").hidden = assess;
-    $("assess").hidden = !assess;
-    document.body.dataset.tab = assess ? "assess" : "simulate";
-    view.show(assess);
-    if (focus) tab.focus();
-  };
-  tabs.forEach((tab, i) => {
-    tab.addEventListener("click", () => select(tab));
-    tab.addEventListener("keydown", (e) => {
-      const to = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: tabs.length - 1 }[e.key];
-      if (to === undefined) return;
-      e.preventDefault();
-      select(tabs[(to + tabs.length) % tabs.length], true);
-    });
-  });
-}

@@ -5,7 +5,7 @@
 // cell shows its values.
 
 /** A colour for v in [0, 1] (viridis, 5 stops, linearly blended). */
-function colour(v) {
+export function colour(v) {
   const stops = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
   const x = Math.max(0, Math.min(1, v)) * (stops.length - 1);
   const k = Math.min(stops.length - 2, Math.floor(x));

@@ -1,0 +1,79 @@
+"""The town tab against `rocking inventory`: the example town's towers
+(chosen with the file picker) give the command's inventory.csv byte for byte,
+and the ranking and the ζ_E on the page are its rows sorted by ζ_E; with three
+record files the dynamic checks run in the worker, a tower at a time with the
+progress told, and give the command's rows with the records as files."""
+
+import csv
+import io
+import subprocess
+
+from conftest import BIN, OUT, ROOT
+from playwright.sync_api import expect
+
+TOWN = ROOT / "examples" / "town"
+RECORDS = [ROOT / "data" / "records" / "synthetic" / f"kt_0{k}.AT2" for k in (1, 2, 3)]
+
+
+def command_csv(towers, assess, out):
+    """The text of `rocking inventory`'s inventory.csv."""
+    subprocess.run([BIN, "inventory", str(towers), "--assess", str(assess), "--out", str(out)], check=True, capture_output=True)
+    return (out / "inventory.csv").read_text()
+
+
+def town_done(page, timeout=30_000):
+    expect(page.locator("#town")).to_have_attribute("data-state", "done", timeout=timeout)
+    expect(page.locator("#town-error")).to_be_hidden()
+    return page.evaluate("document.getElementById('town').town"), page.evaluate("document.getElementById('town').csv")
+
+
+def test_the_example_town_is_the_commands_inventory(page, tmp_path):
+    page.click("#tab-town")
+    expect(page.locator("#town")).to_be_visible()
+    expect(page.locator("#results")).to_be_hidden()
+    page.set_input_files("#town-towers-file", str(TOWN / "towers.csv"))
+    town, text = town_done(page)
+    expected = command_csv(TOWN / "towers.csv", TOWN / "assess.toml", tmp_path / "out")
+    # Byte for byte (no row has an error, the only place a file's name appears).
+    assert text == expected
+    rows = list(csv.DictReader(io.StringIO(expected)))
+    # Each tower's ζ_E on the page is the command's, to the bit (JSON and CSV
+    # both hold the shortest text that reads back to the same double).
+    for tower, row in zip(town["towers"], rows):
+        assert tower["id"] == row["id"]
+        assert tower["zeta_E"] == float(row["zeta_E"])
+        assert tower["governing"] == row["governing"]
+    # The ranking: the command's rows sorted by ζ_E, shown in that order in the table.
+    order = sorted(range(len(rows)), key=lambda i: float(rows[i]["zeta_E"]))
+    assert town["ranking"] == order
+    shown = page.locator("#town-ranking tbody tr").evaluate_all("rs => rs.map(r => r.dataset.id)")
+    assert shown == [rows[i]["id"] for i in order]
+    assert page.locator("#town-ranking tbody tr").first.locator("td.fails").count() == 1
+    # The map's colour bar spans 0 to the largest ζ_E within [1.2, 3] (1.33, CE08's).
+    top = max(float(r["zeta_E"]) for r in rows)
+    assert float(page.locator("#town-map").get_attribute("data-colour-top")) == min(3.0, max(1.2, top))
+    OUT.mkdir(parents=True, exist_ok=True)
+    page.locator("#town").screenshot(path=str(OUT / "town.png"))
+
+
+def test_the_dynamic_checks_in_the_worker_are_the_commands(page, tmp_path):
+    page.click("#tab-town")
+    lines = (TOWN / "towers.csv").read_text().splitlines()
+    towers = tmp_path / "two.csv"
+    towers.write_text("\n".join(lines[:3]) + "\n")
+    page.set_input_files("#town-towers-file", str(towers))
+    town_done(page)
+    page.set_input_files("#town-records-file", [str(r) for r in RECORDS])
+    expect(page.locator("#town-dynamic")).to_be_enabled()
+    page.click("#town-dynamic")
+    town, text = town_done(page, timeout=120_000)
+    # One tower at a time: the first was told before the second ended.
+    assert page.locator("#town").get_attribute("data-progress") == "1"
+    # The command with the same set as files, the grid at its place in the repository.
+    assess = (TOWN / "assess.toml").read_text().replace('"../../data/', f'"{ROOT}/data/')
+    assess = assess.replace("q = 2.0", "q = 2.0\nrecords = [" + ", ".join(f"'{r}'" for r in RECORDS) + "]")
+    (tmp_path / "assess.toml").write_text(assess)
+    expected = command_csv(towers, tmp_path / "assess.toml", tmp_path / "out")
+    assert "SLC_nonlinear_dynamic_zeta_E" in expected.splitlines()[0]
+    assert text == expected
+    assert [t["zeta_E"] for t in town["towers"]] == [float(r["zeta_E"]) for r in csv.DictReader(io.StringIO(expected))]
