@@ -5,28 +5,26 @@
 // site) and the assessment's parameters (FC, q, the capacity curve); the
 // engine (crates/rocking-assess, in a Web Worker) gives the capacity and the
 // kinematic checks, each with its capacity ag and ζ_E, and the governing one:
-// the numbers of the command's assessment.json, bit for bit. The dynamic
-// checks (a record set run through the model) are the command's.
+// the numbers of the command's assessment.json, bit for bit. The non-linear
+// dynamic checks run on demand in a Web Worker of their own, with a progress
+// bar, on the record files the user picks (given to the engine as text with
+// their names, read by the command's reader): the command's numbers too.
+// The fields come from the keys' description (the engine's `keys()`), each
+// check's name and formula from the engine (`checkTexts`, as report.html).
+import uPlot from "../vendor/uPlot.esm.js";
 import { sig } from "./spectrum.js";
+import { yAxis } from "./charts.js";
 import { assessments, grids } from "../examples.js";
 
 const $ = (id) => document.getElementById(id);
 
 /** The limit states of each code: damage (activation), life safety, collapse. */
 const STATES = { ntc2018: ["SLD", "SLV", "SLC"], ec8: ["DL", "SD", "NC"] };
-/** The keys of a limit state's table, with their units. */
-const STATE_KEYS = { ntc2018: [["ag", "g"], ["F0", ""], ["Tc_star", "s"]], ec8: [["ag", "g"]] };
-
-/**
- * Each check's name and formula, as the command's report.html writes them
- * (crates/rocking-cli/src/commands/assess_report.rs), in plain text.
- */
-const METHODS = {
-  activation: { name: "activation", formula: () => "a_g S(a_g) ≥ a0* activates (Circolare 2019 eq. C8.7.1.8)" },
-  linear_kinematic: { name: "linear kinematic", formula: (q) => `a_g > q · a_g,capacity(activation), q = ${q} (§C8.7.1.2.1.7)` },
-  nonlinear_kinematic: { name: "non-linear kinematic", formula: () => "max over T ≤ T_LS of S_De(T; ξ) > d_LS, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)" },
-  nonlinear_dynamic: { name: "non-linear dynamic", formula: () => "records run through the model: none beyond d0, mean (largest with fewer than 7) ≤ d_LS (§C8.7.1.2.1.9)" },
-};
+/** The keys of a limit state's table in each code (EC8 gives ag alone). */
+const STATE_KEYS = { ntc2018: ["ag", "F0", "Tc_star"], ec8: ["ag"] };
+/** The keys of [assessment] on the form, those of the dynamic checks after the first four. */
+const ASSESSMENT_FIELDS = ["confidence_factor", "q", "capacity"];
+const DYNAMIC_FIELDS = ["free_after", "units", "dt"];
 
 /** The capacity's fields of assessment.json: [key, symbol, unit, meaning]. */
 const CAPACITY = [
@@ -41,16 +39,14 @@ const CAPACITY = [
   ["T_SLC_s", "T_SLC", "s", "secant period at 0.4 d_SLC"],
 ];
 
-/** A site spectrum's fields of assessment.json: [key, label]. */
-const SITE_FIELDS = [
-  ["ag_g", "ag (g)"],
-  ["F0", "F0"],
-  ["Tc_star_s", "Tc* (s)"],
-  ["S", "S = SS ST"],
-  ["TB_s", "TB (s)"],
-  ["TC_s", "TC (s)"],
-  ["TD_s", "TD (s)"],
-];
+/**
+ * A field of assessment.json's sites as a column's heading: the name without
+ * the outputs' unit suffix, the unit in parentheses (`Tc_star_s` → `Tc_star (s)`).
+ */
+function fieldHeading(name) {
+  const m = /^(.*)_(g|s|m)$/.exec(name);
+  return m ? `${m[1]} (${m[2]})` : name;
+}
 
 /** The dotted key an error line names (`assess.toml: site.SLV.ag: must be …` → `site.SLV.ag`), or "". */
 function keyOf(message) {
@@ -71,9 +67,31 @@ function textField(name, label, unit, placeholder = "") {
   return `<label class="field"><span>${label}</span><input type="text" inputmode="decimal" name="${name}" id="assess-${name}" placeholder="${placeholder}"><span class="unit">${unit}</span></label>`;
 }
 
-function selectField(name, label, options) {
+function selectField(name, label, options, title = "") {
   const opts = options.map(([v, t]) => `<option value="${v}">${t}</option>`).join("");
-  return `<label class="field"><span>${label}</span><select name="${name}" id="assess-${name}">${opts}</select><span class="unit"></span></label>`;
+  return `<label class="field"${title ? ` title="${escapeHtml(title)}"` : ""}><span>${label}</span><select name="${name}" id="assess-${name}">${opts}</select><span class="unit"></span></label>`;
+}
+
+function escapeHtml(text) {
+  return String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;").replace(/"/g, "&quot;");
+}
+
+/**
+ * The field of a key of the keys' description (`doc`, as `rocking keys --json`
+ * gives it), named `name` (the dotted key; a limit state's in place of `<LS>`):
+ * a choice of its values (an absent first one if it has a placeholder), or a
+ * text field with its unit (or its symbol) and the default as placeholder;
+ * its meaning as the title.
+ */
+function keyField(doc, name = doc.key) {
+  const label = name.split(".").pop();
+  if (doc.choices.length) {
+    const options = doc.choices.map((c) => [c, c]);
+    if (doc.placeholder) options.unshift(["", `(${doc.placeholder})`]);
+    return selectField(name, label, options, doc.meaning);
+  }
+  const unit = doc.unit || (doc.symbol && doc.symbol !== label ? doc.symbol : "");
+  return textField(name, label, unit, doc.placeholder).replace('<label class="field">', `<label class="field" title="${escapeHtml(doc.meaning)}">`);
 }
 
 /** Runs the engine's calls in a Web Worker; a newer call of a kind makes the older one's answer moot. */
@@ -120,16 +138,22 @@ export class AssessView {
     this.gridText = null; // the text of the hazard grid chosen, and its name
     this.gridName = "";
     this.started = false; // whether the tab has been shown (its worker started)
-    this.build();
+    this.records = []; // the record set picked: [{ name, text }]
+    this.dynamic = null; // the dynamic checks' result, the worker running them, the table they ran on
+    this.dynamicWorker = null;
+    this.texts = {}; // each check's name and formula (HTML), from the engine
+    this.ready = window.rocking.keys().then((keys) => this.build(keys.assessment));
   }
 
-  build() {
+  build(described) {
+    const doc = new Map(described.map((k) => [k.key, k]));
+    const field = (key, name = key) => keyField(doc.get(key), name);
     const states = (code) =>
       STATES[code]
         .map(
           (st) =>
             `<fieldset class="state" data-code="${code}"><legend>[site.${st}]</legend>` +
-            STATE_KEYS[code].map(([k, u]) => textField(`site.${st}.${k}`, k === "Tc_star" ? "Tc*" : k, u)).join("") +
+            STATE_KEYS[code].map((k) => field(`site.<LS>.${k}`, `site.${st}.${k}`)).join("") +
             `</fieldset>`,
         )
         .join("");
@@ -137,13 +161,13 @@ export class AssessView {
       <h2>Assessment to the code</h2>
       <p class="note">The tower and the building of the form, assessed as <code>rocking assess</code> does (Circolare 2019 §C8.7.1.2.1):
       its capacity as one rigid block and the kinematic checks, each with the least ground acceleration at which it stops holding
-      and ζ_E = a<sub>g,capacity</sub> / a<sub>g</sub>. The non-linear dynamic checks (records run through the model) are the command's.</p>
+      and ζ_E = a<sub>g,capacity</sub> / a<sub>g</sub>; and, on the record files you pick, the non-linear dynamic checks (below the form).</p>
       <div class="row"><label>Example <select id="assess-example"><option value="">—</option></select></label></div>
       <div id="assess-error" role="alert" hidden></div>
       <div id="assess-results">
         <p id="assess-governing" role="status"></p>
         <div class="scroll" role="region" aria-label="the checks" tabindex="0">
-          <table id="assess-checks"><caption>Checks (the kinematic checks of rocking assess)</caption>
+          <table id="assess-checks"><caption>Checks (those of rocking assess)</caption>
             <thead><tr><th>limit state</th><th>check</th><th>ag (g)</th><th>ag capacity (g)</th><th>ζ_E</th><th>verdict</th><th>demand</th><th>capacity</th><th>formula</th></tr></thead>
             <tbody></tbody></table>
         </div>
@@ -155,31 +179,57 @@ export class AssessView {
         </div>
         <div class="row downloads">Download: <button type="button" id="assess-download">assessment.json</button>
           <button type="button" id="assess-download-csv">capacity.csv</button> <span id="assess-time"></span></div>
+        <div id="assess-adrs" class="chart" role="img" aria-label="the capacity curve in the ADRS plane with the ultimate displacements and the demands"></div>
       </div>
       <form id="assess-form" autocomplete="off">
         <fieldset><legend>[site]</legend>
-          ${selectField("site.code", "code", [["ntc2018", "ntc2018 (NTC 2018)"], ["ec8", "ec8 (EN 1998-1)"]])}
-          ${selectField("site.soil", "soil", ["A", "B", "C", "D", "E"].map((s) => [s, s]))}
-          <div data-code="ntc2018">${selectField("site.topography", "topography", ["T1", "T2", "T3", "T4"].map((t) => [t, t]))}</div>
-          <div data-code="ec8">${selectField("site.spectrum_type", "spectrum_type", [["1", "1"], ["2", "2"]])}</div>
+          ${field("site.code")}${field("site.soil")}
+          <div data-code="ntc2018">${field("site.topography")}</div>
+          <div data-code="ec8">${field("site.spectrum_type")}</div>
         </fieldset>
         ${states("ntc2018")}${states("ec8")}
         <details id="assess-grid-box" data-code="ntc2018"><summary>SLD, SLV, SLC from a hazard grid</summary>
           <div class="row"><label>grid <select id="assess-grid"></select></label>
             <button type="button" id="assess-grid-button">a grid file…</button>
             <input type="file" id="assess-grid-file" hidden aria-label="a hazard grid file (NTC Allegato B layout)"></div>
-          ${textField("site.lon", "lon", "° E")}${textField("site.lat", "lat", "° N")}
-          ${textField("site.VN", "VN", "years", "50")}${textField("site.CU", "CU", "", "1")}
+          ${field("site.lon")}${field("site.lat")}${field("site.VN")}${field("site.CU")}
           <div class="row"><button type="button" id="assess-grid-fill">Fill SLD, SLV, SLC</button></div>
           <p id="assess-grid-note" class="note" aria-live="polite"></p>
         </details>
         <fieldset><legend>[assessment]</legend>
-          ${textField("assessment.confidence_factor", "confidence_factor", "FC", "1.35")}
-          ${textField("assessment.q", "q", "", "2")}
-          ${selectField("assessment.capacity", "capacity", [["linear", "linear"], ["exact", "exact"]])}
+          ${ASSESSMENT_FIELDS.map((k) => field(`assessment.${k}`)).join("")}
         </fieldset>
       </form>
-      <p id="assess-note" class="note"></p>`;
+      <p id="assess-note" class="note"></p>
+      <section id="assess-dynamic" aria-labelledby="assess-dynamic-title">
+        <h3 id="assess-dynamic-title">Non-linear dynamic checks</h3>
+        <p class="note">The record set fitted to each limit state's spectrum and every record run through the model (the tower, and the building
+        sliding if the form has one), λ scanned and bisected, as <code>rocking assess</code> does (§C8.7.1.2.1.9). Pick 3 record files or more
+        (AT2, ESM or CSV; 7 or more for the mean response). They stay in this page: nothing is sent anywhere.</p>
+        <div class="row"><button type="button" id="assess-records-button">Record files…</button>
+          <input type="file" id="assess-records-file" multiple hidden aria-label="the record files of the set">
+          <span id="assess-records-list" aria-live="polite">no records picked</span></div>
+        <form id="assess-dynamic-form" autocomplete="off">
+          <fieldset><legend>[assessment]</legend>
+            ${DYNAMIC_FIELDS.map((k) => field(`assessment.${k}`)).join("")}
+            ${textField("assessment.lambda.from", "λ from", "", "0.05")}${textField("assessment.lambda.to", "λ to", "", "3")}${textField("assessment.lambda.step", "λ step", "", "0.05")}
+            ${textField("assessment.period_range.0", "fit from", "s", "0.15")}${textField("assessment.period_range.1", "fit to", "s", "max(2, T_SLC)")}
+          </fieldset>
+        </form>
+        <div class="row"><button type="button" id="assess-dynamic-run">Run the dynamic checks</button>
+          <button type="button" id="assess-dynamic-cancel" hidden>Cancel</button>
+          <progress id="assess-dynamic-progress" value="0" max="1" aria-label="progress of the dynamic checks" hidden></progress>
+          <span id="assess-dynamic-label" role="status"></span></div>
+        <div id="assess-dynamic-results" hidden>
+          <div class="scroll" role="region" aria-label="the records' responses" tabindex="0">
+            <table id="assess-records"><caption>Each record at its fitted scale (λ = 1)</caption>
+              <thead><tr><th>limit state</th><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th><th>max slip of the building (m)</th><th>error</th></tr></thead>
+              <tbody></tbody></table>
+          </div>
+          <div class="row downloads">Download: <button type="button" id="assess-download-dynamic">assessment.json</button>
+            <button type="button" id="assess-download-records">records.csv</button> <button type="button" id="assess-download-spectra">spectra.csv</button></div>
+        </div>
+      </section>`;
     const example = $("assess-example");
     assessments.forEach((e, i) => example.append(new Option(e.path, String(i))));
     example.addEventListener("change", () => {
@@ -211,7 +261,29 @@ export class AssessView {
     });
     $("assess-download").addEventListener("click", () => this.download("assessment.json"));
     $("assess-download-csv").addEventListener("click", () => this.download("capacity.csv"));
+    $("assess-records-button").addEventListener("click", () => $("assess-records-file").click());
+    $("assess-records-file").addEventListener("change", async (ev) => {
+      const files = [...ev.target.files];
+      if (!files.length) return;
+      this.setRecords(await Promise.all(files.map(async (f) => ({ name: f.name, text: await f.text() }))));
+    });
+    $("assess-dynamic-form").addEventListener("input", () => this.dynamicChanged());
+    $("assess-dynamic-run").addEventListener("click", () => this.runDynamic());
+    $("assess-dynamic-cancel").addEventListener("click", () => this.stopDynamic("Cancelled."));
+    $("assess-download-dynamic").addEventListener("click", () => this.downloadDynamic("assessment.json"));
+    $("assess-download-records").addEventListener("click", () => this.downloadDynamic("records.csv"));
+    $("assess-download-spectra").addEventListener("click", () => this.downloadDynamic("spectra.csv"));
+    new ResizeObserver(() => this.resizeChart()).observe($("assess-adrs"));
     this.showCode();
+  }
+
+  /** The record set picked: [{ name, text }], in the order given. */
+  setRecords(records) {
+    this.records = records;
+    $("assess-records-list").textContent = records.length
+      ? `${records.length} record${records.length === 1 ? "" : "s"}: ${records.map((r) => r.name).join(", ")}`
+      : "no records picked";
+    this.dynamicChanged();
   }
 
   /** Shows the fields of the chosen code only (the others keep their values). */
@@ -252,16 +324,16 @@ export class AssessView {
     this.set("site.soil", site.soil);
     this.set("site.topography", site.topography || "T1");
     this.set("site.spectrum_type", site.spectrum_type ?? 1);
-    for (const code of Object.keys(STATES))
-      for (const st of STATES[code]) for (const [k] of STATE_KEYS[code]) this.set(`site.${st}.${k}`, site[st]?.[k]);
+    for (const code of Object.keys(STATES)) for (const st of STATES[code]) for (const k of STATE_KEYS[code]) this.set(`site.${st}.${k}`, site[st]?.[k]);
     for (const k of ["lon", "lat", "VN", "CU"]) this.set(`site.${k}`, site[k]);
-    this.set("assessment.confidence_factor", assessment.confidence_factor);
-    this.set("assessment.q", assessment.q);
-    this.set("assessment.capacity", assessment.capacity || "linear");
+    for (const k of [...ASSESSMENT_FIELDS, ...DYNAMIC_FIELDS]) this.set(`assessment.${k}`, assessment[k]);
+    for (const k of ["from", "to", "step"]) this.set(`assessment.lambda.${k}`, assessment.lambda?.[k]);
+    for (const i of [0, 1]) this.set(`assessment.period_range.${i}`, assessment.period_range?.[i]);
     this.showCode();
-    const records = Array.isArray(assessment.records) ? assessment.records.length : 0;
-    $("assess-note").textContent = records && tower
-      ? `${example.path} names a record set (assessment.records) for the non-linear dynamic checks, which the command runs: rocking assess ${example.path}.`
+    const records = Array.isArray(assessment.records) ? assessment.records : [];
+    $("assess-note").textContent = records.length && tower
+      ? `${example.path} names its record set for the non-linear dynamic checks: ${records.join(", ")} (relative to the file). ` +
+        "Pick those files below to run them here, or run rocking assess " + example.path + "."
       : "";
     if (tower && sections.tower) this.page.apply(sections);
     if (site.grid) {
@@ -289,7 +361,7 @@ export class AssessView {
     if (!this.gridText) return this.showError("site.grid: choose a hazard grid file");
     try {
       const values = await this.engine.call({ kind: "grid", grid: this.gridText, lon, lat, VN, CU });
-      for (const st of STATES.ntc2018) for (const [k] of STATE_KEYS.ntc2018) this.set(`site.${st}.${k}`, values[st][k]);
+      for (const st of STATES.ntc2018) for (const k of STATE_KEYS.ntc2018) this.set(`site.${st}.${k}`, values[st][k]);
       $("assess-grid-note").textContent =
         `SLD, SLV, SLC from ${this.gridName} at lon ${lon}, lat ${lat}, VN ${VN}, CU ${CU}` +
         (/synthetic/i.test(this.gridName) ? " (a SYNTHETIC grid: illustrative values only; give the official one for a real site)." : ".");
@@ -314,18 +386,38 @@ export class AssessView {
     else site.spectrum_type = Number(this.field("site.spectrum_type").value);
     for (const st of STATES[code]) {
       const t = {};
-      for (const [k] of STATE_KEYS[code]) {
+      for (const k of STATE_KEYS[code]) {
         const v = parseValue(this.field(`site.${st}.${k}`).value);
         if (v !== undefined) t[k] = v;
       }
       if (Object.keys(t).length) site[st] = t;
     }
-    const assessment = { capacity: this.field("assessment.capacity").value };
-    for (const k of ["confidence_factor", "q"]) {
+    const assessment = {};
+    for (const k of ASSESSMENT_FIELDS) {
       const v = parseValue(this.field(`assessment.${k}`).value);
       if (v !== undefined) assessment[k] = v;
     }
     return { ...s, site, assessment };
+  }
+
+  /** The table of the dynamic checks: the assessment's, with the record set picked and the dynamic checks' keys. */
+  dynamicTable() {
+    const table = this.table();
+    const a = table.assessment;
+    for (const k of DYNAMIC_FIELDS) {
+      const v = parseValue(this.field(`assessment.${k}`).value);
+      if (v !== undefined) a[k] = v;
+    }
+    const lambda = {};
+    for (const k of ["from", "to", "step"]) {
+      const v = parseValue(this.field(`assessment.lambda.${k}`).value);
+      if (v !== undefined) lambda[k] = v;
+    }
+    if (Object.keys(lambda).length) a.lambda = lambda;
+    const range = [0, 1].map((i) => parseValue(this.field(`assessment.period_range.${i}`).value));
+    if (range.some((v) => v !== undefined)) a.period_range = range.map((v) => v ?? null);
+    a.records = this.records;
+    return table;
   }
 
   /** The page's scenario changed (the tower, the building…): recompute when shown. */
@@ -334,7 +426,8 @@ export class AssessView {
   }
 
   /** The tab shown or hidden. */
-  show(visible) {
+  async show(visible) {
+    await this.ready;
     this.visible = visible;
     if (visible && !this.started) {
       this.started = true;
@@ -345,23 +438,25 @@ export class AssessView {
   }
 
   changed() {
+    this.dynamicChanged();
     this.dirty = true;
     this.panel.classList.add("stale");
     if (this.visible) this.compute();
   }
 
   async compute() {
+    await this.ready;
     this.dirty = false;
     const id = ++this.requested;
     this.panel.dataset.state = "computing";
     const table = this.table();
     try {
-      const result = await this.engine.call({ kind: "assess", table: JSON.stringify(table) });
+      const { texts, ...result } = await this.engine.call({ kind: "assess", table: JSON.stringify(table) });
       if (id !== this.requested) return;
+      this.texts = texts;
       this.result = result;
       // Kept on the element too, for the page's tests.
       this.panel.assessment = result;
-      this.q = table.assessment.q ?? 2;
       this.showError("");
       this.render();
       $("assess-time").textContent = `Computed in ${result.ms.toFixed(1)} ms.`;
@@ -400,14 +495,25 @@ export class AssessView {
     input.setAttribute("aria-describedby", note.id);
   }
 
+  /** A check's name and formula (HTML), as the engine writes them for report.html. */
+  text(method) {
+    return this.texts[method] || { name: method, formula_html: "" };
+  }
+
   render() {
     const r = this.result;
-    const checks = r.checks;
-    const governing = r.governing;
+    // The dynamic checks' rows, when they ran on the assessment shown.
+    const dynamic = this.dynamic?.result;
+    const checks = dynamic ? dynamic.checks : r.checks;
+    const governing = dynamic ? dynamic.governing : r.governing;
     const cell = (value, digits, bound = false) => `<td class="num" data-value="${value}">${bound ? "≥ " : ""}${sig(value, digits)}</td>`;
     const unit = (u) => u.replace("m/s2", "m/s²");
     const body = checks.map((c) => {
-      const m = METHODS[c.method] || { name: c.method, formula: () => "" };
+      const m = this.text(c.method);
+      if (c.completed === false) {
+        return `<tr data-limit-state="${c.limit_state}" data-method="${c.method}"><td>${c.limit_state}</td><td>${m.name}</td>` +
+          `<td colspan="6" class="fails">could not be completed: ${escapeHtml(c.error || "a record failed")}</td><td class="formula">${m.formula_html}</td></tr>`;
+      }
       const isGoverning = governing && governing.limit_state === c.limit_state && governing.method === c.method;
       const bound = c.ag_capacity_is_lower_bound;
       return (
@@ -419,28 +525,201 @@ export class AssessView {
         `<td class="${c.holds ? "holds" : "fails"}">${c.holds ? "holds" : "fails"}</td>` +
         `<td class="num" data-value="${c.demand}">${sig(c.demand, 4)} ${unit(c.unit)}</td>` +
         `<td class="num" data-value="${c.capacity}">${sig(c.capacity, 4)} ${unit(c.unit)}</td>` +
-        `<td class="formula">${m.formula(this.q)}</td></tr>`
+        `<td class="formula">${m.formula_html}</td></tr>`
       );
     });
     this.panel.querySelector("#assess-checks tbody").innerHTML = body.join("");
     const g = governing;
-    const gm = g && (METHODS[g.method] || { name: g.method, formula: () => "" });
     const line = $("assess-governing");
-    line.textContent = g
-      ? `Governing: ${g.limit_state} ${gm.name} (${gm.formula(this.q)}): ag capacity ${g.ag_capacity_is_lower_bound ? "≥ " : ""}${sig(g.ag_capacity_g, 4)} g ` +
-        `against ag ${sig(g.ag_g, 4)} g, ζ_E = ${g.ag_capacity_is_lower_bound ? "≥ " : ""}${sig(g.zeta_E, 3)}: ${g.holds ? "it holds" : "it FAILS"}.`
-      : "";
+    if (g) {
+      const gm = this.text(g.method);
+      const bound = g.ag_capacity_is_lower_bound ? "≥ " : "";
+      line.innerHTML =
+        `Governing: ${g.limit_state} ${gm.name} (${gm.formula_html}): ag capacity ${bound}${sig(g.ag_capacity_g, 4)} g ` +
+        `against ag ${sig(g.ag_g, 4)} g, ζ_E = ${bound}${sig(g.zeta_E, 3)}: ${g.holds ? "it holds" : "it FAILS"}.`;
+    } else line.textContent = "";
     line.classList.toggle("danger", !!g && !g.holds);
     const c = r.capacity;
     this.panel.querySelector("#assess-capacity tbody").innerHTML =
       CAPACITY.map(([k, symbol, u, meaning]) => `<tr><td class="label" title="${meaning}">${symbol}</td><td class="num" data-key="${k}" data-value="${c[k]}">${sig(c[k], 4)}</td><td>${u}</td></tr>`).join("") +
       `<tr><td class="label">FC, curve</td><td class="num">${c.confidence_factor}</td><td>${c.curve}</td></tr>`;
+    // The sites' columns: every field assessment.json gives for a limit state, in its order.
     const states = Object.keys(r.sites);
-    const fields = SITE_FIELDS.filter(([k]) => states.some((s) => r.sites[s][k] !== undefined));
-    this.panel.querySelector("#assess-sites thead").innerHTML = `<tr><th>limit state</th>${fields.map(([, l]) => `<th>${l}</th>`).join("")}</tr>`;
+    const fields = [...new Set(states.flatMap((s) => Object.keys(r.sites[s])))];
+    this.panel.querySelector("#assess-sites thead").innerHTML = `<tr><th>limit state</th>${fields.map((k) => `<th>${fieldHeading(k)}</th>`).join("")}</tr>`;
     this.panel.querySelector("#assess-sites tbody").innerHTML = states
-      .map((s) => `<tr><td>${s}</td>${fields.map(([k]) => (r.sites[s][k] === undefined ? "<td></td>" : cell(r.sites[s][k], 4))).join("")}</tr>`)
+      .map((s) => `<tr><td>${s}</td>${fields.map((k) => (r.sites[s][k] === undefined ? "<td></td>" : cell(r.sites[s][k], 4))).join("")}</tr>`)
       .join("");
+    this.drawChart();
+  }
+
+  /**
+   * The capacity curve in the ADRS plane (a* against d*), as report.html
+   * draws it: the ultimate displacements d_SLV and d_SLC on it, the
+   * non-linear kinematic demands at the site's ag and, when they ran, the
+   * dynamic checks' responses (the mean, or the largest, of the set at λ = 1),
+   * each at a*(d) of the curve; a demand that fails drawn as a cross.
+   */
+  drawChart() {
+    const r = this.result;
+    const box = $("assess-adrs");
+    if (!r) return;
+    const c = r.capacity;
+    const curve = r.curve;
+    const at = (d) => {
+      // a* on the curve at d (linear between its points; 0 beyond d0).
+      if (d >= curve[curve.length - 1][0]) return curve[curve.length - 1][1];
+      const i = Math.max(1, curve.findIndex(([x]) => x >= d));
+      const [[x0, y0], [x1, y1]] = [curve[i - 1], curve[i]];
+      return x1 === x0 ? y0 : y0 + ((y1 - y0) * (d - x0)) / (x1 - x0);
+    };
+    const points = [
+      { label: `d_SLV = 0.4 d0 = ${sig(c.d_SLV_m, 3)} m`, d: c.d_SLV_m, color: "#2a7a2a", fails: false },
+      { label: `d_SLC = 0.6 d0 = ${sig(c.d_SLC_m, 3)} m`, d: c.d_SLC_m, color: "#7a4a9a", fails: false },
+    ];
+    const checks = this.dynamic?.result?.checks ?? r.checks;
+    const colors = { nonlinear_kinematic: ["#d07a10", "#b04a10"], nonlinear_dynamic: ["#1f77b4", "#0b3d91"] };
+    for (const k of checks.filter((k) => k.method in colors && k.completed !== false)) {
+      const i = k.limit_state === states(r)[1] ? 0 : 1;
+      points.push({
+        label: `${k.limit_state} ${this.text(k.method).name} demand ${sig(k.demand, 3)} m`,
+        d: Math.min(k.demand, c.d0_m),
+        color: colors[k.method][i],
+        fails: !k.holds,
+      });
+    }
+    // One x array: the curve's points and each marker's d, sorted; each series null where it has no point.
+    const xs = [...new Set([...curve.map(([d]) => d), ...points.map((p) => p.d)])].sort((a, b) => a - b);
+    const curveAt = new Map(curve.map(([d, a]) => [d, a]));
+    const data = [xs, xs.map((x) => curveAt.get(x) ?? null), ...points.map((p) => xs.map((x) => (x === p.d ? at(p.d) : null)))];
+    const series = [
+      {},
+      { label: "capacity a*(d*) (m/s²)", stroke: "#222", width: 3, spanGaps: true, points: { show: false } },
+      ...points.map((p) => ({
+        label: p.label + (p.fails ? " (fails)" : ""),
+        stroke: p.color,
+        width: 0,
+        paths: () => null,
+        points: { show: true, size: p.fails ? 13 : 10, width: 2, stroke: p.color, fill: p.fails ? "#fff" : p.color },
+      })),
+    ];
+    if (this.chart) this.chart.destroy();
+    box.replaceChildren();
+    this.chart = new uPlot(
+      {
+        width: this.chartWidth(),
+        height: 300,
+        title: `Capacity curve in the ADRS plane (${c.curve} curve, FC = ${c.confidence_factor}, e* = ${c.e_star})`,
+        legend: { live: false },
+        scales: { x: { time: false, range: (u, min, max) => [0, Math.max(max, c.d0_m)] }, y: { range: (u, min, max) => [0, max * 1.05] } },
+        series,
+        axes: [{ label: "spectral displacement d* (m)" }, yAxis("spectral acceleration a* (m/s²)")],
+      },
+      data,
+      box,
+    );
+    box.dataset.points = JSON.stringify(points.map((p) => ({ label: p.label, d: p.d, a: at(p.d), fails: p.fails })));
+  }
+
+  chartWidth() {
+    return Math.max(280, Math.min(760, $("assess-adrs").clientWidth || 700));
+  }
+
+  resizeChart() {
+    if (this.chart && this.chart.width !== this.chartWidth()) this.chart.setSize({ width: this.chartWidth(), height: this.chart.height });
+  }
+
+  /** The dynamic checks' inputs changed: a result shown is no longer theirs. */
+  dynamicChanged() {
+    if (this.dynamicWorker) this.stopDynamic("Stopped: the inputs changed.");
+    if (this.dynamic) {
+      this.dynamic = null;
+      $("assess-dynamic-results").hidden = true;
+      $("assess-dynamic-label").textContent = "The inputs changed: run the dynamic checks again.";
+      if (this.result) this.render();
+    }
+  }
+
+  stopDynamic(message) {
+    this.dynamicWorker?.terminate();
+    this.dynamicWorker = null;
+    $("assess-dynamic-cancel").hidden = true;
+    $("assess-dynamic-progress").hidden = true;
+    $("assess-dynamic-run").disabled = false;
+    $("assess-dynamic-label").textContent = message;
+    $("assess-dynamic").dataset.state = "stopped";
+  }
+
+  /** Runs the dynamic checks in a Web Worker of their own (cancelled by ending it), the progress shown. */
+  async runDynamic() {
+    await this.ready;
+    if (this.dynamicWorker) this.stopDynamic("");
+    this.dynamic = null;
+    $("assess-dynamic-results").hidden = true;
+    const section = $("assess-dynamic");
+    const label = $("assess-dynamic-label");
+    const bar = $("assess-dynamic-progress");
+    if (this.records.length === 0) {
+      label.textContent = "Pick the record files first (3 or more).";
+      section.dataset.state = "error";
+      return;
+    }
+    const table = JSON.stringify(this.dynamicTable());
+    const worker = new Worker(new URL("./assess-dynamic-worker.js", import.meta.url), { type: "module" });
+    this.dynamicWorker = worker;
+    section.dataset.state = "running";
+    bar.hidden = false;
+    bar.value = 0;
+    bar.max = 1;
+    $("assess-dynamic-cancel").hidden = false;
+    $("assess-dynamic-run").disabled = true;
+    label.textContent = `Reading ${this.records.length} records…`;
+    worker.onmessage = ({ data }) => {
+      if (worker !== this.dynamicWorker) return;
+      if (data.progress !== undefined) {
+        bar.max = data.most;
+        bar.value = data.progress;
+        label.textContent = `${data.progress} of at most ${data.most} runs of a record`;
+        return;
+      }
+      this.stopDynamic("");
+      if (data.error !== undefined) {
+        this.showError(data.error);
+        label.textContent = "";
+        section.dataset.state = "error";
+        return;
+      }
+      this.dynamic = { result: data.result, table };
+      // Kept on the element too, for the page's tests.
+      section.assessment = data.result;
+      this.showError("");
+      this.render();
+      this.renderRecords();
+      $("assess-dynamic-results").hidden = false;
+      const runs = data.result.dynamic.reduce((n, d) => n + (d.scan.length + 1) * d.records.length, 0);
+      label.textContent = `Done: ${runs} runs of a record in ${(data.ms / 1000).toFixed(1)} s.`;
+      section.dataset.state = "done";
+    };
+    worker.postMessage({ table });
+  }
+
+  /** The table of each record's response at its fitted scale (records.csv). */
+  renderRecords() {
+    const num = (x) => (x === null || x === undefined ? "—" : `<span data-value="${x}">${sig(x, 4)}</span>`);
+    this.panel.querySelector("#assess-records tbody").innerHTML = this.dynamic.result.responses
+      .map((r) =>
+        `<tr><td>${r.limit_state}</td><td>${escapeHtml(r.record)}</td><td class="num">${num(r.scale)}</td><td class="num">${num(r.max_control_displacement_m)}</td>` +
+        `<td>${r.error ? "" : r.overturned}</td><td class="num">${num(r.max_building_slip_m)}</td><td>${escapeHtml(r.error ?? "")}</td></tr>`)
+      .join("");
+  }
+
+  /** The dynamic checks' assessment.json, records.csv or spectra.csv. */
+  downloadDynamic(name) {
+    const r = this.dynamic?.result;
+    if (!r) return;
+    const { curve, records_csv, spectra_csv, responses, ...json } = r;
+    const text = { "records.csv": records_csv, "spectra.csv": spectra_csv }[name] ?? JSON.stringify(json, null, 2) + "\n";
+    save(name, text);
   }
 
   /** assessment.json (the command's, without a record set) or capacity.csv. */
@@ -448,10 +727,20 @@ export class AssessView {
     if (!this.result) return;
     const { curve, ms, ...json } = this.result;
     const text = name === "capacity.csv" ? "d_star_m,a_star_m_s2\n" + curve.map(([d, a]) => `${d},${a}`).join("\n") + "\n" : JSON.stringify(json, null, 2) + "\n";
-    const a = document.createElement("a");
-    a.href = URL.createObjectURL(new Blob([text], { type: "text/plain" }));
-    a.download = name;
-    a.click();
-    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+    save(name, text);
   }
+}
+
+/** Offers `text` as a file named `name`. */
+function save(name, text) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(new Blob([text], { type: "text/plain" }));
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+/** The limit states of an assessment in order: damage, life safety, collapse. */
+function states(r) {
+  return Object.keys(r.sites);
 }

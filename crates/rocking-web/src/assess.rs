@@ -65,7 +65,8 @@ pub fn grid_site_json(grid: &str, lon: f64, lat: f64, nominal_life: f64, use_coe
 /// record read by the reader of the command's files. The JSON text of
 /// `assessment.json` as the command writes it (with the dynamic checks), plus
 /// `curve` (the capacity curve, `[[d*, a*], …]`), `records_csv` and
-/// `spectra_csv` (the texts of `records.csv` and `spectra.csv`).
+/// `spectra_csv` (the texts of `records.csv` and `spectra.csv`) and
+/// `responses` (the rows of `records.csv` as objects).
 /// `progress(done, most)` is told after each record's run. An error is the
 /// command's one line, the file named `assess.toml`; a record that fails to
 /// run leaves its check not completed, as in the command's `assessment.json`.
@@ -84,14 +85,36 @@ pub fn assess_dynamic_json(text: &str, progress: &(dyn Fn(usize, usize) + Sync))
             map.insert("records_csv".into(), json!(records));
             map.insert("spectra_csv".into(), json!(spectra));
         }
+        map.insert("responses".into(), responses(&done));
     }
     Ok(out.to_string())
 }
 
+/// The rows of `records.csv` as objects (the page's table of them): per
+/// dynamic check and record, its scale at λ = 1 and its response there.
+fn responses(done: &Assessment) -> Value {
+    let Some((set, checks)) = done.dynamic_part() else { return json!([]) };
+    let mut rows = Vec::new();
+    for c in checks {
+        for ((record, scale), response) in set.records.iter().zip(&c.fitted.scales).zip(&c.at_one.responses) {
+            let (d, overturned, slip, error) = match response {
+                Ok(r) => (r.max_displacement, Some(r.overturned), r.max_slip, None),
+                Err(e) => (None, None, None, Some(e.as_str())),
+            };
+            rows.push(json!({
+                "limit_state": c.limit_state.as_str(), "record": record.path, "scale": scale,
+                "max_control_displacement_m": d, "overturned": overturned, "max_building_slip_m": slip, "error": error,
+            }));
+        }
+    }
+    Value::Array(rows)
+}
+
 /// Each check's name and formula (HTML) as the command's report.html writes
-/// them, for the behaviour factor `q`: the JSON text of `{ "activation": {
+/// them, for the behaviour factor `q` (absent: the default): the JSON text of `{ "activation": {
 /// "name", "formula_html" }, … }`, keyed by the method's name in the outputs.
-pub fn check_texts_json(q: f64) -> String {
+pub fn check_texts_json(q: Option<f64>) -> String {
+    let q = q.unwrap_or(rocking_assess::DEFAULT_Q);
     let map: serde_json::Map<String, Value> = Method::ALL
         .iter()
         .map(|m| {
@@ -134,9 +157,9 @@ pub fn assess_dynamic(text: &str, progress: js_sys::Function) -> Result<String, 
     out.map_err(|e| JsError::new(&e))
 }
 
-/// See [`check_texts_json`].
+/// See [`check_texts_json`]; `q` absent is the default.
 #[wasm_bindgen(js_name = checkTexts)]
-pub fn check_texts(q: f64) -> String {
+pub fn check_texts(q: Option<f64>) -> String {
     check_texts_json(q)
 }
 

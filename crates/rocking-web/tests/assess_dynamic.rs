@@ -54,6 +54,10 @@ fn records_given_as_text_give_the_commands_numbers() {
     assert_eq!(map.remove("records_csv"), Some(json!(records_csv)));
     assert_eq!(map.remove("spectra_csv"), Some(json!(spectra_csv)));
     assert!(map.remove("curve").is_some());
+    // The rows of records.csv as objects: one per limit state and record.
+    let responses = map.remove("responses").unwrap();
+    assert_eq!(responses.as_array().map(Vec::len), Some(2 * RECORDS.len()));
+    assert_eq!(records_csv.lines().count(), 1 + 2 * RECORDS.len());
     // The name: the command's is the file stem, the page's that of its origin.
     let mut expected = expected;
     expected["name"] = page["name"].clone();

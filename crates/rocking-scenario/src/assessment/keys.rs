@@ -14,7 +14,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "\"ntc2018\" or \"ec8\"",
         "The code: NTC 2018 spectra and limit states SLO–SLC, or EN 1998-1 spectra with EN 1998-3's DL, SD, NC.",
         "\"ntc2018\"",
-    ),
+    )
+    .choices(&["ntc2018", "ec8"]),
     key(
         "site.soil",
         Text,
@@ -23,7 +24,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "\"A\" to \"E\"",
         "Subsoil category (NTC 2018 §3.2.2) or ground type (EN 1998-1 §3.1.2).",
         "\"B\"",
-    ),
+    )
+    .choices(&["A", "B", "C", "D", "E"]),
     key(
         "site.topography",
         Text,
@@ -32,7 +34,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "\"T1\" to \"T4\"; NTC only; not with ST",
         "Topographic category: ST = 1.0, 1.2, 1.2, 1.4 (NTC 2018 Tab. 3.2.V).",
         "\"T2\"",
-    ),
+    )
+    .choices(&["T1", "T2", "T3", "T4"]),
     key(
         "site.ST",
         Number,
@@ -50,7 +53,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "1 or 2; EC8 only",
         "EN 1998-1 spectrum type (1: Ms > 5.5, 2: smaller earthquakes).",
         "1",
-    ),
+    )
+    .placeholder("1"),
     key(
         "site.grid",
         Text,
@@ -86,7 +90,9 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "> 0; with grid",
         "Nominal life VN (NTC 2018 §2.4.1); TR = −VN CU / ln(1 − P_VR).",
         "50",
-    ),
+    )
+    .shown("VN", "nominal life")
+    .placeholder("50"),
     key(
         "site.CU",
         Number,
@@ -95,7 +101,9 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "> 0; with grid",
         "Coefficient of use CU of the class of use (NTC 2018 §2.4.3).",
         "1.5",
-    ),
+    )
+    .shown("CU", "coefficient of use")
+    .placeholder("1"),
     key(
         "site.SLO",
         Table,
@@ -185,7 +193,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "> 0",
         "Tc*, the period that fixes TC = CC Tc*.",
         "0.36",
-    ),
+    )
+    .shown("Tc*", "Tc*"),
     key(
         "assessment.confidence_factor",
         Number,
@@ -194,7 +203,9 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "> 0; >= 1 for rocking assess",
         "Confidence factor FC, dividing the capacity's accelerations (LC1: 1.35, LC2: 1.2, LC3: 1).",
         "1.35",
-    ),
+    )
+    .shown("FC", "confidence factor")
+    .placeholder("1.35"),
     key(
         "assessment.q",
         Number,
@@ -203,7 +214,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "> 0",
         "Behaviour factor q of the linear kinematic check.",
         "2.0",
-    ),
+    )
+    .placeholder("2"),
     key(
         "assessment.capacity",
         Text,
@@ -212,7 +224,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "\"linear\" or \"exact\"",
         "Capacity curve: the Circolare's linear a*(d), or the rigid block's exact one.",
         "\"exact\"",
-    ),
+    )
+    .choices(&["linear", "exact"]),
     key(
         "assessment.records",
         List,
@@ -230,7 +243,9 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "\"g\", \"m/s2\" or \"cm/s2\"",
         "Units of the acceleration column of the set's CSV records, as ground.units (AT2 and ESM files carry their own).",
         "\"cm/s2\"",
-    ),
+    )
+    .placeholder("g")
+    .choices(&["g", "m/s2", "cm/s2"]),
     key(
         "assessment.dt",
         Number,
@@ -257,7 +272,8 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         ">= 0",
         "Seconds run after the end of each record in the dynamic checks.",
         "10.0",
-    ),
+    )
+    .placeholder("10"),
     key(
         "assessment.lambda",
         Table,
@@ -272,7 +288,46 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
 #[cfg(test)]
 mod tests {
     use super::ASSESSMENT_KEY_DOCS;
-    use crate::assessment::{ASSESSMENT_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+    use crate::assessment::{AssessmentFile, ASSESSMENT_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+    use std::path::Path;
+
+    /// The choices the page's form offers are those the parser takes: a value
+    /// outside them is refused with the parser's own list, which names them in order.
+    #[test]
+    fn the_choices_are_the_parsers() {
+        let base = "[tower]\nwidth = 4.0\nheight = 12.0\nmass = 1.5e5\n[site]\nsoil = \"B\"\n[site.SLD]\nag = 0.062\nF0 = 2.52\nTc_star = 0.30\n[assessment]\n";
+        let mut checked = 0;
+        for doc in ASSESSMENT_KEY_DOCS.iter().filter(|d| !d.choices.is_empty()) {
+            let (section, name) = doc.key.split_once('.').unwrap_or_default();
+            let text = |value: &str| {
+                let file = base
+                    .replace(&format!("{name} = \"B\"\n"), "")
+                    .replace(&format!("[{section}]\n"), &format!("[{section}]\n{name} = \"{value}\"\n"));
+                // EC8's limit states are DL, SD, NC, each with its ag alone.
+                if value == "ec8" {
+                    file.replace("[site.SLD]\nag = 0.062\nF0 = 2.52\nTc_star = 0.30\n", "[site.DL]\nag = 0.062\n")
+                } else {
+                    file
+                }
+            };
+            for choice in doc.choices {
+                let parsed = AssessmentFile::from_toml_str(&text(choice), Path::new("a.toml"));
+                assert!(parsed.is_ok(), "{} = {choice}: {parsed:?}", doc.key);
+            }
+            let e = AssessmentFile::from_toml_str(&text("zz"), Path::new("a.toml"))
+                .err()
+                .map(|e| e.to_string())
+                .unwrap_or_default();
+            // Each choice named in the error, in order, after the value refused.
+            let mut rest = e.split_once("zz").map_or("", |(_, r)| r);
+            for choice in doc.choices {
+                let at = rest.find(choice).unwrap_or_else(|| panic!("{}: {choice} not in {e}", doc.key));
+                rest = &rest[at + choice.len()..];
+            }
+            checked += 1;
+        }
+        assert_eq!(checked, 5);
+    }
 
     #[test]
     fn documents_exactly_the_keys_the_parser_takes() {
