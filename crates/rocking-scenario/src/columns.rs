@@ -8,9 +8,12 @@
 //! An optional column is one entry with a presence condition on the run's
 //! [`Layout`] (a vertical ground motion, when it comes, adds `ground_acc_v`).
 
+use crate::block::BlockNames;
 use crate::run::Outcome;
 use crate::sweep::Cell;
+use rocking::stack::run::BlockSummary;
 use rocking::{EndReason, Event, Motion, Sample};
+use std::borrow::Cow;
 
 /// What a run's outputs hold beyond the fixed columns: the presence
 /// conditions read it. Known before the run (from the scenario).
@@ -21,6 +24,15 @@ pub struct Layout {
     /// A vertical ground motion (`[ground.vertical]`): `ground_acc_v` and
     /// `min_effective_gravity_m_s2`.
     pub vertical: bool,
+    /// The blocks on the tower (`[[block]]`): each adds the columns of
+    /// [`HISTORY_BLOCKS`] and the fields of [`SUMMARY_BLOCKS`] prefixed by its
+    /// name, and the run the fields of [`SUMMARY`] present with [`stacked`].
+    pub blocks: BlockNames,
+}
+
+/// The run has blocks on its tower.
+pub fn stacked(layout: &Layout) -> bool {
+    !layout.blocks.is_empty()
 }
 
 /// The run has a vertical ground motion.
@@ -175,6 +187,49 @@ pub const HISTORY_POINTS: &[PointColumn] = &[
     },
 ];
 
+/// A column repeated for each block on the tower: named `{name}_{suffix}`,
+/// after the extra points.
+#[derive(Debug, Clone, Copy)]
+pub struct BlockColumn {
+    /// The part of the name after `{name}_`.
+    pub suffix: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// What it is, for the reference.
+    pub meaning: &'static str,
+    /// How it is read from a sample for the `k`-th block above the tower (from 1).
+    pub read: fn(&Sample, usize) -> f64,
+}
+
+/// The columns of each block on the tower.
+pub const HISTORY_BLOCKS: &[BlockColumn] = &[
+    BlockColumn {
+        suffix: "theta",
+        unit: "rad",
+        meaning: "rotation of the block relative to the block below",
+        read: |s, k| s.stack.map_or(0.0, |st| st.theta[k]),
+    },
+    BlockColumn {
+        suffix: "theta_dot",
+        unit: "rad/s",
+        meaning: "its angular velocity relative to the block below",
+        read: |s, k| s.stack.map_or(0.0, |st| st.theta_dot[k]),
+    },
+];
+
+/// The name of the `kind` column of `events.csv`, whose text is [`event_kind`].
+pub const KIND: &str = "kind";
+
+/// The `kind` of an event in `events.csv`: the event's own (`impact`) for the
+/// tower and the building, prefixed by the block's name for a block's
+/// (`belfry_impact`).
+pub fn event_kind(layout: &Layout, event: &Event) -> Cow<'static, str> {
+    match event.block {
+        0 => Cow::Borrowed(event.kind.as_str()),
+        k => Cow::Owned(format!("{}_{}", layout.blocks.name(k), event.kind.as_str())),
+    }
+}
+
 /// The columns of `events.csv`, in order (`theta`, `slip_vel`, `slip` and `regime` after the event).
 pub const EVENTS: &[Column<Event>] = &[
     Column {
@@ -185,9 +240,9 @@ pub const EVENTS: &[Column<Event>] = &[
         read: Read::Number(|e| e.time),
     },
     Column {
-        name: "kind",
+        name: KIND,
         unit: "",
-        meaning: "`uplift`, `impact`, `rest`, `slip`, `stick`, `reverse` or `overturn`",
+        meaning: "`uplift`, `impact`, `rest`, `slip`, `stick`, `reverse` or `overturn`; a block's `<name>_uplift`, `<name>_impact`, `<name>_rest` or `<name>_overturn`, whose θ columns then hold that block's θ ([`event_kind`])",
         present: always,
         read: Read::Text(|e| e.kind.as_str()),
     },
@@ -571,6 +626,25 @@ pub const SUMMARY: &[Field] = &[
         present: always,
         read: |o| count(o.summary.evaluations),
     },
+    Field {
+        name: "max_seat_impulse_ratio",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "(with `[[block]]`) the largest ratio of the impulsive moment a seated interface carried through an impact elsewhere to the most its base can carry, V_imp B/2: the model keeps it seated, and above 1 that assumption is violated (the block would tip)",
+        present: stacked,
+        read: |o| float(o.summary.stack.map(|s| s.max_seat_impulse_ratio)),
+    },
+    Field {
+        name: "overturned_block",
+        kind: Kind::Text,
+        unit: "",
+        meaning: "(with `[[block]]`) the block that overturned: `tower` or a block's name; empty when none did (`overturned` is true when any did)",
+        present: stacked,
+        read: |o| match o.summary.stack.and_then(|s| s.overturned_block) {
+            Some(k) => Cell::Text(o.layout.blocks.name(k).to_string()),
+            None => Cell::Empty,
+        },
+    },
 ];
 
 /// The last field of `summary.json` (and column of `sweep.csv` before `error`): the run's wall-clock time.
@@ -690,6 +764,9 @@ pub fn history_header(columns: &[Column<Sample>], points: &[PointColumn], layout
     for k in 1..=layout.points {
         header.extend(points.iter().map(|p| format!("p{k}_{}", p.suffix)));
     }
+    for name in layout.blocks.iter() {
+        header.extend(HISTORY_BLOCKS.iter().map(|c| format!("{name}_{}", c.suffix)));
+    }
     header
 }
 
@@ -701,6 +778,11 @@ pub fn history_values<'a>(columns: &[Column<Sample>], points: &[PointColumn], la
     for p in row.points {
         for c in points {
             cell(Value::Number((c.read)(p)));
+        }
+    }
+    for k in 1..=layout.blocks.len() {
+        for c in HISTORY_BLOCKS {
+            cell(Value::Number((c.read)(row.sample, k)));
         }
     }
 }
@@ -733,6 +815,101 @@ pub fn fields_of(fields: &[Field], layout: &Layout, outcome: &Outcome) -> Vec<(S
         .collect()
 }
 
+/// A summary field repeated for each block on the tower: named `{name}_{suffix}`,
+/// after the fields of [`SUMMARY`].
+#[derive(Clone, Copy)]
+pub struct BlockField {
+    /// The part of the name after `{name}_`.
+    pub suffix: &'static str,
+    /// What the values are.
+    pub kind: Kind,
+    /// SI unit, empty for a count, a ratio or a flag.
+    pub unit: &'static str,
+    /// What it is, for the reference.
+    pub meaning: &'static str,
+    /// How it is read for the `k`-th block above the tower (from 1).
+    pub read: fn(&Outcome, usize) -> Cell,
+}
+
+impl std::fmt::Debug for BlockField {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BlockField").field("suffix", &self.suffix).finish_non_exhaustive()
+    }
+}
+
+/// What the run found of the `k`-th block above the tower (from 1).
+fn block_of(o: &Outcome, k: usize) -> Option<&BlockSummary> {
+    o.summary.stack.as_ref().and_then(|s| s.blocks().get(k - 1))
+}
+
+/// The fields of each block on the tower.
+pub const SUMMARY_BLOCKS: &[BlockField] = &[
+    BlockField {
+        suffix: "max_abs_theta_rad",
+        kind: Kind::Number,
+        unit: "rad",
+        meaning: "largest rotation in absolute value of the block relative to the block below",
+        read: |o, k| float(block_of(o, k).map(|b| b.max_abs_theta)),
+    },
+    BlockField {
+        suffix: "max_theta_over_alpha",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "that peak over the block's own slenderness α = atan(B/H)",
+        read: |o, k| {
+            let alpha = o.blocks.get(k - 1).map(rocking::stack::Block::alpha);
+            float(block_of(o, k).zip(alpha).map(|(b, a)| b.max_abs_theta / a))
+        },
+    },
+    BlockField {
+        suffix: "impacts",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "impacts of the block on the block below",
+        read: |o, k| block_of(o, k).map_or(Cell::Empty, |b| count(b.impacts as u64)),
+    },
+    BlockField {
+        suffix: "first_uplift_time_s",
+        kind: Kind::Number,
+        unit: "s",
+        meaning: "first time the block lifted off the block below",
+        read: |o, k| float(block_of(o, k).and_then(|b| b.first_uplift_time)),
+    },
+    BlockField {
+        suffix: "overturned",
+        kind: Kind::Flag,
+        unit: "",
+        meaning: "whether the block overturned (its rotation reached π/2; the run stops there)",
+        read: |o, k| Cell::Bool(o.summary.stack.is_some_and(|s| s.overturned_block == Some(k))),
+    },
+    BlockField {
+        suffix: "max_friction_demand",
+        kind: Kind::Number,
+        unit: "",
+        meaning: "largest ratio of the tangential to the normal force between the block and the block below (the friction the joint needs; the model lets it never slide); empty once the block above lost contact",
+        read: |o, k| float(block_of(o, k).map(|b| b.max_friction_demand)),
+    },
+];
+
+/// The names of the summary fields of a run of `layout`, in order: those of
+/// [`SUMMARY`] present, then each block's ([`SUMMARY_BLOCKS`]).
+pub fn summary_names(layout: &Layout) -> Vec<String> {
+    let mut names: Vec<String> = SUMMARY.iter().filter(|f| (f.present)(layout)).map(|f| f.name.to_string()).collect();
+    for name in layout.blocks.iter() {
+        names.extend(SUMMARY_BLOCKS.iter().map(|f| format!("{name}_{}", f.suffix)));
+    }
+    names
+}
+
+/// Each block's summary fields of `outcome`, in the order of [`summary_names`].
+pub fn block_fields_of(outcome: &Outcome) -> Vec<(String, Cell)> {
+    let mut out = Vec::new();
+    for (i, name) in outcome.layout.blocks.iter().enumerate() {
+        out.extend(SUMMARY_BLOCKS.iter().map(|f| (format!("{name}_{}", f.suffix), (f.read)(outcome, i + 1))));
+    }
+    out
+}
+
 /// The outputs reference (Markdown): every column and field with its unit and
 /// meaning, generated from the lists of this module.
 pub fn outputs_markdown() -> String {
@@ -758,6 +935,14 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
             p.meaning
         ));
     }
+    for c in HISTORY_BLOCKS {
+        out.push_str(&format!(
+            "| `<name>_{}` | {} | {} (one pair per `[[block]]`, after the points, named by the block's `name`) |\n",
+            c.suffix,
+            unit(c.unit),
+            c.meaning
+        ));
+    }
     out.push_str("\n## `events.csv`\n\nOne row per event (a change of regime), in time order.\n\n| column | unit | meaning |\n|---|---|---|\n");
     for c in events {
         out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), c.meaning));
@@ -768,9 +953,24 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
          `sweep.csv` has one column per swept key, then these fields, then `error` (empty, or why the case failed).\n\n\
          | field | unit | meaning |\n|---|---|---|\n",
     );
-    for f in summary.iter().chain([&WALL_TIME]) {
+    for f in summary {
         out.push_str(&format!("| `{}` | {} | {} |\n", f.name, unit(f.unit), f.meaning));
     }
+    for f in SUMMARY_BLOCKS {
+        out.push_str(&format!(
+            "| `<name>_{}` | {} | {} (one per `[[block]]`, named by the block's `name`) |\n",
+            f.suffix,
+            unit(f.unit),
+            f.meaning
+        ));
+    }
+    out.push_str(&format!("| `{}` | {} | {} |\n", WALL_TIME.name, unit(WALL_TIME.unit), WALL_TIME.meaning));
+    out.push_str(
+        "\nWith `[[block]]` the tower's fields are those of the tower (block 1) in the stack, and `overturned` is true when any block overturned. \
+         The derived quantities (`alpha_rad` … `uplift_acceleration_g`) are the tower's alone; `rocking check` prints the ground acceleration \
+         that lifts each interface of the stack. The peaks of θ are located by root finding; the top's acceleration, the friction demands \
+         and the slip's peak are read at the ends of sixteen equal parts of every step and at every event.\n",
+    );
     out
 }
 
@@ -865,7 +1065,7 @@ mod tests {
                 // Text and flags of the tower are empty without one (end_state,
                 // will_overturn), and will_overturn while the end is undecided.
                 let ok = match f.kind {
-                    Kind::Text => matches!(cell, Cell::Text(_)) || (matches!(cell, Cell::Empty) && f.name == "end_state"),
+                    Kind::Text => matches!(cell, Cell::Text(_)) || (matches!(cell, Cell::Empty) && ["end_state", "overturned_block"].contains(&f.name)),
                     Kind::Flag => matches!(cell, Cell::Bool(_)) || (matches!(cell, Cell::Empty) && f.name == "will_overturn"),
                     Kind::Number => matches!(cell, Cell::Float(_) | Cell::Int(_) | Cell::Empty),
                 };

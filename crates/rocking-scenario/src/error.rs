@@ -242,9 +242,10 @@ mod tests {
         assert_eq!(keys.len(), P::ALL.len());
         assert!(!keys.contains("(parameter)"));
         let setting: Vec<P> = crate::SCENARIO_KEYS.iter().filter_map(|k| k.parameter).collect();
-        // All but the bodies (a section, not a key), each once.
-        assert_eq!(setting.len(), P::ALL.len() - 1);
-        assert!(P::ALL.iter().all(|p| *p == P::Bodies || setting.contains(p)));
+        // All but the bodies and the blocks (sections, not keys), each once.
+        assert_eq!(setting.len(), P::ALL.len() - 2);
+        assert!(P::ALL.iter().all(|p| *p == P::Bodies || *p == P::Blocks || setting.contains(p)));
+        assert_eq!(key_of(P::Blocks), "block");
         assert_eq!(key_of(P::TowerWidth), "tower.width");
         assert_eq!(key_of(P::GroundRickerCentre), "ground.t0");
         assert_eq!(key_of(P::Gravity), "simulation.g");

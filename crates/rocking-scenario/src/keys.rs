@@ -249,6 +249,64 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "Slenderness angle α = atan(b/h).",
         "0.3217",
     ).shown("α", "slenderness angle α").sets(P::TowerAlpha).off_form(),
+    // [[block]]
+    key(
+        "block.name",
+        Text,
+        "",
+        "block2, block3, … in order (the tower is block 1)",
+        "letters, digits and _ (not first a digit), at most 32 characters; unique; not a section's name nor \"tower\"",
+        "The block's name: it prefixes the block's outputs (`belfry_max_abs_theta_rad`) and its sweep keys (`belfry.width`).",
+        "\"belfry\"",
+    ).shown("name", "block name").off_form(),
+    key(
+        "block.width",
+        Number,
+        "m",
+        "required",
+        "> 0; at most the width of the block below (the tower's for the first)",
+        "Width of the block in the plane of rocking; it stands centred on the block below.",
+        "2.4",
+    ).shown("B", "block width").off_form(),
+    key("block.height", Number, "m", "required", "> 0", "Height of the block.", "6.0").shown("H", "block height").off_form(),
+    key("block.mass", Number, "kg", "required (or density)", "> 0", "Mass of the block.", "6.0e4").shown("m", "block mass").off_form(),
+    key(
+        "block.density",
+        Number,
+        "kg/m³",
+        "instead of mass",
+        "> 0; not with mass",
+        "Density of the block's masonry: the mass is density × volume of its section.",
+        "1800.0",
+    ).shown("ρ", "block density").off_form(),
+    key("block.depth", Number, "m", "= width", "> 0", "Depth of the block out of the plane of rocking.", "2.4").shown("depth", "block depth").off_form(),
+    key(
+        "block.section",
+        Text,
+        "",
+        "\"solid\"",
+        "\"solid\" or \"hollow\"",
+        "A uniform prism, or a tube open at both ends (a belfry's walls), as the tower's.",
+        "\"hollow\"",
+    ).shown("section", "block section").choices(&["solid", "hollow"]).off_form(),
+    key(
+        "block.wall_thickness",
+        Number,
+        "m",
+        "required for \"hollow\"; refused for \"solid\"",
+        "> 0 and 2t < min(width, depth)",
+        "Wall thickness of a hollow block.",
+        "0.6",
+    ).shown("t", "block wall thickness").off_form(),
+    key(
+        "block.inertia_centre",
+        Number,
+        "kg·m²",
+        "the section's: solid m (B² + H²)/12; hollow by parallel axes",
+        "> 0",
+        "Moment of inertia of the block about its own centre of mass; overrides the section's value.",
+        "2.1e5",
+    ).shown("J", "block moment of inertia").placeholder("the section's").off_form(),
     // [building]
     key(
         "building.mass",
@@ -541,12 +599,24 @@ pub fn describe_key(key: &str) -> Option<KeyRef> {
     }
 }
 
+/// The key of the key table that describes the sweep key `key` of a block
+/// named in `names` (`belfry.width` → `block.width`), if `key` is one.
+pub(crate) fn block_axis_key(key: &str, names: &crate::block::BlockNames) -> Option<String> {
+    let (name, rest) = key.split_once('.')?;
+    names.position(name)?;
+    Some(format!("{}.{rest}", crate::block::BLOCK))
+}
+
 /// The keys a sweep can vary, in table order: the scalar keys (every one but
 /// lists and tables), those of `[ground]` again for the vertical motion where
 /// the table `ground.vertical` stands.
 pub(crate) fn sweepable_keys() -> Vec<&'static str> {
     let mut keys = Vec::new();
     for doc in SCENARIO_KEYS {
+        if doc.section() == Some(crate::block::BLOCK) {
+            // Swept by the block's name (`belfry.width`): see [`block_axis_key`].
+            continue;
+        }
         if doc.is_sweepable() {
             keys.push(doc.key);
         } else if doc.key == VERTICAL_PREFIX.trim_end_matches('.') {
@@ -653,6 +723,19 @@ pub fn keys_markdown() -> String {
             match doc.section() {
                 None => {
                     let _ = writeln!(out, "## Top level");
+                }
+                Some(crate::block::BLOCK) => {
+                    let _ = writeln!(out, "## `[[block]]`");
+                    let _ = writeln!(out);
+                    let _ = writeln!(
+                        out,
+                        "Blocks stacked on the tower (a belfry on its shaft, the drums of a column), at most {}: each `[[block]]` \
+                         stands centred on the one before it, the first on `[tower]`, and rocks on the one below (docs: the model, \
+                         \"A stack of blocks\"). Each block adds outputs prefixed by its name (docs: outputs). A sweep varies a block's \
+                         key by its name: `\"belfry.width\" = [2.0, 2.4]`. With blocks, `[tower] restitution` and `[ground.vertical]` \
+                         are errors.",
+                        crate::block::MAX_ABOVE
+                    );
                 }
                 Some(s) => {
                     let _ = writeln!(out, "## `[{s}]`");
@@ -891,6 +974,31 @@ mod tests {
                 "ground.file" | "ground.text" => (geometry.to_string(), "[ground]\ntype = \"record\"\n".to_string()),
                 _ => (geometry.to_string(), harmonic.to_string()),
             };
+            if doc.section() == Some(crate::block::BLOCK) {
+                // A block of its own under the tower, its other keys as needed.
+                let mut block = String::from("[[block]]\n");
+                for (key, value) in [("width", "2.0"), ("height", "5.0"), ("mass", "3.0e4")] {
+                    let alternative = key == "mass" && doc.name() == "density";
+                    if doc.name() != key && !alternative {
+                        block.push_str(&format!("{key} = {value}\n"));
+                    }
+                }
+                if doc.name() == "wall_thickness" {
+                    block.push_str("section = \"hollow\"\n");
+                }
+                if doc.name() == "section" {
+                    block.push_str("wall_thickness = 0.3\n");
+                }
+                let text = format!("{geometry}{block}{line}{building}{ground}");
+                let parsed = Scenario::from_toml_str(&text, Path::new("example.toml"));
+                assert!(
+                    parsed.is_ok(),
+                    "the example of {} does not parse: {:?}\n{text}",
+                    doc.key,
+                    parsed.err().map(|e| e.to_string())
+                );
+                continue;
+            }
             let text = format!("{tower}{building}{ground}");
             let text = match doc.section() {
                 _ if text.contains(&line) => text,

@@ -37,6 +37,8 @@ pub struct Outcome {
     pub events: Vec<Event>,
     /// Which optional columns and fields the outputs have.
     pub layout: Layout,
+    /// The blocks on the tower, the lowest first (`[[block]]`).
+    pub blocks: Vec<rocking::stack::Block>,
 }
 
 /// The observer of a run: a history and an event log, each optional.
@@ -69,6 +71,7 @@ impl Case {
         Layout {
             points: self.points.len(),
             vertical: self.vertical.is_some(),
+            blocks: self.blocks,
         }
     }
 
@@ -101,6 +104,7 @@ impl Case {
             history: recorder.history,
             events: recorder.events.map(|log| log.events).unwrap_or_default(),
             layout: self.layout(),
+            blocks: self.model.blocks().to_vec(),
         })
     }
 }

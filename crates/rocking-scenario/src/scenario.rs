@@ -1,6 +1,7 @@
 //! A scenario: parsed and validated from a TOML table, then built into the
 //! library's model, ground motion, initial state and settings.
 
+use crate::block::BlockNames;
 use crate::error::{Error, ErrorKind, Fault};
 use crate::ground::{self, GroundInfo, GroundSpec, RecordCache};
 use crate::read::{with_article, Section};
@@ -10,7 +11,7 @@ use std::path::{Path, PathBuf};
 use toml::{Table, Value};
 
 /// The sections of a scenario.
-pub const SECTIONS: &[&str] = &["tower", "building", "ground", "initial", "simulation"];
+pub const SECTIONS: &[&str] = &["tower", "block", "building", "ground", "initial", "simulation"];
 /// The keys of a scenario outside any section.
 pub const TOP_LEVEL_KEYS: &[&str] = &["name"];
 
@@ -28,6 +29,7 @@ pub struct Scenario {
     initial: Initial,
     settings: Settings,
     output_dt: f64,
+    blocks: BlockNames,
 }
 
 /// A scenario built into the library's objects, ready to run.
@@ -57,6 +59,8 @@ pub struct Case {
     pub points: Vec<(f64, f64)>,
     /// Input files read besides the scenario (a ground-motion record).
     pub inputs: Vec<PathBuf>,
+    /// The names of the blocks on the tower (`[[block]]`), the lowest first.
+    pub blocks: BlockNames,
 }
 
 /// Parses TOML text into a table, with a syntax error reported on one line
@@ -158,7 +162,24 @@ impl Scenario {
                 ErrorKind::Missing("a scenario needs a [tower], a [building], or both".into()),
             ));
         }
-        let model = Model::new(tower, building, sim.g)?;
+        let (blocks, block_names) = crate::block::parse(table, tower.as_ref())?;
+        if !blocks.is_empty() {
+            if tower_section.as_ref().is_some_and(|s| s.has("restitution")) {
+                return Err(Fault::new(
+                    "tower.restitution",
+                    ErrorKind::NotApplicable(
+                        "applies to a tower alone: with [[block]] above it, every impact follows the stack's law of generalised momentum (remove it)".into(),
+                    ),
+                ));
+            }
+            if ground_section.has(crate::ground::VERTICAL) {
+                return Err(Fault::new(
+                    "ground.vertical",
+                    ErrorKind::NotApplicable("is not taken with [[block]]: a stack runs under a horizontal ground motion only".into()),
+                ));
+            }
+        }
+        let model = Model::new(tower, building, sim.g)?.with_blocks(&blocks)?;
         let folder = origin.parent().unwrap_or(Path::new(""));
         let cx = ground::Context {
             tower: tower.as_ref(),
@@ -178,6 +199,7 @@ impl Scenario {
             initial,
             settings: sim.settings,
             output_dt: sim.output_dt,
+            blocks: block_names,
         })
     }
 
@@ -192,6 +214,10 @@ impl Scenario {
     /// Tower, building and gravity.
     pub fn model(&self) -> &Model {
         &self.model
+    }
+    /// The names of the blocks on the tower (`[[block]]`), the lowest first.
+    pub fn blocks(&self) -> &BlockNames {
+        &self.blocks
     }
     /// The record file the scenario reads, if any (resolved against its folder).
     pub fn record_file(&self) -> Option<&Path> {
@@ -241,6 +267,7 @@ impl Scenario {
             initial: self.initial,
             settings: self.settings,
             output_dt: self.output_dt,
+            blocks: self.blocks,
             points: self.points.clone(),
             inputs: self
                 .record_file()

@@ -2,7 +2,7 @@
 //! (docs/src/reference/outputs.md), `null` where a quantity does not exist (the tower's without a
 //! tower, the slip's without a building), plus a few additions.
 
-use crate::columns::{fields_of, SUMMARY};
+use crate::columns::{block_fields_of, fields_of, SUMMARY};
 use crate::run::Outcome;
 use crate::sweep::{Cell, WALL_TIME_KEY};
 use serde_json::{json, Map, Value};
@@ -49,7 +49,9 @@ pub fn summary_json(outcome: &Outcome, wall_time_s: f64) -> Value {
 /// the columns of `sweep.csv`, taken without building any JSON. An absent
 /// quantity (`null` in the JSON) is [`Cell::Empty`].
 pub fn summary_fields(outcome: &Outcome) -> Vec<(String, Cell)> {
-    fields_of(SUMMARY, &outcome.layout, outcome)
+    let mut fields = fields_of(SUMMARY, &outcome.layout, outcome);
+    fields.extend(block_fields_of(outcome));
+    fields
 }
 
 /// The JSON value of a summary cell (`null` for an empty one).

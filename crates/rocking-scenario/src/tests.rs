@@ -33,10 +33,40 @@ fn value(text: &str) -> Value {
     table(&format!("v = {text}")).remove("v").unwrap_or_else(|| panic!("no value in {text}"))
 }
 
-/// BASE with dotted keys set (`Some`) or removed (`None`).
+/// The one `[[block]]` of an edited scenario (a 2 m × 5 m block of 30 t on
+/// the tower), made on the first edit of a `block.` key.
+fn the_block(t: &mut Table) -> &mut Table {
+    let blocks = t
+        .entry(crate::block::BLOCK)
+        .or_insert_with(|| Value::Array(vec![Value::Table(table("width = 2.0\nheight = 5.0\nmass = 3.0e4\n"))]));
+    match blocks.as_array_mut().and_then(|a| a.first_mut()).and_then(Value::as_table_mut) {
+        Some(block) => block,
+        None => panic!("test TOML: block is not an array of tables"),
+    }
+}
+
+/// How an error names the key `key` of the edits: a key of the block
+/// (`block.width`) by the block's default name (`block2.width`).
+fn named(key: &str) -> String {
+    match key.strip_prefix("block.") {
+        Some(rest) => format!("block2.{rest}"),
+        None => key.to_string(),
+    }
+}
+
+/// BASE with dotted keys set (`Some`) or removed (`None`); a `block.` key is
+/// set in the scenario's one `[[block]]` ([`the_block`]).
 fn edited(edits: &[(&str, Option<&str>)]) -> Table {
     let mut t = table(BASE);
     for (key, v) in edits {
+        if let Some(rest) = key.strip_prefix("block.") {
+            let block = the_block(&mut t);
+            match v {
+                Some(v) => block.insert(rest.to_string(), value(v)),
+                None => block.remove(rest),
+            };
+            continue;
+        }
         match v {
             Some(v) => {
                 set_dotted(&mut t, key, value(v)).unwrap_or_else(|e| panic!("{e}"));
@@ -252,7 +282,7 @@ fn unknown_sections_and_keys_are_named_with_the_valid_ones() {
     let msg = fails(&[("towr.width", Some("4"))], "towr");
     assert_eq!(
         msg,
-        "unknown section (did you mean `tower`?); valid sections: tower, building, ground, initial, simulation"
+        "unknown section (did you mean `tower`?); valid sections: tower, block, building, ground, initial, simulation"
     );
     let msg = fails(&[("tower.hieght", Some("12"))], "tower.hieght");
     assert!(
@@ -675,7 +705,11 @@ fn a_misspelt_key_of_the_description_is_suggested() {
         .map(|k| (k.key.to_string(), k.name()))
         .chain(vertical_keys.map(|k| (format!("{}{}", crate::VERTICAL_PREFIX, k.name()), k.name())))
         .collect();
-    assert_eq!(all.len(), 39 + 14, "the table's keys in sections, and [ground]'s scalar keys again");
+    assert_eq!(
+        all.len(),
+        39 + 9 + 14,
+        "the table's keys in sections, [[block]]'s, and [ground]'s scalar keys again"
+    );
     for (key, name) in all {
         let typo = format!("{key}x");
         let mut edits = vec![(typo.clone(), Some("1".to_string()))];
@@ -693,7 +727,7 @@ fn a_misspelt_key_of_the_description_is_suggested() {
             }
         }
         let edits: Vec<(&str, Option<&str>)> = edits.iter().map(|(k, v)| (k.as_str(), v.as_deref())).collect();
-        let msg = fails(&edits, &typo);
+        let msg = fails(&edits, &named(&typo));
         let valid = msg.split("valid keys: ").nth(1).unwrap_or_else(|| panic!("{typo}: {msg}"));
         assert!(valid.split(", ").any(|k| k == name), "{typo}: {msg}");
         if name.chars().count() > 1 {
@@ -715,13 +749,23 @@ fn the_choices_of_the_description_are_the_parsers() {
     ];
     let with_choices: Vec<_> = crate::SCENARIO_KEYS.iter().filter(|k| !k.choices.is_empty()).collect();
     let keys: Vec<&str> = with_choices.iter().map(|k| k.key).collect();
-    assert_eq!(keys, ["tower.section", "building.normal_force", "ground.type", "ground.format", "ground.units"]);
+    assert_eq!(
+        keys,
+        [
+            "tower.section",
+            "block.section",
+            "building.normal_force",
+            "ground.type",
+            "ground.format",
+            "ground.units"
+        ]
+    );
     for doc in with_choices {
         let mut edits = vec![(doc.key, Some("\"nonsense\""))];
         if doc.key == "ground.format" || doc.key == "ground.units" {
             edits.extend(record);
         }
         let listed: Vec<String> = doc.choices.iter().map(|c| format!("\"{c}\"")).collect();
-        assert_eq!(fails(&edits, doc.key), format!("\"nonsense\" is not one of {}", listed.join(", ")));
+        assert_eq!(fails(&edits, &named(doc.key)), format!("\"nonsense\" is not one of {}", listed.join(", ")));
     }
 }

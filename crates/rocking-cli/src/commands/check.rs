@@ -51,6 +51,9 @@ fn describe(case: &Case) -> String {
             let _ = writeln!(out, "tower       none");
         }
     }
+    if let Some(stack) = case.model.stack() {
+        describe_stack(&mut out, case, &stack, g);
+    }
     match case.model.building() {
         Some(b) => {
             let normal = match b.normal_force() {
@@ -106,6 +109,41 @@ fn describe(case: &Case) -> String {
         sig(s.atol, 3)
     );
     out
+}
+
+/// The blocks on the tower and the ground acceleration that lifts each
+/// interface from rest (everything else at rest, the building stuck).
+fn describe_stack(out: &mut String, case: &Case, stack: &rocking::stack::Stack, g: f64) {
+    let deg = 180.0 / std::f64::consts::PI;
+    for (k, block) in stack.blocks().iter().enumerate().skip(1) {
+        let _ = writeln!(
+            out,
+            "{}{}: B = {} m, H = {} m, m = {} kg, J = {} kg·m², α = {} rad = {}°",
+            if k == 1 { "blocks      " } else { "            " },
+            case.blocks.name(k),
+            sig(block.width(), 6),
+            sig(block.height(), 6),
+            sig(block.mass(), 6),
+            sig(block.inertia_centre(), 6),
+            sig(block.alpha(), 6),
+            sig(block.alpha() * deg, 6)
+        );
+    }
+    for (k, threshold) in stack.uplift_thresholds().iter().enumerate() {
+        let below = if k == 0 {
+            if case.model.building().is_some() { "the building" } else { "the ground" }.to_string()
+        } else {
+            case.blocks.name(k - 1).to_string()
+        };
+        let _ = writeln!(
+            out,
+            "{}{} on {below} lifts from rest at a_g = {} g = {} m/s²",
+            if k == 0 { "uplift      " } else { "            " },
+            case.blocks.name(k),
+            sig(threshold / g, 6),
+            sig(*threshold, 6)
+        );
+    }
 }
 
 /// The lines of `rocking check` for one ground motion (`label` is the first

@@ -120,11 +120,17 @@ fn report(outcome: &Outcome, wall: f64, dir: &Path) -> String {
     let s = &outcome.summary;
     let d = &outcome.derived;
     let mut lines = vec![format!("{}: {} s simulated in {} s", outcome.name, sig(s.end_time, 6), sig(wall, 2))];
+    // The block that overturned (0 the tower), if one did.
+    let overturned = match s.stack {
+        Some(stack) => stack.overturned_block,
+        None => s.overturn_time.map(|_| 0),
+    };
+    let fate = |k: usize| match (overturned, s.overturn_time) {
+        (Some(o), Some(t)) if o == k => format!("OVERTURNED at t = {} s", sig(t, 6)),
+        _ => "did not overturn".to_string(),
+    };
     if let Some(alpha) = d.alpha {
-        let fate = match s.overturn_time {
-            Some(t) => format!("OVERTURNED at t = {} s", sig(t, 6)),
-            None => "did not overturn".into(),
-        };
+        let fate = fate(0);
         let uplift = match s.first_uplift_time {
             Some(t) => format!(", first uplift at t = {} s", sig(t, 6)),
             // An initial rotation rocks without an uplift.
@@ -136,6 +142,26 @@ fn report(outcome: &Outcome, wall: f64, dir: &Path) -> String {
             sig(s.max_abs_theta() / alpha, 4),
             sig(s.max_abs_theta(), 4),
             s.impacts
+        ));
+    }
+    if let Some(stack) = s.stack {
+        for (i, (block, summary)) in outcome.blocks.iter().zip(stack.blocks()).enumerate() {
+            let uplift = match summary.first_uplift_time {
+                Some(t) => format!(", first uplift at t = {} s", sig(t, 6)),
+                None => ", never lifted".into(),
+            };
+            lines.push(format!(
+                "  {}: max θ/α = {} (max |θ| = {} rad on the block below), {} impacts{uplift}, {}",
+                outcome.layout.blocks.name(i + 1),
+                sig(summary.max_abs_theta / block.alpha(), 4),
+                sig(summary.max_abs_theta, 4),
+                summary.impacts,
+                fate(i + 1)
+            ));
+        }
+        lines.push(format!(
+            "  seated interfaces: max impulse ratio {} (above 1 the model's assumption fails)",
+            sig(stack.max_seat_impulse_ratio, 4)
         ));
     }
     if d.slip_acceleration_g.is_some() {

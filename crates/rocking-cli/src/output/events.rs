@@ -3,7 +3,7 @@
 use super::write_value;
 use anyhow::Context;
 use rocking::Event;
-use rocking_scenario::columns::{Layout, EVENTS};
+use rocking_scenario::columns::{event_kind, Layout, EVENTS, KIND};
 use std::path::Path;
 
 /// Writes the events to `path`; `shown` names the file in errors.
@@ -15,7 +15,11 @@ pub fn write_events(path: &Path, shown: &Path, layout: &Layout, events: &[Event]
     let mut buffer = ryu::Buffer::new();
     for e in events {
         for c in &columns {
-            write_value(&mut w, &mut buffer, c.read.value(e)).with_context(context)?;
+            if c.name == KIND {
+                w.write_field(event_kind(layout, e).as_bytes()).with_context(context)?;
+            } else {
+                write_value(&mut w, &mut buffer, c.read.value(e)).with_context(context)?;
+            }
         }
         w.write_record(None::<&[u8]>).with_context(context)?;
     }

@@ -1,6 +1,7 @@
 //! One axis of a sweep: a scalar scenario key and its values, given as a list
 //! or as an evenly spaced range (docs/src/reference/keys.md, "[sweep]"); the rules are on [`AxisSpec`].
 
+use crate::block::BlockNames;
 use crate::error::{closest, ErrorKind, Fault};
 use crate::keys::KeyKind;
 use crate::read::{as_number, with_article};
@@ -121,8 +122,19 @@ pub(crate) fn axis_name(key: &str) -> String {
 }
 
 /// Checks that `key` is a scalar scenario key and says what it takes.
+#[cfg(test)]
 pub(crate) fn check_key(key: &str) -> Result<KeyType, Fault> {
-    match crate::keys::describe_key(key).map(|k| k.doc.kind) {
+    check_key_with(key, &BlockNames::default())
+}
+
+/// As [`check_key`], taking also the keys of the blocks named in `blocks`
+/// (`belfry.width`), but not their names.
+pub(crate) fn check_key_with(key: &str, blocks: &BlockNames) -> Result<KeyType, Fault> {
+    let described = crate::keys::block_axis_key(key, blocks);
+    if described.as_deref() == Some("block.name") {
+        return Err(Fault::invalid(axis_name(key), "a block's name cannot be swept (its outputs are named by it)"));
+    }
+    match crate::keys::describe_key(described.as_deref().unwrap_or(key)).map(|k| k.doc.kind) {
         Some(KeyKind::Number) => return Ok(KeyType::Number),
         Some(KeyKind::Text) => return Ok(KeyType::Text),
         _ => {}
@@ -242,7 +254,12 @@ impl AxisSpec {
 
     /// The values of this axis for `key`, checked against what the key takes.
     pub(crate) fn expand(&self, key: &str) -> Result<Axis, Fault> {
-        let kind = check_key(key)?;
+        self.expand_with(key, &BlockNames::default())
+    }
+
+    /// As [`AxisSpec::expand`], taking also the keys of the blocks named in `blocks`.
+    pub(crate) fn expand_with(&self, key: &str, blocks: &BlockNames) -> Result<Axis, Fault> {
+        let kind = check_key_with(key, blocks)?;
         let name = axis_name(key);
         let values = match self {
             Self::List(items) => {

@@ -19,7 +19,7 @@ pub use engine::{run_cases, Cases, Finished, RunError, WINDOW};
 pub use row::{csv_line, Cell, Row};
 pub use shard::Shard;
 
-use crate::columns::{Layout, SUMMARY};
+use crate::columns::{summary_names, Layout, SUMMARY};
 use crate::error::{Error, ErrorKind, Fault};
 use crate::ground::RecordCache;
 use crate::{set_dotted, RunOptions, Scenario};
@@ -193,6 +193,7 @@ impl Sweep {
                 ErrorKind::Missing("no swept key: give at least one, e.g. \"ground.frequency\" = [3.0, 5.0]".into()),
             )));
         }
+        let blocks = crate::block::names(&base).map_err(fail)?;
         let mut expanded: Vec<Axis> = Vec::with_capacity(axes.len());
         for (key, spec) in &axes {
             if expanded.iter().any(|a| a.key() == key) {
@@ -204,7 +205,7 @@ impl Sweep {
                     ErrorKind::NotApplicable(format!("sweep either {other} or {key}, not both")),
                 )));
             }
-            expanded.push(spec.expand(key).map_err(fail)?);
+            expanded.push(spec.expand_with(key, &blocks).map_err(fail)?);
         }
         for a in &expanded {
             if let Some(other) = alternative(a.key()) {
@@ -239,6 +240,7 @@ impl Sweep {
         let layout = Layout {
             vertical: matches!(crate::get_dotted(&base, "ground.vertical"), Some(Value::Table(_)))
                 || expanded.iter().any(|a| a.key().starts_with("ground.vertical.")),
+            blocks,
             ..Layout::default()
         };
         let mut sweep = Self {
@@ -247,7 +249,7 @@ impl Sweep {
             base,
             axes: expanded,
             len,
-            summary_keys: SUMMARY.iter().filter(|f| (f.present)(&layout)).map(|f| f.name.to_string()).collect(),
+            summary_keys: summary_names(&layout),
             layout,
             inputs: Vec::new(),
             records: RecordCache::default(),
@@ -347,6 +349,9 @@ impl Sweep {
             .ok_or_else(|| Fault::invalid("sweep", format!("case {index} does not exist: the sweep has {} cases", self.len)).in_file(&self.origin))?;
         let mut table = self.base.clone();
         for (axis, value) in self.axes.iter().zip(values) {
+            if crate::block::set_key(&mut table, &self.layout.blocks, axis.key(), value.clone()) {
+                continue;
+            }
             set_dotted(&mut table, axis.key(), value.clone()).map_err(|e| Fault::invalid(axis.key(), e.to_string()).in_file(&self.origin))?;
         }
         Ok(table)
@@ -378,6 +383,7 @@ impl Sweep {
         let mut cells = self.axis_cells(index);
         // The fields come in the order of `summary_keys`.
         cells.extend(SUMMARY.iter().filter(|f| (f.present)(&self.layout)).map(|f| (f.read)(&outcome)));
+        cells.extend(crate::columns::block_fields_of(&outcome).into_iter().map(|(_, cell)| cell));
         debug_assert_eq!(cells.len(), self.axes.len() + self.summary_keys.len());
         cells.push(Cell::Empty);
         Some(Row { index, cells })

@@ -143,6 +143,11 @@ impl Block {
     pub fn inertia_centre(&self) -> f64 {
         self.inertia_centre
     }
+    /// Slenderness `α = atan(B / H)` (rad): the angle past which it falls
+    /// on a base that stays put.
+    pub fn alpha(&self) -> f64 {
+        libm::atan2(self.width, self.height)
+    }
     /// Moment of inertia about a base corner, `I_O = J + m (B² + H²) / 4`.
     pub fn inertia_corner(&self) -> f64 {
         self.inertia_centre + self.mass * (self.width * self.width + self.height * self.height) / 4.0
@@ -168,7 +173,8 @@ impl Stack {
             return Err(StackError::Gravity(gravity));
         }
         for (k, pair) in blocks.windows(2).enumerate() {
-            if pair[1].width > pair[0].width {
+            // To rounding: a tower's width comes back from R and α within a few ulps.
+            if pair[1].width > pair[0].width * (1.0 + 4.0 * f64::EPSILON) {
                 return Err(StackError::WiderThanBelow {
                     index: k + 2,
                     width: pair[1].width,

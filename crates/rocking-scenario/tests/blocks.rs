@@ -1,0 +1,128 @@
+//! `[[block]]`: blocks stacked on the tower in a scenario file: their keys and
+//! errors, their outputs (summary fields, history columns, events named by the
+//! block), and a sweep over a block's key.
+
+use rocking_scenario::columns::{event_kind, history_header, HISTORY, HISTORY_POINTS};
+use rocking_scenario::{summary_json, Cell, RunOptions, Scenario, Sweep};
+use std::path::Path;
+use std::sync::atomic::AtomicBool;
+
+const ORIGIN: &str = "dir/belfry.toml";
+
+/// The bell tower on its church carrying a belfry 2 m × 5 m of 30 t, shaken
+/// at 0.6 g and 2 Hz for 4 s.
+fn text(block: &str) -> String {
+    format!(
+        "name = \"belfry\"\n{}\n[[block]]\n{block}\n[ground]\ntype = \"harmonic\"\namplitude = 0.6\nfrequency = 2.0\nduration = 4.0\n\n[simulation]\nduration = 5.0\noutput_dt = 0.01\n",
+        include_str!("data/church.toml")
+    )
+}
+
+const BELFRY: &str = "name = \"belfry\"\nwidth = 2.0\nheight = 5.0\nmass = 3.0e4\n";
+
+fn scenario(text: &str) -> Result<Scenario, String> {
+    Scenario::from_toml_str(text, Path::new(ORIGIN)).map_err(|e| e.to_string())
+}
+
+/// The one-line error of `text`, which must name `key`.
+fn fails(text: &str, key: &str) -> String {
+    let e = scenario(text).map(|_| ()).expect_err("the scenario should fail");
+    let prefix = format!("{ORIGIN}: {key}: ");
+    assert!(e.starts_with(&prefix) && !e.contains('\n'), "{e:?} should start with {prefix:?}");
+    e[prefix.len()..].to_string()
+}
+
+#[test]
+fn the_contracts_errors_name_the_key() {
+    let wide = fails(&text(&BELFRY.replace("width = 2.0", "width = 4.5")), "belfry.width");
+    assert!(wide.contains("4.5 m is wider than the 4 m of the tower below it"), "{wide}");
+    let second = format!("{BELFRY}\n[[block]]\nname = \"cross\"\nwidth = 2.5\nheight = 1.0\nmass = 1.0e3\n");
+    let wider = fails(&text(&second), "cross.width");
+    assert!(wider.contains("wider than the 2 m of block \"belfry\" below it"), "{wider}");
+    let restitution = fails(&text(BELFRY).replace("mass = 1.5e5", "mass = 1.5e5\nrestitution = 0.8"), "tower.restitution");
+    assert!(restitution.contains("applies to a tower alone"), "{restitution}");
+    for bad in ["2bells", "bell tower", "tower", "block", ""] {
+        let message = fails(&text(&BELFRY.replace("\"belfry\"", &format!("\"{bad}\""))), "block[1].name");
+        assert!(message.contains(&format!("\"{bad}\"")), "{message}");
+    }
+    let twice = fails(
+        &text(&format!("{BELFRY}\n[[block]]\n{}", BELFRY.replace("width = 2.0", "width = 1.0"))),
+        "block[2].name",
+    );
+    assert!(twice.contains("names an earlier block too"), "{twice}");
+    let typo = fails(&text(&format!("{BELFRY}heigth = 2.0\n")), "belfry.heigth");
+    assert!(typo.contains("did you mean `height`?"), "{typo}");
+    let missing = fails(&text("width = 2.0\nheight = 5.0\n"), "block2.mass");
+    assert!(missing.starts_with("required"), "{missing}");
+    let vertical = text(BELFRY).replace(
+        "[simulation]",
+        "[ground.vertical]\ntype = \"harmonic\"\namplitude = 0.1\nfrequency = 3.0\n\n[simulation]",
+    );
+    fails(&vertical, "ground.vertical");
+}
+
+/// The outputs of a belfry that rocks: its own fields, columns and events,
+/// each read back from the run. Its slenderness is atan(2/5), by hand.
+#[test]
+fn a_belfrys_outputs_are_named_by_it() {
+    let case = scenario(&text(BELFRY)).and_then(|s| s.build().map_err(|e| e.to_string())).expect("the case");
+    let outcome = case.run(RunOptions::ALL).expect("the run");
+    let summary = summary_json(&outcome, 0.0);
+    let peak = summary["belfry_max_abs_theta_rad"].as_f64().expect("a peak");
+    assert!(peak > 0.0, "the belfry did not rock: {summary}");
+    let ratio = summary["belfry_max_theta_over_alpha"].as_f64().expect("a ratio");
+    // One division: to the last bit or one rounding of it.
+    assert!((ratio - peak / (2.0f64 / 5.0).atan()).abs() <= 2.0 * f64::EPSILON * ratio, "{ratio}");
+    let history = outcome.history.as_ref().expect("a history");
+    let header = history_header(HISTORY, HISTORY_POINTS, &outcome.layout);
+    assert_eq!(header[header.len() - 2..], ["belfry_theta", "belfry_theta_dot"]);
+    let sampled = history.samples.iter().map(|s| s.stack.expect("the stack").theta[1].abs()).fold(0.0, f64::max);
+    assert!(sampled <= peak && sampled > 0.5 * peak, "{sampled} against {peak}");
+    let kinds: Vec<String> = outcome.events.iter().map(|e| event_kind(&outcome.layout, e).into_owned()).collect();
+    let impacts = kinds.iter().filter(|k| *k == "belfry_impact").count();
+    assert_eq!(summary["belfry_impacts"].as_u64(), Some(impacts as u64));
+    assert!(kinds.iter().any(|k| k == "belfry_uplift") && kinds.iter().any(|k| k == "uplift"), "{kinds:?}");
+    assert_eq!(summary["events"].as_u64(), Some(kinds.len() as u64));
+    assert_eq!(summary["overturned_block"], serde_json::Value::Null);
+    assert_eq!(summary["belfry_overturned"], serde_json::Value::Bool(false));
+    assert!(summary["max_seat_impulse_ratio"].as_f64().is_some());
+}
+
+/// A sweep over `belfry.width` sets the width of the block so named (its
+/// uplift threshold, and so its first uplift, moves with it), refuses a
+/// block's name and a name no block has, and has the block's fields as columns.
+#[test]
+fn a_sweep_over_a_blocks_width() {
+    let file = |axes: &str| format!("{}\n[sweep]\n{axes}\n", text(BELFRY));
+    let sweep = Sweep::from_toml_str(&file("\"belfry.width\" = [1.0, 2.0]"), Path::new(ORIGIN)).expect("the sweep");
+    for (i, width) in [1.0, 2.0].into_iter().enumerate() {
+        let table = sweep.case_table(i).expect("the case");
+        let block = &table["block"].as_array().expect("the blocks")[0];
+        assert_eq!(block["width"].as_float(), Some(width));
+    }
+    let header = sweep.header();
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let mut rows = Vec::new();
+    sweep
+        .run(Some(1), &AtomicBool::new(false), |row| {
+            rows.push(row);
+            Ok::<(), std::convert::Infallible>(())
+        })
+        .expect("the sweep's run");
+    let uplift = |row: usize| match &rows[row].cells[column("belfry_first_uplift_time_s")] {
+        Cell::Float(t) => *t,
+        other => panic!("{other:?}"),
+    };
+    // The narrower belfry (tan α = 0.2 against 0.4) lifts first.
+    assert!(uplift(0) < uplift(1), "{} {}", uplift(0), uplift(1));
+    for (axes, key) in [
+        ("\"belfry.name\" = [\"a\"]", "sweep.\"belfry.name\""),
+        ("\"belfy.width\" = [1.0]", "sweep.\"belfy.width\""),
+    ] {
+        let e = Sweep::from_toml_str(&file(axes), Path::new(ORIGIN))
+            .map(|_| ())
+            .expect_err("refused")
+            .to_string();
+        assert!(e.starts_with(&format!("{ORIGIN}: {key}: ")), "{e}");
+    }
+}
