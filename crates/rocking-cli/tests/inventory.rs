@@ -297,16 +297,21 @@ fn with_a_record_set_the_dynamic_checks_are_those_of_rocking_assess() {
     assert_row_is_assess(&header, &rows[1], &assess(dir.path(), "b", &file(5.0, 20.0, "C", 14.41, 41.10)));
 }
 
-/// Ctrl-C while the towers run: the command ends with 130, after
-/// the towers under way, keeping the rows finished (complete, the first ones
-/// in input order) and an `inventory.geojson` of those towers.
+/// Ctrl-C while the towers run: the command ends with 130, after the towers
+/// under way, keeping the rows finished (complete, the first ones in input
+/// order), their own assessments (`--details`) and an `inventory.geojson` of
+/// those towers, and no staging folder. Told without a clock: the signal goes
+/// once the first tower's own assessment is on disk (`--details` writes it as
+/// the tower ends; the rows are buffered), with 29 towers of the dynamic
+/// checks still to go, and the output shows the stop: fewer rows than towers,
+/// and the command's last line says how many.
 #[cfg(unix)]
 #[test]
 fn ctrl_c_keeps_the_towers_finished() {
     use std::process::{Command, Stdio};
     use std::time::{Duration, Instant};
-    // Towers with the dynamic checks (a second or more each), 30 of them: far more than finish before the signal.
-    let limit = Duration::from_secs(120);
+    // Only a guard against a hang: no test waits this long unless the command is stuck.
+    let hang = Duration::from_secs(600);
     let dir = tempdir();
     let grid = root().join("data/hazard/synthetic_grid.txt");
     let records = root().join("data/records/synthetic");
@@ -319,31 +324,40 @@ fn ctrl_c_keeps_the_towers_finished() {
         "town.toml",
         &base(&grid).replace("[assessment]\nconfidence_factor = 1.35\n", &assessment),
     );
-    let rows: String = (0..30).map(|i| format!("T{i:02},,14.{},41.06\n", 34 + i % 10)).collect();
+    let towers_count = 30;
+    let rows: String = (0..towers_count).map(|i| format!("T{i:02},,14.{},41.06\n", 34 + i % 10)).collect();
     let towers = write(dir.path(), "towers.csv", &format!("id,name,lon,lat\n{rows}"));
     let out = dir.path().join("out");
     let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args(["inventory", arg(&towers), "--assess", arg(&assess_file), "--out", arg(&out), "--threads", "2"])
+        .args([
+            "inventory",
+            arg(&towers),
+            "--assess",
+            arg(&assess_file),
+            "--out",
+            arg(&out),
+            "--threads",
+            "2",
+            "--details",
+        ])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
-    let partial = staging_folder(&out, limit).expect("no staging folder").join("inventory.csv");
+    let staging = staging_folder(&out, hang).expect("no staging folder");
+    let first = staging.join("towers").join("T00").join("report.html");
     let start = Instant::now();
-    // The header is written when the towers start (the rows are buffered: how many
-    // are finished at the signal is not known, only that they cannot all be).
-    while std::fs::metadata(&partial).map_or(true, |m| m.len() == 0) && start.elapsed() < limit {
-        std::thread::sleep(Duration::from_millis(20));
+    while !first.exists() {
+        assert!(start.elapsed() < hang, "the first tower never ended");
+        std::thread::sleep(Duration::from_millis(10));
     }
-    std::thread::sleep(Duration::from_secs(2));
     let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
     assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
-    let start = Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
             break status;
         }
-        if start.elapsed() > limit {
+        if start.elapsed() > hang {
             child.kill().unwrap_or_default();
             panic!("the inventory did not stop");
         }
@@ -355,15 +369,30 @@ fn ctrl_c_keeps_the_towers_finished() {
     }
     assert_eq!(status.code(), Some(130), "{stderr}");
     let (header, rows) = inventory_csv(&out);
-    assert!(rows.len() < 30, "{} rows", rows.len());
-    assert!(stderr.contains(&format!("interrupted: wrote {} of 30 towers", rows.len())), "{stderr}");
+    // Stopped before its end, as the output shows: fewer rows than towers, and the last line says so.
+    assert!(!rows.is_empty() && rows.len() < towers_count, "{} rows", rows.len());
+    assert!(
+        stderr.contains(&format!("interrupted: wrote {} of {towers_count} towers", rows.len())),
+        "{stderr}"
+    );
     for (i, row) in rows.iter().enumerate() {
         assert_eq!(cell(&header, row, "id"), format!("T{i:02}"));
         assert!(!cell(&header, row, "SLC_nonlinear_dynamic_zeta_E").is_empty(), "row {i} incomplete");
+        assert!(
+            out.join("towers").join(format!("T{i:02}")).join("report.html").exists(),
+            "row {i} without its assessment"
+        );
     }
     let parsed: geojson::GeoJson = read(&out.join("inventory.geojson")).parse().unwrap_or_else(|e| panic!("{e}"));
     let geojson::GeoJson::FeatureCollection(collection) = parsed else {
         panic!("not a FeatureCollection")
     };
     assert_eq!(collection.features.len(), rows.len());
+    // The staging folder moved into place: nothing of it is left.
+    let left: Vec<_> = std::fs::read_dir(&out)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".rocking-partial-"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
 }

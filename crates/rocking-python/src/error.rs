@@ -46,3 +46,14 @@ pub fn file_error(message: String, errno: Option<i32>) -> PyErr {
 pub fn io_error(e: &std::io::Error, path: &Path) -> PyErr {
     file_error(format!("cannot read {}: {e}", path.display()), e.raw_os_error())
 }
+
+/// `err` with `note` added to its notes (`BaseException.add_note`, shown
+/// under its traceback; on Python < 3.11, which has no `add_note`, the list
+/// `__notes__` is set, as `add_note` sets it).
+pub fn with_note(py: Python<'_>, err: PyErr, note: &str) -> PyErr {
+    let value = err.value(py);
+    if value.call_method1("add_note", (note,)).is_err() {
+        let _ = value.setattr("__notes__", vec![note]);
+    }
+    err
+}

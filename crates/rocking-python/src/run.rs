@@ -65,7 +65,13 @@ pub fn run_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyRes
     });
     let (outcome, wall) = match result {
         Ok(done) => done,
-        Err(e) => return Err(signals.raised.take().unwrap_or_else(|| scenario_error(&e))),
+        // Ctrl-C: the handler's exception, with a note of where the run stopped (`stopped at t = 1.2 s`).
+        Err(e) => {
+            return Err(match signals.raised.take() {
+                Some(raised) => crate::error::with_note(py, raised, &format!("rocking.run: {}", e.kind())),
+                None => scenario_error(&e),
+            })
+        }
     };
     let summary = summary_dict(py, &outcome, wall)?.into_any();
     let history = match &outcome.history {
