@@ -3,9 +3,10 @@ Sant'Anna example with its record set picked as files (the page gives them to
 the engine as text with their names, read by the command's reader), run in a
 Web Worker with a progress bar and cancelled, then run to the end: the
 checks, the governing one, the fit, the λ scan and records.csv and spectra.csv
-equal the command's to the last bit (the same code on the same inputs: the
-engine compiled to WebAssembly and the command's reach the same bits, which
-this test is there to notice if they ever do not). Each check's name and
+equal the command's to the last bit: the same code on the same inputs, and
+the engine's and the assessment's sines, tangents and exponentials are the
+libm crate's on both targets (not the platform's), so that no tolerance is
+needed; a difference in the last bit would show a path that is not shared. Each check's name and
 formula are those of the command's report.html; the ADRS chart has its title,
 axes with units, a legend and the demands at their a*."""
 

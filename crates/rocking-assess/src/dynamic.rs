@@ -158,6 +158,10 @@ impl RecordSet {
                                 _ => "assessment.records",
                             };
                             e.fault.key = Some(key.into());
+                            // A record given as text is named by its name, not as a text.
+                            if let (rocking_scenario::ErrorKind::Record { path: named, .. }, Some(_)) = (&mut e.fault.kind, &entry.text) {
+                                *named = path.into();
+                            }
                             // The message names the record (that of a file that
                             // cannot be read does; one of the case built on it may not).
                             if !e.fault.kind.to_string().contains(entry.name()) {
