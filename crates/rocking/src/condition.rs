@@ -140,6 +140,11 @@ impl Condition {
         matches!(self, Condition::Impact | Condition::SlipStop)
     }
 
+    /// Whether the condition lifts a standing tower.
+    pub(crate) fn lifts(self) -> bool {
+        matches!(self, Condition::UpliftNegative | Condition::UpliftPositive)
+    }
+
     /// Whether the condition is a function of `θ` alone (its extrema are those of `θ`).
     pub(crate) fn of_theta(self) -> bool {
         matches!(self, Condition::Impact | Condition::Overturn)

@@ -14,12 +14,21 @@
 //! (data/records/synthetic/) at the scale where this happened. Its motion,
 //! 4.5e-14 rad, is checked against the closed form of the linearised
 //! equation under the record's piecewise linear acceleration.
+//!
+//! The limit of a grazing uplift: a harmonic whose amplitude is the uplift
+//! threshold (`amplitude_ratio = 1`) touches `g tan α` at each peak and
+//! never passes it, so the tower never lifts. The uplift condition there is
+//! zero to rounding; where rounding passed the threshold the tower lifted,
+//! never left `θ = 0` (its `θ̈` zero to rounding too), was taken to impact
+//! at once, stood, and lifted again at the same instant until the run
+//! stopped. Such a tower now falls straight back: a rest, no impact, and no
+//! uplift again at that instant.
 #![allow(clippy::unwrap_used)]
 
 mod common;
 use common::{fixed, run_logged, G};
 use rocking::reference::solid_block;
-use rocking::{CsvOptions, EventKind, GroundMotion, Initial, Record, RecordFormat, Settings};
+use rocking::{CsvOptions, EventKind, GroundMotion, Harmonic, Initial, Record, RecordFormat, Settings};
 
 /// The scale of kt_02 at which the run stopped.
 const SCALE: f64 = 1.111_256_958_597_062_9;
@@ -128,4 +137,35 @@ fn a_grazing_uplift_rocks_as_the_linearised_equation_says() {
         landing.before.theta_dot
     );
     assert!(peak > 4e-14 && peak < 5e-14, "not the grazing lift of the case: {peak}");
+}
+
+/// Harmonics of amplitude `g tan α` (1 and 2 Hz, 6 s of shaking) under the
+/// 4 m × 12 m tower and a 12 m × 12 m one (tan α = 1/3 and 1): the exact
+/// motion is no motion. The uplift margin is computed to a few ulps of `g`,
+/// about 1e-14 m/s²; the cosine near its peak stays within that of the
+/// threshold for `2 sqrt(2e-14 / (A ω²))`, at most 2.5e-8 s here (A ω² ≥
+/// 129 m/s⁴), and an excess of 1e-14 m/s² over that long lifts the tower by
+/// at most `K e t² / 2` < 1e-30 rad (K < 0.2 /m). 1e-20 rad is far above
+/// that and far below any motion a real uplift of these towers makes.
+#[test]
+fn a_harmonic_at_the_uplift_threshold_lifts_nothing() {
+    for (width, tan_alpha) in [(2.0 * B, B / H), (2.0 * H, 1.0)] {
+        let model = fixed(solid_block(width, 2.0 * H));
+        for frequency in [1.0, 2.0] {
+            let ground = GroundMotion::Harmonic(Harmonic::new(G * tan_alpha, frequency, 6.0, 0.0).unwrap());
+            let settings = Settings {
+                duration: 8.0,
+                ..Settings::default()
+            };
+            let (summary, log) = run_logged(&model, &ground, Initial::default(), &settings);
+            let case = format!("{width} m wide at {frequency} Hz");
+            assert!(summary.end_time >= 8.0, "{case}: {summary:?}");
+            assert!(summary.max_abs_theta() <= 1e-20, "{case}: max |θ| {}", summary.max_abs_theta());
+            // A tower that lifts and falls straight back stands again at that instant.
+            for lift in log.events.iter().filter(|e| e.kind == EventKind::Uplift) {
+                let next = log.events.iter().find(|e| e.time >= lift.time && e.kind != EventKind::Uplift).unwrap();
+                assert!(next.time - lift.time <= 1e-6, "{case}: the uplift at {} s ends at {} s", lift.time, next.time);
+            }
+        }
+    }
 }

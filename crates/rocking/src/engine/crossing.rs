@@ -68,16 +68,23 @@ pub(super) fn theta_extremes<const N: usize>(d: &DenseOutput<N>, t0: f64, t1: f6
 /// The first transition in the step: its instant and condition. A step
 /// without its dense output has none to search: every condition ends it
 /// negative and none can have come back inside (or the screen would have
-/// asked for the dense output).
+/// asked for the dense output). `fell_back`: the tower fell straight back
+/// at the step's start.
 #[inline(always)]
-pub(super) fn first_transition<const N: usize>(e: &Ends, screen: &Screen, dense: Option<&DenseOutput<N>>, theta_points: &Points) -> Option<(f64, Condition)> {
+pub(super) fn first_transition<const N: usize>(
+    e: &Ends,
+    screen: &Screen,
+    dense: Option<&DenseOutput<N>>,
+    theta_points: &Points,
+    fell_back: bool,
+) -> Option<(f64, Condition)> {
     let d = dense?;
     let mut first: Option<(f64, Condition)> = None;
     for (i, &c) in e.list.iter().enumerate() {
         let hit = if c.of_theta() {
             theta_crossing(e, i, d, theta_points)
         } else {
-            state_crossing(e, screen, i, d)
+            state_crossing(e, screen, i, d, OnZero::of(c, fell_back))
         };
         if let Some(tb) = hit {
             if first.is_none_or(|(tf, _)| tb < tf) {
@@ -101,7 +108,7 @@ fn theta_crossing<const N: usize>(e: &Ends, i: usize, d: &DenseOutput<N>, theta_
     points.push((e.t1, e.w1.conditions[i].v));
     first_crossing(
         points.as_slice(),
-        c.departs_from_zero(),
+        OnZero::of(c, false),
         |ta, va, tb, vb| {
             // With its derivative (θ̇ from the same dense output) for Newton.
             let f = |t: f64| {
@@ -120,7 +127,7 @@ fn theta_crossing<const N: usize>(e: &Ends, i: usize, d: &DenseOutput<N>, theta_
 /// first root of `u̇` for the end of a slip, the extrema of the friction
 /// demand for a stuck building under a rocking tower.
 #[inline(always)]
-fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &DenseOutput<N>) -> Option<f64> {
+fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &DenseOutput<N>, on_zero: OnZero) -> Option<f64> {
     let (c, kernel, regime, (piece, vpiece)) = (e.list[i], e.kernel, e.regime, e.pieces);
     let (t0, t1, h) = (e.t0, e.t1, e.h);
     let value = |t: f64| {
@@ -152,21 +159,49 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
     points.push((t1, e.w1.conditions[i].v));
     first_crossing(
         points.as_slice(),
-        c.departs_from_zero(),
+        on_zero,
         |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
         |ta, tb| leaving_point(&value, ta, tb),
     )
 }
 
+/// How a condition read on zero at a step's start, and not seen to leave
+/// it, is taken.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum OnZero {
+    /// It grows from zero: a transition at once.
+    Grows,
+    /// It departs from zero ([`Condition::departs_from_zero`]): armed where
+    /// it is first negative; a transition at once if it never is in the step.
+    Departs,
+    /// An uplift condition at the instant the tower fell straight back
+    /// (`Run::fall_straight_back`): armed where it is first negative; none
+    /// in the step if it never is.
+    Waits,
+}
+
+impl OnZero {
+    /// How `c` is taken on zero at a step's start; `fell_back`: the tower
+    /// fell straight back at that instant.
+    pub(super) fn of(c: Condition, fell_back: bool) -> Self {
+        if c.departs_from_zero() {
+            OnZero::Departs
+        } else if fell_back && c.lifts() {
+            OnZero::Waits
+        } else {
+            OnZero::Grows
+        }
+    }
+}
+
 /// The first instant in `points` (ordered, the condition monotone between
 /// consecutive ones) where a condition reaches zero: `locate(ta, va, tb, vb)`
 /// narrows a bracket `va < 0 <= vb`; `leaving(ta, tb)` finds where a
-/// condition that starts on zero has become negative. `departs`: the
-/// condition is one that starts its regime on zero and moves away from it
-/// ([`Condition::departs_from_zero`]).
+/// condition that starts on zero has become negative; `on_zero`: how a
+/// start on zero that the motion does not leave is taken.
 pub(super) fn first_crossing(
     points: &[(f64, f64)],
-    departs: bool,
+    on_zero: OnZero,
     mut locate: impl FnMut(f64, f64, f64, f64) -> f64,
     leaving: impl Fn(f64, f64) -> Option<(f64, f64)>,
 ) -> Option<f64> {
@@ -190,14 +225,17 @@ pub(super) fn first_crossing(
         // derivative (`falls_back`, `slides_on`), and the regime was kept: a
         // start on the wrong side is the rounding of that derivative (after a
         // grazing uplift θ̈ is zero, computed as ±1e-16). It is armed where
-        // it is first negative, and at once only if it never is in the step.
-        if !departs {
+        // it is first negative. If it never is in the step, the motion
+        // itself says it does not leave zero: a transition at once (the
+        // impact of a tower that falls straight back), or, for the uplift of
+        // that tower, none.
+        if on_zero == OnZero::Grows {
             return Some(ta);
         }
-        let Some(j) = points.iter().position(|&(_, v)| v < 0.0) else {
-            return Some(ta);
+        return match points.iter().position(|&(_, v)| v < 0.0) {
+            Some(j) => first_crossing(&points[j..], OnZero::Grows, locate, leaving),
+            None => (on_zero == OnZero::Departs).then_some(ta),
         };
-        return first_crossing(&points[j..], false, locate, leaving);
     }
     None
 }

@@ -102,6 +102,9 @@ struct Integration<const N: usize> {
 struct Switches {
     count: u32,
     time: f64,
+    /// The last instant the tower fell straight back after lifting
+    /// (`Run::fall_straight_back`): its uplift is not taken again there.
+    fell_back: f64,
 }
 
 /// What is kept from one instant to the next so as not to compute it twice.
@@ -172,7 +175,11 @@ pub(crate) fn run<O: Observer, const N: usize>(
             tower,
             building: BuildingRegime::Stick,
         },
-        switches: Switches { count: 0, time: f64::NAN },
+        switches: Switches {
+            count: 0,
+            time: f64::NAN,
+            fell_back: f64::NAN,
+        },
         cache: Cache {
             watch: Watched::default(),
             settled: None,

@@ -3,7 +3,7 @@
 //! from one monotone stretch of the inputs to the next, or to the first
 //! instant where a condition is met.
 
-use super::crossing::{first_crossing, leaving_point, Points};
+use super::crossing::{first_crossing, leaving_point, OnZero, Points};
 use super::Run;
 use crate::condition::{conditions, Condition};
 use crate::equations::Accelerations;
@@ -31,8 +31,10 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (list, n) = conditions(self.kernel, self.regime);
         let (kernel, regime, y, piece, vpiece) = (self.kernel, self.regime, self.integ.y, self.input.segment.piece, self.input.vsegment.piece);
         let value = |c: Condition, t: f64| c.value(kernel, regime, piece.eval(t), kernel.g + vpiece.eval(t), &y);
+        let fell_back = self.fell_back_now();
         let mut first: Option<(f64, Condition)> = None;
         for &c in &list[..n] {
+            let on_zero = OnZero::of(c, fell_back);
             let (v0, v1) = (value(c, self.integ.t), value(c, t1));
             let tb = if self.input.has_vertical {
                 // Both inputs are monotone on the stretch, but a condition on
@@ -49,7 +51,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 points.push((t1, v1));
                 let hit = first_crossing(
                     points.as_slice(),
-                    c.departs_from_zero(),
+                    on_zero,
                     |ta, va, tb, vb| find_crossing(|t| value(c, t), ta, va, tb, vb, 0.0).tb,
                     |ta, tb| leaving_point(&|t| value(c, t), ta, tb),
                 );
@@ -61,7 +63,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 // Monotone on the segment: zero at the start and positive at the end
                 // is positive just after the start.
                 find_crossing(|t| value(c, t), self.integ.t, v0, t1, v1, 0.0).tb
-            } else if v0 >= 0.0 && v1 > 0.0 {
+            } else if v0 >= 0.0 && v1 > 0.0 && on_zero != OnZero::Waits {
                 self.integ.t
             } else {
                 continue;

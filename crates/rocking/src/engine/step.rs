@@ -49,7 +49,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             (Some(d), true) => crossing::theta_extremes(d, ends.t0, ends.t1),
             _ => crossing::Points::default(),
         };
-        let first = crossing::first_transition(&ends, &screen, dense.as_ref(), &theta_points);
+        let first = crossing::first_transition(&ends, &screen, dense.as_ref(), &theta_points, self.fell_back_now());
         let t_stop = first.map_or(ends.t1, |(tb, _)| tb);
         peaks::inside(&ends, &screen, dense.as_ref(), &theta_points, t_stop, &mut self.report.tracker);
         // Built only for an observer that wants it (a copy of the polynomial otherwise spent).

@@ -57,10 +57,13 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 });
                 self.cache.watch.conditions
             };
+            let fell_back = self.fell_back_now();
             let holds = |i: usize| match (list[i], conditions[i].v) {
                 // At u̇ = 0 the relative acceleration does not decide (it is
                 // zero when μk = μs): Coulomb's law does.
                 (Condition::SlipStop, 0.0) => !self.slides_on(),
+                // The motion has just shown that this uplift falls straight back.
+                (c, _) if fell_back && c.lifts() => false,
                 _ => holds_now(conditions[i]),
             };
             let Some(i) = (0..n).find(|&i| holds(i)) else {
@@ -156,6 +159,25 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         !holds_now(w.conditions[0])
     }
 
+    /// Whether the tower fell straight back at the current instant.
+    pub(super) fn fell_back_now(&self) -> bool {
+        self.integ.t.to_bits() == self.switches.fell_back.to_bits()
+    }
+
+    /// Puts a tower that lifted and then never left `θ = 0` at rest: the
+    /// impact condition, armed once the motion leaves zero, was found to
+    /// grow from zero over the whole first step (`crossing::OnZero`), so the
+    /// tower met `θ = 0` again with `θ̇ = 0`, having not moved. That is a
+    /// grazing uplift the next derivatives say falls straight back (the
+    /// ground acceleration touching `g tan α` at its peak, where the uplift
+    /// condition and the rocking `θ̈` are both zero and computed with
+    /// roundings of either sign): no impact, and no uplift again at this
+    /// instant; the uplift is armed once its condition has been negative.
+    pub(super) fn fall_straight_back(&mut self) -> Result<(), Error> {
+        self.switches.fell_back = self.integ.t;
+        self.set_down()
+    }
+
     /// Puts a tower that [`Self::falls_back`] at rest: a rest event, no impact.
     pub(super) fn set_down(&mut self) -> Result<(), Error> {
         self.count_switch("rest")?;
@@ -224,6 +246,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// stands, unless the pivot line accelerates enough to lift it at once.
     pub(super) fn impact(&mut self) -> Result<(), Error> {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return Ok(()) };
+        if self.integ.y.theta == 0.0 && self.integ.y.theta_dot == 0.0 {
+            return self.fall_straight_back();
+        }
         let before = self.integ.y;
         let after = self
             .kernel
