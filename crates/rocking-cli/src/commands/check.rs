@@ -133,7 +133,7 @@ fn describe_stack(out: &mut String, case: &Case, stack: &rocking::stack::Stack, 
         let below = if k == 0 {
             if case.model.building().is_some() { "the building" } else { "the ground" }.to_string()
         } else {
-            case.blocks.name(k - 1).to_string()
+            format!("the {}", case.blocks.name(k - 1))
         };
         let _ = writeln!(
             out,

@@ -74,8 +74,10 @@ impl XAxis {
 }
 
 impl CurvesFigure<'_> {
-    /// The curves: a label (the second axis' value, or none) and the points sorted by x.
-    fn curves(&self, cases: &[&Case], x: &XAxis) -> Vec<(Option<String>, Vec<Point>)> {
+    /// The curves: a label (the second axis' value, or none) and the points
+    /// sorted by x; for a block on the tower (`block` its place in
+    /// [`SweepTable::blocks`]), its own max θ/α instead of the tower's.
+    fn curves(&self, cases: &[&Case], x: &XAxis, block: Option<usize>) -> Vec<(Option<String>, Vec<Point>)> {
         let groups: Vec<Option<&str>> = if self.table.axes.len() > 1 {
             SweepTable::values(cases, 1).into_iter().map(Some).collect()
         } else {
@@ -89,7 +91,11 @@ impl CurvesFigure<'_> {
                     .filter(|c| group.is_none_or(|g| c.keys.get(1).map(String::as_str) == Some(g)))
                     .filter_map(|c| {
                         let px = x.position(c.keys.first()?)?;
-                        Some(match c.value {
+                        let value = match block {
+                            None => c.value,
+                            Some(b) => c.blocks.get(b).copied().flatten(),
+                        };
+                        Some(match value {
                             _ if c.overturned => Point::Overturned(px),
                             Some(v) if !c.failed => Point::Value(px, v),
                             _ => Point::Gap(px),
@@ -135,11 +141,14 @@ impl Figure for CurvesFigure<'_> {
         let failed = cases.iter().filter(|c| c.failed).count();
         let rest = style::title_band(root, self.title, &self.subtitle(&fixed, failed))?;
         let x = XAxis::new(&cases);
-        let curves = self.curves(&cases, &x);
+        let curves = self.curves(&cases, &x, None);
         let n = curves.len();
+        // Each block on the tower: the same curves, dashed, of its own max θ/α.
+        let blocks: Vec<Vec<(Option<String>, Vec<Point>)>> = (0..self.table.blocks.len()).map(|b| self.curves(&cases, &x, Some(b))).collect();
 
         let values: Vec<f64> = curves
             .iter()
+            .chain(blocks.iter().flatten())
             .flat_map(|(_, p)| p.iter())
             .filter_map(|p| if let Point::Value(_, v) = p { Some(*v) } else { None })
             .collect();
@@ -166,6 +175,13 @@ impl Figure for CurvesFigure<'_> {
         }
         if entries.is_empty() {
             entries.push(Entry::new(Swatch::LineDots(curve_color(0, 1)), "max θ/α"));
+        }
+        if !blocks.is_empty() {
+            entries.insert(0, Entry::new(Swatch::LineDots(INK), "tower (its own α)"));
+        }
+        for (b, name) in self.table.blocks.iter().enumerate() {
+            let swatch = if b == 0 { Swatch::Dashed(INK) } else { Swatch::Square(INK) };
+            entries.insert(b + 1, Entry::new(swatch, format!("{name} on the block below (its own α)")));
         }
         if any_overturned {
             entries.push(Entry::new(Swatch::Cross(INK), "overturned (on the dashed line: off scale)"));
@@ -216,6 +232,18 @@ impl Figure for CurvesFigure<'_> {
                 .iter()
                 .filter_map(|p| if let Point::Overturned(x) = p { Some((*x, level)) } else { None });
             chart.draw_series(crosses.map(|p| Cross::new(p, 6, color.stroke_width(2))))?;
+            for (b, block) in blocks.iter().enumerate() {
+                let line = block[k].1.iter().map(|p| match *p {
+                    Point::Value(x, v) => (x, v),
+                    Point::Overturned(x) | Point::Gap(x) => (x, f64::NAN),
+                });
+                for segment in scale::segments(line) {
+                    chart.draw_series(DashedLineSeries::new(segment.clone(), 8, 5, color.stroke_width(2)))?;
+                    if b > 0 {
+                        chart.draw_series(segment.into_iter().map(|p| Rectangle::new([(p.0, p.1), (p.0, p.1)], color.stroke_width(6))))?;
+                    }
+                }
+            }
         }
         Ok(())
     }

@@ -29,6 +29,21 @@ pub struct Case {
     pub overturned: bool,
     /// The case failed (its `error` is not empty).
     pub failed: bool,
+    /// Max θ/α of each block on the tower (`<name>_max_theta_over_alpha`), in
+    /// the order of [`SweepTable::blocks`].
+    pub blocks: Vec<Option<f64>>,
+}
+
+/// The blocks on the tower named by the header's columns
+/// `<name>_max_theta_over_alpha`, with those columns.
+fn block_columns<'a>(header: impl Iterator<Item = &'a str>) -> Vec<(String, usize)> {
+    header
+        .enumerate()
+        .filter_map(|(c, h)| {
+            let name = h.trim().strip_suffix(VALUE)?.strip_suffix('_')?;
+            (!name.is_empty()).then(|| (name.to_string(), c))
+        })
+        .collect()
 }
 
 /// The cases of a sweep, in case order.
@@ -38,6 +53,8 @@ pub struct SweepTable {
     pub axes: Vec<String>,
     /// The cases.
     pub cases: Vec<Case>,
+    /// The names of the blocks on the tower, if the sweep's scenario has some.
+    pub blocks: Vec<String>,
 }
 
 /// A [`SweepTable`] being filled from the rows of a sweep in memory.
@@ -47,6 +64,7 @@ pub struct RowTable {
     value: usize,
     overturned: Option<usize>,
     error: Option<usize>,
+    blocks: Vec<usize>,
 }
 
 impl RowTable {
@@ -68,6 +86,7 @@ impl RowTable {
             value: if failed { None } else { number(&text(Some(self.value))) },
             overturned: overturned && !failed,
             failed,
+            blocks: self.blocks.iter().map(|&c| if failed { None } else { number(&text(Some(c))) }).collect(),
         });
     }
 
@@ -112,6 +131,7 @@ impl SweepTable {
             bail!("no column {VALUE} in the header");
         };
         let (overturned_column, error_column) = (column(OVERTURNED), column(ERROR));
+        let blocks = block_columns(header.iter());
         let mut cases = Vec::new();
         for (k, record) in csv.records().enumerate() {
             // Line k + 2: the header is line 1.
@@ -124,9 +144,14 @@ impl SweepTable {
                 value: if failed { None } else { number(field(Some(value_column))) },
                 overturned: overturned && !failed,
                 failed,
+                blocks: blocks.iter().map(|(_, c)| if failed { None } else { number(field(Some(*c))) }).collect(),
             });
         }
-        Ok(Self { axes: axes.to_vec(), cases })
+        Ok(Self {
+            axes: axes.to_vec(),
+            cases,
+            blocks: blocks.into_iter().map(|(name, _)| name).collect(),
+        })
     }
 
     /// An empty table for the rows of a sweep whose columns are `header` and
@@ -140,14 +165,17 @@ impl SweepTable {
         let Some(value) = column(VALUE) else {
             bail!("no column {VALUE} in the header");
         };
+        let blocks = block_columns(header.iter().map(String::as_str));
         Ok(RowTable {
             table: Self {
                 axes: axes.to_vec(),
                 cases: Vec::new(),
+                blocks: blocks.iter().map(|(name, _)| name.clone()).collect(),
             },
             value,
             overturned: column(OVERTURNED),
             error: column(ERROR),
+            blocks: blocks.into_iter().map(|(_, c)| c).collect(),
         })
     }
 
@@ -242,6 +270,32 @@ ground.frequency,ground.amplitude,building.mu_static,max_theta_over_alpha,overtu
             csv.push('\n');
         }
         assert_eq!(table.finish(), SweepTable::from_reader(csv.as_bytes(), &axes)?);
+        Ok(())
+    }
+
+    /// A block's column `<name>_max_theta_over_alpha` gives its values, by its
+    /// name, in the rows and in the file; the tower's column is not a block's.
+    #[test]
+    fn a_blocks_max_theta_is_read_by_its_name() -> anyhow::Result<()> {
+        let header: Vec<String> = ["ground.amplitude", "max_theta_over_alpha", "belfry_max_theta_over_alpha", "error"]
+            .map(String::from)
+            .to_vec();
+        let rows = [
+            vec![Cell::Float(0.5), Cell::Float(0.03), Cell::Float(0.0), Cell::Empty],
+            vec![Cell::Float(0.8), Cell::Float(0.04), Cell::Float(0.049), Cell::Empty],
+            vec![Cell::Float(1.0), Cell::Empty, Cell::Empty, Cell::Text("failed".into())],
+        ];
+        let axes = header[..1].to_vec();
+        let mut table = SweepTable::for_rows(&header, &axes)?;
+        for row in &rows {
+            table.push(row);
+        }
+        let table = table.finish();
+        assert_eq!(table.blocks, ["belfry"]);
+        let blocks: Vec<Vec<Option<f64>>> = table.cases.iter().map(|c| c.blocks.clone()).collect();
+        assert_eq!(blocks, [vec![Some(0.0)], vec![Some(0.049)], vec![None]]);
+        let csv = "ground.amplitude,max_theta_over_alpha,belfry_max_theta_over_alpha,error\n0.8,0.04,0.049,\n";
+        assert_eq!(SweepTable::from_reader(csv.as_bytes(), &axes)?.cases[0].blocks, [Some(0.049)]);
         Ok(())
     }
 }

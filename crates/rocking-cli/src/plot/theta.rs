@@ -5,13 +5,16 @@
 
 use super::legend::{self, Entry, Swatch};
 use super::scale;
-use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE, PURPLE};
+use super::style::{self, Figure, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, VERMILION};
 use super::timeline::{self, Timeline, PLOT_LEFT};
 use crate::format::sig;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use rocking::Sample;
 use rocking_scenario::Outcome;
+
+/// The colours of the blocks' curves, the lowest block first.
+const BLOCK_COLOURS: [RGBColor; 3] = [VERMILION, GREEN, PURPLE];
 
 /// Size of the figure (px).
 pub const SIZE: (u32, u32) = (1000, 700);
@@ -47,17 +50,30 @@ impl ThetaFigure<'_> {
         let Some(a) = alpha(self.outcome) else {
             return "no tower in this scenario: the ground acceleration only".into();
         };
-        let fate = match s.overturn_time {
-            Some(t) => format!("OVERTURNED at t = {} s", sig(t, 4)),
-            None => "did not overturn".into(),
+        let names = self.outcome.layout.blocks;
+        let fate = match (s.overturn_time, s.stack.and_then(|st| st.overturned_block)) {
+            (Some(t), Some(k)) if k > 0 => format!("{} OVERTURNED at t = {} s", names.name(k), sig(t, 4)),
+            (Some(t), _) => format!("OVERTURNED at t = {} s", sig(t, 4)),
+            (None, _) => "did not overturn".into(),
         };
-        format!(
+        let mut line = format!(
             "max θ/α = {} · {} impacts · {fate} · α = {} rad (tan α = {})",
             sig(s.max_abs_theta() / a, 3),
             s.impacts,
             sig(a, 4),
             sig(a.tan(), 3)
-        )
+        );
+        if let Some(stack) = s.stack {
+            for (i, (block, summary)) in self.outcome.blocks.iter().zip(stack.blocks()).enumerate() {
+                line.push_str(&format!(
+                    " · {}: max θ/α = {}, {} impacts",
+                    names.name(i + 1),
+                    sig(summary.max_abs_theta / block.alpha(), 3),
+                    summary.impacts
+                ));
+            }
+        }
+        line
     }
 
     fn theta_panel<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> anyhow::Result<()>
@@ -69,15 +85,35 @@ impl ThetaFigure<'_> {
             return Ok(());
         };
         let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.state.theta / a)).collect();
-        let peak = scale::max_abs(points.iter().map(|p| p.1));
+        // Each block on the tower: its rotation on the block below over its own α.
+        let names = self.outcome.layout.blocks;
+        let blocks: Vec<(String, RGBColor, Vec<(f64, f64)>)> = self
+            .outcome
+            .blocks
+            .iter()
+            .enumerate()
+            .map(|(i, block)| {
+                let curve = self
+                    .samples
+                    .iter()
+                    .map(|s| (s.t, s.stack.map_or(0.0, |st| st.theta[i + 1]) / block.alpha()))
+                    .collect();
+                (names.name(i + 1).to_string(), BLOCK_COLOURS[i % BLOCK_COLOURS.len()], curve)
+            })
+            .collect();
+        let peak = scale::max_abs(points.iter().chain(blocks.iter().flat_map(|b| b.2.iter())).map(|p| p.1));
         let y = scale::symmetric(peak);
         let bounds = peak > 0.0 && y.1 >= 1.0;
-        let entries = timeline::legend_entries(
+        let tower = if blocks.is_empty() { "θ/α" } else { "tower θ/α" };
+        let mut entries = timeline::legend_entries(
             tl,
-            Entry::new(Swatch::Line(BLUE), "θ/α"),
+            Entry::new(Swatch::Line(BLUE), tower),
             true,
             bounds.then(|| Entry::new(Swatch::Dashed(GREY), "θ = ±α")),
         );
+        for (name, colour, _) in &blocks {
+            entries.insert(1, Entry::new(Swatch::Line(*colour), &format!("{name} θ/α (on the block below, its own α)")));
+        }
         let panel = legend::above(area, PLOT_LEFT, &entries)?;
 
         let mut chart = timeline::time_chart(&panel, tl.range, y, "rotation θ/α (–)", false)?;
@@ -89,6 +125,11 @@ impl ThetaFigure<'_> {
         }
         for segment in scale::segments(points) {
             chart.draw_series(LineSeries::new(segment, BLUE.stroke_width(2)))?;
+        }
+        for (_, colour, curve) in blocks {
+            for segment in scale::segments(curve) {
+                chart.draw_series(LineSeries::new(segment, colour.stroke_width(2)))?;
+            }
         }
         let h = 0.05 * (y.1 - y.0);
         timeline::draw_impacts(&mut chart, tl, 0.0, h)?;

@@ -53,7 +53,8 @@ impl Timeline {
         let mut overturn = None;
         for e in outcome.events.iter().filter(|e| e.time.is_finite()) {
             match e.kind {
-                EventKind::Impact => impacts.push(e.time),
+                // The tower's: a block's impacts are drawn by its own curve.
+                EventKind::Impact if e.block == 0 => impacts.push(e.time),
                 EventKind::Overturn => overturn = Some(e.time),
                 _ => {}
             }
