@@ -13,6 +13,9 @@ use plotters::prelude::*;
 use rocking::Sample;
 use rocking_scenario::Outcome;
 
+/// A block's name, colour and curve of θ/α against time.
+type BlockCurve = (String, RGBColor, Vec<(f64, f64)>);
+
 /// The colours of the blocks' curves, the lowest block first.
 const BLOCK_COLOURS: [RGBColor; 3] = [VERMILION, GREEN, PURPLE];
 
@@ -87,7 +90,7 @@ impl ThetaFigure<'_> {
         let points: Vec<(f64, f64)> = self.samples.iter().map(|s| (s.t, s.state.theta / a)).collect();
         // Each block on the tower: its rotation on the block below over its own α.
         let names = self.outcome.layout.blocks;
-        let blocks: Vec<(String, RGBColor, Vec<(f64, f64)>)> = self
+        let blocks: Vec<BlockCurve> = self
             .outcome
             .blocks
             .iter()
@@ -112,7 +115,7 @@ impl ThetaFigure<'_> {
             bounds.then(|| Entry::new(Swatch::Dashed(GREY), "θ = ±α")),
         );
         for (name, colour, _) in &blocks {
-            entries.insert(1, Entry::new(Swatch::Line(*colour), &format!("{name} θ/α (on the block below, its own α)")));
+            entries.insert(1, Entry::new(Swatch::Line(*colour), format!("{name} θ/α (on the block below, its own α)")));
         }
         let panel = legend::above(area, PLOT_LEFT, &entries)?;
 
