@@ -1,7 +1,8 @@
 //! Speed of the stack's stepper against the engine: the 0.5 m × 2 m block of
 //! `housner.rs` (20 s of 0.5 g at 2 Hz, rtol 1e-8, atol 1e-10) run by the
 //! engine and as a one-block stack, and the same block carrying a 0.3 m ×
-//! 0.6 m block of the same density, on a fixed base and on a sliding building.
+//! 0.6 m block of the same density, on a fixed base and on a sliding building,
+//! by the stack's stepper and through `simulate` (which keeps the summary).
 //!
 //! `cargo bench -p rocking --bench stack`.
 
@@ -56,6 +57,11 @@ fn stacks(c: &mut Criterion) {
         let two = ok(Stack::new(&[lower, upper], building, G));
         c.bench_function(&format!("stack_two_blocks_{name}"), |b| {
             b.iter(|| run(black_box(&two), black_box(&ground), &StackState::default(), &stack_settings).map(|r| r.events.len()))
+        });
+        // The user's path: the same two blocks through `simulate`, with the summary kept.
+        let stacked = ok(ok(Model::new(Some(tower), building, G)).with_blocks(&[upper]));
+        c.bench_function(&format!("simulate_two_blocks_{name}"), |b| {
+            b.iter(|| simulate(black_box(&stacked), black_box(&ground), Initial::default(), &settings, &mut ()).map(|s| s.max_abs_theta()))
         });
     }
 }
