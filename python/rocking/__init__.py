@@ -88,20 +88,28 @@ class Result:
         scenario: The scenario that was run.
         summary: The fields of ``summary.json`` (``max_theta_over_alpha``,
             ``overturned``, ``time_in_regime_s`` as a nested dict, ``wall_time_s``, …;
-            ``min_effective_gravity_m_s2`` with a ``ground.vertical`` table);
+            ``min_effective_gravity_m_s2`` with a ``ground.vertical`` table;
+            with ``[[block]]`` tables, ``max_seat_impulse_ratio``,
+            ``overturned_block`` and each block's fields prefixed by its name:
+            ``belfry_max_abs_theta_rad``, ``belfry_max_theta_over_alpha``,
+            ``belfry_impacts``, ``belfry_first_uplift_time_s``, ``belfry_overturned``,
+            ``belfry_max_friction_demand``);
             ``None`` where a quantity does not exist (the tower's without a tower).
         history: The columns of ``history.csv``: 1-D ``float64`` NumPy arrays
             ``t``, ``ground_acc``, ``theta``, ``theta_dot``, ``slip``, ``slip_vel``,
             ``top_dx``, ``top_abs_acc``, ``regime``, ``ground_acc_v`` (only with a
             ``ground.vertical`` table), then ``pK_dx``, ``pK_abs_acc``
-            for each extra point K = 1, 2, … of ``tower.points`` (the order of
+            for each extra point K = 1, 2, … of ``tower.points``, then
+            ``<name>_theta``, ``<name>_theta_dot`` for each block on the tower
+            (its rotation relative to the block below; the order of
             ``history.csv``). ``regime`` is a NumPy array of dtype ``object`` holding
             the Python strings ``"rest"``, ``"rocking"``, ``"sliding"``,
             ``"rocking_sliding"``. One row every ``output_dt`` from ``t = 0`` to the
             end of the run (SI units: s, m/s², rad, rad/s, m, m/s).
         events: The rows of ``events.csv``, each a dict with the keys
             ``t``, ``kind`` (``"uplift"``, ``"impact"``, ``"rest"``, ``"slip"``,
-            ``"stick"``, ``"reverse"``, ``"overturn"``), ``theta``,
+            ``"stick"``, ``"reverse"``, ``"overturn"``; a block's prefixed by its
+            name, ``"belfry_uplift"``, whose ``theta`` columns are then the block's), ``theta``,
             ``theta_dot_before``, ``theta_dot_after``, ``slip_vel``, ``slip``, ``regime``.
     """
 
@@ -185,6 +193,7 @@ def sweep(
         axes: The ``[sweep]`` table of a sweep file: dotted scenario keys mapped to a list
             of values or ``{"from": 3.0, "to": 7.0, "steps": 41}`` (or ``"step": 0.1``), e.g.
             ``{"ground.frequency": {"from": 3, "to": 7, "steps": 41}, "ground.amplitude": [0.3, 0.5]}``.
+            A block's keys are named by the block: ``{"belfry.width": [1.5, 2.0, 2.4]}``.
             Every combination is one case; the first axis varies slowest.
         threads: Worker threads; ``None`` for one per core (or ``RAYON_NUM_THREADS``).
             With a ``client``: the threads of each block (default 1: the Dask

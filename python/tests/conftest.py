@@ -125,6 +125,33 @@ def flatten(obj: Dict[str, Any], prefix: str = "") -> Dict[str, Any]:
     return out
 
 
+def assert_same_as_cli(result: Any, expected: Dict[str, Any]) -> None:
+    """A :class:`rocking.Result` holds what :func:`cli_run` read, exactly: every
+    scalar of summary.json but the wall time, every history value (columns in
+    the file's order) and every event."""
+    import numpy as np
+
+    want, got = flatten(expected["summary"]), flatten(result.summary)
+    assert got.keys() == want.keys()
+    del want["wall_time_s"], got["wall_time_s"]
+    assert got == want
+    assert isinstance(result.summary["wall_time_s"], float) and result.summary["wall_time_s"] > 0.0
+
+    rows = expected["history"]
+    assert list(result.history) == list(rows[0].keys())
+    for name, column in result.history.items():
+        if name == "regime":
+            assert column.tolist() == [row[name] for row in rows]
+        else:
+            np.testing.assert_array_equal(column, np.array([float(row[name]) for row in rows]), err_msg=name)
+
+    assert len(result.events) == len(expected["events"])
+    for got_event, want_event in zip(result.events, expected["events"]):
+        assert list(got_event) == list(want_event)
+        for key, value in want_event.items():
+            assert got_event[key] == (value if key in ("kind", "regime") else float(value)), key
+
+
 class Interrupted(Exception):
     """Raised by the SIGINT handler of :func:`seconds_to_interrupt` (in place of KeyboardInterrupt, which would stop pytest)."""
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import rocking
 
-from conftest import EXAMPLES, cli_run, example_files, flatten, run_cli
+from conftest import EXAMPLES, assert_same_as_cli, cli_run, example_files, run_cli
 
 SCENARIOS = example_files(sweeps=False)
 FLOAT_COLUMNS = ["t", "ground_acc", "theta", "theta_dot", "slip", "slip_vel", "top_dx", "top_abs_acc"]
@@ -25,27 +25,7 @@ def test_there_are_examples() -> None:
 def test_summary_history_and_events_match_the_cli(path: Path, cli: Path, tmp_path: Path) -> None:
     """Every scalar of summary.json but the wall time, every history value and every event, exactly."""
     expected = cli_run(cli, path, tmp_path / "out")
-    result = rocking.run(rocking.Scenario.from_toml(path))
-
-    want, got = flatten(expected["summary"]), flatten(result.summary)
-    assert got.keys() == want.keys()
-    del want["wall_time_s"], got["wall_time_s"]
-    assert got == want
-    assert isinstance(result.summary["wall_time_s"], float) and result.summary["wall_time_s"] > 0.0
-
-    rows = expected["history"]
-    assert list(result.history) == list(rows[0].keys())
-    for name, column in result.history.items():
-        if name == "regime":
-            assert column.tolist() == [row[name] for row in rows]
-        else:
-            np.testing.assert_array_equal(column, np.array([float(row[name]) for row in rows]), err_msg=name)
-
-    assert len(result.events) == len(expected["events"])
-    for got_event, want_event in zip(result.events, expected["events"]):
-        assert list(got_event) == list(want_event)
-        for key, value in want_event.items():
-            assert got_event[key] == (value if key in ("kind", "regime") else float(value)), key
+    assert_same_as_cli(rocking.run(rocking.Scenario.from_toml(path)), expected)
 
 
 @pytest.mark.parametrize("path", SCENARIOS, ids=lambda p: p.relative_to(EXAMPLES).as_posix())

@@ -8,7 +8,7 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use rocking::{Event, Flow, Halt, History, Observer, Step};
-use rocking_scenario::columns::{Layout, Read, Value, DERIVED, EVENTS, HISTORY, HISTORY_POINTS};
+use rocking_scenario::columns::{event_kind, Layout, Read, Value, DERIVED, EVENTS, HISTORY, HISTORY_BLOCKS, HISTORY_POINTS, KIND};
 use rocking_scenario::{Outcome, RunOptions};
 use std::time::{Duration, Instant};
 
@@ -84,7 +84,8 @@ pub fn run_raw<'py>(py: Python<'py>, scenario: &Bound<'py, PyScenario>) -> PyRes
 
 /// The history as a dict of 1-D arrays named and ordered like the `history.csv`
 /// columns (rocking_scenario::columns): float64 for the numbers, an object
-/// array of `str` for the names (`regime`).
+/// array of `str` for the names (`regime`); each block's (`belfry_theta`,
+/// `belfry_theta_dot`) after the points.
 fn history_columns<'py>(py: Python<'py>, history: &History, layout: &Layout) -> PyResult<Bound<'py, PyDict>> {
     let samples = &history.samples;
     let columns = PyDict::new(py);
@@ -117,16 +118,27 @@ fn history_columns<'py>(py: Python<'py>, history: &History, layout: &Layout) -> 
             columns.set_item(format!("p{}_{}", k + 1, c.suffix), PyArray1::from_vec(py, values))?;
         }
     }
+    for (i, name) in layout.blocks.iter().enumerate() {
+        for c in HISTORY_BLOCKS {
+            let values = samples.iter().map(|s| (c.read)(s, i + 1)).collect();
+            columns.set_item(format!("{name}_{}", c.suffix), PyArray1::from_vec(py, values))?;
+        }
+    }
     Ok(columns)
 }
 
-/// The events as dicts with the `events.csv` columns (rocking_scenario::columns).
+/// The events as dicts with the `events.csv` columns (rocking_scenario::columns),
+/// a block's `kind` prefixed by its name (`belfry_uplift`).
 fn events_list<'py>(py: Python<'py>, outcome: &Outcome) -> PyResult<Bound<'py, PyList>> {
     let list = PyList::empty(py);
     let columns: Vec<_> = EVENTS.iter().filter(|c| (c.present)(&outcome.layout)).collect();
     for e in &outcome.events {
         let row = PyDict::new(py);
         for c in &columns {
+            if c.name == KIND {
+                row.set_item(c.name, event_kind(&outcome.layout, e).as_ref())?;
+                continue;
+            }
             match c.read.value(e) {
                 Value::Number(x) => row.set_item(c.name, x)?,
                 Value::Text(t) => row.set_item(c.name, t)?,

@@ -12,7 +12,7 @@ use numpy::PyArray1;
 use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use rocking_scenario::columns::{Kind, SUMMARY};
+use rocking_scenario::columns::{Kind, SUMMARY, SUMMARY_BLOCKS};
 use rocking_scenario::{Cell, Finished, Row, RunError, Sweep, ERROR_COLUMN};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -197,13 +197,19 @@ pub(crate) fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBo
 }
 
 /// Whether the column `name` holds text (the summary's names and the error
-/// message) or flags, from the summary's field list: its type when every cell
-/// of the column is empty (every case failed).
+/// message) or flags, from the summary's field list (a block's field by the
+/// part after its name, `belfry_overturned`): its type when every cell of the
+/// column is empty (every case failed).
 fn field_kind(name: &str) -> Option<Kind> {
     if name == ERROR_COLUMN {
         return Some(Kind::Text);
     }
-    SUMMARY.iter().find(|f| f.name == name).map(|f| f.kind)
+    SUMMARY.iter().find(|f| f.name == name).map(|f| f.kind).or_else(|| {
+        SUMMARY_BLOCKS
+            .iter()
+            .find(|f| name.strip_suffix(f.suffix).is_some_and(|rest| rest.ends_with('_')))
+            .map(|f| f.kind)
+    })
 }
 
 /// A column as a NumPy array: numbers as float64 (`NaN` where the CSV field
