@@ -153,15 +153,15 @@ def assert_same_as_cli(result: Any, expected: Dict[str, Any]) -> None:
 
 
 class Interrupted(Exception):
-    """Raised by the SIGINT handler of :func:`seconds_to_interrupt` (in place of KeyboardInterrupt, which would stop pytest)."""
+    """Raised by the SIGINT handler of :func:`interrupt_notes` (in place of KeyboardInterrupt, which would stop pytest)."""
 
 
-def seconds_to_interrupt(call: Any, after: float = 0.3) -> float:
-    """Sends SIGINT to this process `after` seconds into `call()` and returns
-    how long `call` took to give up (it must raise the handler's exception)."""
+def interrupt_notes(call: Any, after: float = 0.3) -> List[str]:
+    """Sends SIGINT to this process `after` seconds into `call()`, which must
+    raise the handler's exception, and returns that exception's notes (where
+    the call says it stopped: ``rocking.sweep: stopped after 3 of 40 cases``)."""
     import signal
     import threading
-    import time
 
     def handler(signum, frame):  # type: ignore[no-untyped-def]
         raise Interrupted
@@ -169,11 +169,19 @@ def seconds_to_interrupt(call: Any, after: float = 0.3) -> float:
     previous = signal.signal(signal.SIGINT, handler)
     timer = threading.Timer(after, os.kill, args=(os.getpid(), signal.SIGINT))
     try:
-        t0 = time.perf_counter()
         timer.start()
-        with pytest.raises(Interrupted):
+        with pytest.raises(Interrupted) as caught:
             call()
-        return time.perf_counter() - t0
+        return list(getattr(caught.value, "__notes__", []))
     finally:
         timer.cancel()
         signal.signal(signal.SIGINT, previous)
+
+
+def stopped_after(notes: List[str], call: str) -> "tuple[int, int]":
+    """``(done, total)`` of the one note ``{call}: stopped after {done} of {total} …``."""
+    import re
+
+    found = [m for m in (re.fullmatch(rf"{re.escape(call)}: stopped after (\d+) of (\d+) \w+", n) for n in notes) if m]
+    assert len(found) == 1, notes
+    return int(found[0].group(1)), int(found[0].group(2))

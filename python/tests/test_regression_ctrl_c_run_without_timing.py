@@ -16,7 +16,7 @@ import re
 
 import rocking
 
-from conftest import EXAMPLES, Interrupted, seconds_to_interrupt
+from conftest import EXAMPLES, interrupt_notes
 
 
 def test_ctrl_c_stops_a_run_before_its_end() -> None:
@@ -28,18 +28,8 @@ def test_ctrl_c_stops_a_run_before_its_end() -> None:
     d["simulation"]["duration"] = d["ground"]["duration"] = duration
     d["simulation"]["output_dt"] = 100.0
 
-    caught = []
-
-    def run() -> None:
-        try:
-            rocking.run(d)
-        except Interrupted as e:
-            caught.append(e)
-            raise
-
-    seconds_to_interrupt(run)
-    notes = getattr(caught[0], "__notes__", [])
-    stops = [re.search(r"rocking\.run: .*stopped at t = ([0-9.e+-]+) s", n) for n in notes]
+    notes = interrupt_notes(lambda: rocking.run(d))
+    stops = [re.fullmatch(r"rocking\.run: stopped at t = ([0-9.e+-]+) s", n) for n in notes]
     stopped = [float(m.group(1)) for m in stops if m]
     assert len(stopped) == 1, notes
     # Stopped part-way: after its start, well before its end.

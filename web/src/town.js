@@ -131,6 +131,14 @@ export class TownView {
       this.worker.terminate();
       this.worker = null;
       if (data.error !== undefined) {
+        // The file itself is wrong (its header, the assessment file): nothing is assessed.
+        this.result = null;
+        this.panel.town = null;
+        this.panel.csv = null;
+        $("town-summary").textContent = "";
+        $("town-progress-label").textContent = "";
+        $("town-ranking").tBodies[0].innerHTML = "";
+        $("town-map").getContext("2d").clearRect(0, 0, $("town-map").width, $("town-map").height);
         this.showError(data.error);
       } else {
         this.result = data.result;

@@ -77,3 +77,19 @@ def test_the_dynamic_checks_in_the_worker_are_the_commands(page, tmp_path):
     assert "SLC_nonlinear_dynamic_zeta_E" in expected.splitlines()[0]
     assert text == expected
     assert [t["zeta_E"] for t in town["towers"]] == [float(r["zeta_E"]) for r in csv.DictReader(io.StringIO(expected))]
+
+
+def test_a_bad_row_is_named_and_the_others_ranked_and_a_bad_header_stops_all(page, tmp_path):
+    page.click("#tab-town")
+    towers = tmp_path / "bad.csv"
+    towers.write_text("id,name,lon,lat,tower.width\nA,good,14.34,41.06,5.0\nB,negative,14.35,41.07,-4.0\n")
+    page.set_input_files("#town-towers-file", str(towers))
+    expect(page.locator("#town")).to_have_attribute("data-state", "done", timeout=30_000)
+    # The command's line for the bad row, naming the file as chosen, its row and column.
+    expect(page.locator("#town-error")).to_contain_text('bad.csv row 2 (id B), column tower.width ("-4.0"): must be a finite number > 0, got -4')
+    assert page.locator("#town-ranking tbody tr").evaluate_all("rs => rs.map(r => r.dataset.id)") == ["A"]
+    header = tmp_path / "header.csv"
+    header.write_text("id,name,lon,lat,height\nA,good,14.34,41.06,30\n")
+    page.set_input_files("#town-towers-file", str(header))
+    expect(page.locator("#town-error")).to_contain_text('header.csv: unknown column "height"', timeout=30_000)
+    expect(page.locator("#town-ranking tbody tr")).to_have_count(0)

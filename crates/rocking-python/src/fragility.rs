@@ -4,7 +4,7 @@
 
 use crate::convert::table_of;
 use crate::error::scenario_error;
-use crate::sweep::{column, gather, interruptible, thread_count};
+use crate::sweep::{column, gather, interruptible, thread_count, Told};
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -30,10 +30,16 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
 
     let header = study.header();
     let mut tally = study.tally();
+    let told = Told {
+        call: "rocking.fragility",
+        total: study.len(),
+        counted: "cases",
+    };
     let columns = gather(
         py,
         header.len(),
         study.origin(),
+        &told,
         |row| tally.add(row),
         |cancel, sink| study.run(threads, cancel, sink),
     )?;

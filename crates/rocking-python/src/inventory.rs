@@ -8,7 +8,7 @@
 
 use crate::convert::table_of;
 use crate::error::scenario_error;
-use crate::sweep::{column, gather, thread_count};
+use crate::sweep::{column, gather, thread_count, Told};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -73,10 +73,16 @@ pub fn inventory_raw<'py>(
     let cases = first.min(end)..end;
     let pool = calling_pool(cases.len(), threads).map_err(|e| PyRuntimeError::new_err(format!("starting the worker threads: {e}")))?;
     let header = inventory.header();
+    let told = Told {
+        call: "rocking.inventory",
+        total: cases.len(),
+        counted: "towers",
+    };
     let columns = gather(
         py,
         header.len(),
         &towers,
+        &told,
         |_| {},
         |cancel, sink| pool.install(|| run_cases(&inventory, cases, threads, cancel, sink)),
     )?;

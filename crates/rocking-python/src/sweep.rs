@@ -114,10 +114,16 @@ pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
 
 fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases: Range<usize>) -> PyResult<Bound<'py, PyDict>> {
     let header = sweep.header();
+    let told = Told {
+        call: "rocking.sweep",
+        total: cases.end.min(sweep.len()).saturating_sub(cases.start),
+        counted: "cases",
+    };
     let columns = gather(
         py,
         header.len(),
         sweep.origin(),
+        &told,
         |_| {},
         |cancel, sink| sweep.run_range(cases, threads, cancel, sink),
     )?;
@@ -128,18 +134,30 @@ fn run_sweep<'py>(py: Python<'py>, sweep: &Sweep, threads: Option<usize>, cases:
     Ok(out)
 }
 
+/// What a call's Ctrl-C note says: `rocking.sweep: stopped after 3 of 40 cases`.
+pub(crate) struct Told {
+    /// The Python call.
+    pub call: &'static str,
+    /// The cases it runs.
+    pub total: usize,
+    /// What a case is (`cases`, `towers`).
+    pub counted: &'static str,
+}
+
 /// Runs the cases of a sweep or a study by `run` with the GIL released and
 /// gathers their rows into `width` columns of cells, each row shown to `each`
 /// first (a study's tally). The columns grow as the rows arrive (a sweep of
 /// 10⁷ cases reserves nothing up front; a row that cannot be stored raises
 /// `MemoryError`). The cases run on a thread of their own while the calling
 /// thread looks for Ctrl-C every `SIGNAL_CHECK`: its `KeyboardInterrupt`
-/// stops the cases under way at their next event and is raised. Another
-/// failure is a `RuntimeError` naming `origin`.
+/// stops the cases under way at their next event and is raised, with a note
+/// of how many rows were done of `told.total` (`told`). Another failure is a
+/// `RuntimeError` naming `origin`.
 pub(crate) fn gather(
     py: Python<'_>,
     width: usize,
     origin: &Path,
+    told: &Told,
     mut each: impl FnMut(&Row) + Send,
     run: impl FnOnce(&AtomicBool, &mut (dyn FnMut(Row) -> PyResult<()> + Send)) -> Result<Finished, RunError<PyErr>> + Send,
 ) -> PyResult<Vec<Vec<Cell>>> {
@@ -155,7 +173,15 @@ pub(crate) fn gather(
             }
             Ok(())
         })
-    })?;
+    });
+    let finished = match finished {
+        Ok(finished) => finished,
+        Err(interrupt) => {
+            let done = columns.first().map_or(0, Vec::len);
+            let note = format!("{}: stopped after {done} of {} {}", told.call, told.total, told.counted);
+            return Err(crate::error::with_note(py, interrupt, &note));
+        }
+    };
     match finished {
         Ok(_) => Ok(columns),
         Err(RunError::Stopped(e)) => Err(e),
