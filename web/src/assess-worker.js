@@ -1,8 +1,9 @@
 // The assess tab's Web Worker: the capacity and the kinematic checks of
 // `rocking assess` (each check scans ag in steps of 1e-4 g: tens of
-// milliseconds) with each check's name and formula, and a hazard grid's site
+// milliseconds) with each check's name and formula and the capacity's
+// quantities described, and a hazard grid's site
 // parameters, off the main thread.
-import init, { assess, checkTexts, gridSite } from "../pkg/rocking_web.js";
+import init, { assess, capacityQuantities, checkTexts, gridSite } from "../pkg/rocking_web.js";
 
 const ready = init({ module_or_path: new URL("../pkg/rocking_web_bg.wasm", import.meta.url) });
 
@@ -16,6 +17,7 @@ onmessage = async ({ data }) => {
       result = JSON.parse(assess(data.table));
       const q = JSON.parse(data.table).assessment?.q;
       result.texts = JSON.parse(checkTexts(typeof q === "number" ? q : undefined));
+      result.quantities = JSON.parse(capacityQuantities());
     }
     postMessage({ id: data.id, result, ms: performance.now() - start });
   } catch (e) {

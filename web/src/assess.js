@@ -10,7 +10,8 @@
 // bar, on the record files the user picks (given to the engine as text with
 // their names, read by the command's reader): the command's numbers too.
 // The fields come from the keys' description (the engine's `keys()`), each
-// check's name and formula from the engine (`checkTexts`, as report.html).
+// check's name and formula and the capacity's quantities from the engine
+// (`checkTexts`, `capacityQuantities`, as report.html has them).
 import uPlot from "../vendor/uPlot.esm.js";
 import { sig } from "./spectrum.js";
 import { yAxis } from "./charts.js";
@@ -25,19 +26,6 @@ const STATE_KEYS = { ntc2018: ["ag", "F0", "Tc_star"], ec8: ["ag"] };
 /** The keys of [assessment] on the form, those of the dynamic checks after the first four. */
 const ASSESSMENT_FIELDS = ["confidence_factor", "q", "capacity"];
 const DYNAMIC_FIELDS = ["free_after", "units", "dt"];
-
-/** The capacity's fields of assessment.json: [key, symbol, unit, meaning]. */
-const CAPACITY = [
-  ["alpha0", "α0 = b/h", "", "activation multiplier (§C8.7.1.2.1.3)"],
-  ["e_star", "e*", "", "fraction of the mass that takes part"],
-  ["m_star_kg", "M*", "kg", "participating mass"],
-  ["a0_star_m_s2", "a0*", "m/s²", "spectral acceleration of activation, α0 g / (e* FC)"],
-  ["d0_m", "d0", "m", "displacement at which the tower overturns"],
-  ["d_SLV_m", "d_SLV = 0.4 d0", "m", "ultimate displacement, life safety (§C8.7.1.2.1.6)"],
-  ["d_SLC_m", "d_SLC = 0.6 d0", "m", "ultimate displacement, collapse"],
-  ["T_SLV_s", "T_SLV", "s", "secant period at 0.4 d_SLV"],
-  ["T_SLC_s", "T_SLC", "s", "secant period at 0.4 d_SLC"],
-];
 
 /**
  * A field of assessment.json's sites as a column's heading: the name without
@@ -451,9 +439,10 @@ export class AssessView {
     this.panel.dataset.state = "computing";
     const table = this.table();
     try {
-      const { texts, ...result } = await this.engine.call({ kind: "assess", table: JSON.stringify(table) });
+      const { texts, quantities, ...result } = await this.engine.call({ kind: "assess", table: JSON.stringify(table) });
       if (id !== this.requested) return;
       this.texts = texts;
+      this.quantities = quantities;
       this.result = result;
       // Kept on the element too, for the page's tests.
       this.panel.assessment = result;
@@ -541,8 +530,9 @@ export class AssessView {
     line.classList.toggle("danger", !!g && !g.holds);
     const c = r.capacity;
     this.panel.querySelector("#assess-capacity tbody").innerHTML =
-      CAPACITY.map(([k, symbol, u, meaning]) => `<tr><td class="label" title="${meaning}">${symbol}</td><td class="num" data-key="${k}" data-value="${c[k]}">${sig(c[k], 4)}</td><td>${u}</td></tr>`).join("") +
-      `<tr><td class="label">FC, curve</td><td class="num">${c.confidence_factor}</td><td>${c.curve}</td></tr>`;
+      this.quantities
+        .map((q) => `<tr><td class="label" title="${escapeHtml(q.meaning)}">${q.symbol_html}</td><td class="num" data-key="${q.key}" data-value="${c[q.key]}">${sig(c[q.key], 4)}</td><td>${q.unit}</td></tr>`)
+        .join("") + `<tr><td class="label">curve</td><td colspan="2">${c.curve}</td></tr>`;
     // The sites' columns: every field assessment.json gives for a limit state, in its order.
     const states = Object.keys(r.sites);
     const fields = [...new Set(states.flatMap((s) => Object.keys(r.sites[s])))];

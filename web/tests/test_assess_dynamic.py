@@ -103,6 +103,13 @@ def test_the_dynamic_checks_give_rocking_assess_numbers_bit_for_bit(page, tmp_pa
         assert row.locator("td").nth(1).text_content().replace(" (governing)", "") == name
         assert row.locator("td.formula").inner_html() == formula
 
+    # The capacity's quantities: the symbols and meanings of the report's table (after its b, h).
+    tower = report.split("<h2>1.")[1].split("<h2>2.")[0]
+    quantities = re.findall(r'<tr><td>(.*?)</td><td>(.*?)</td><td class="n">.*?</td></tr>', tower)[1:]
+    assert len(quantities) == 12, quantities
+    shown = page.locator("#assess-capacity tbody td.label").evaluate_all("tds => tds.map(td => [td.innerHTML, td.title])")
+    assert shown[:-1] == [list(q) for q in quantities]
+
     # The ADRS chart: its title, axes with units, a legend with every point,
     # each demand on the curve at its d*.
     chart = page.locator("#assess-adrs")

@@ -66,8 +66,8 @@ pub use kinematic::{
     linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
 pub use outputs::{
-    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, CAPACITY_HEADER,
-    CAPACITY_POINTS, RECORDS_HEADER,
+    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, Quantity,
+    CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER,
 };
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};

@@ -15,6 +15,97 @@ pub const CAPACITY_POINTS: usize = 201;
 /// The header of `capacity.csv`.
 pub const CAPACITY_HEADER: [&str; 2] = ["d_star_m", "a_star_m_s2"];
 
+/// A quantity of the capacity, for a reader: its field in `assessment.json`,
+/// its symbol and formula (HTML, indices as `<sub>`), its unit and what it is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Quantity {
+    /// Its field in `assessment.json`'s `capacity`.
+    pub key: &'static str,
+    /// Its symbol, with its formula where it has one (HTML).
+    pub symbol_html: &'static str,
+    /// Its unit (empty for a number).
+    pub unit: &'static str,
+    /// What it is.
+    pub meaning: &'static str,
+}
+
+/// The capacity's quantities in the order of report.html and the page (each
+/// a field of [`capacity_json`]; the curve's kind aside).
+pub const CAPACITY_QUANTITIES: [Quantity; 12] = [
+    Quantity {
+        key: "alpha_rad",
+        symbol_html: "α = atan(b/h)",
+        unit: "rad",
+        meaning: "slenderness about the base corner (b, h: from it to the centre of mass)",
+    },
+    Quantity {
+        key: "radius_m",
+        symbol_html: "R = √(b² + h²)",
+        unit: "m",
+        meaning: "distance from the base corner to the centre of mass",
+    },
+    Quantity {
+        key: "alpha0",
+        symbol_html: "α<sub>0</sub> = b/h",
+        unit: "",
+        meaning: "activation multiplier (§C8.7.1.2.1.3)",
+    },
+    Quantity {
+        key: "e_star",
+        symbol_html: "e*",
+        unit: "",
+        meaning: "fraction of the mass that takes part: 1, one rigid body",
+    },
+    Quantity {
+        key: "m_star_kg",
+        symbol_html: "M* = e* m",
+        unit: "kg",
+        meaning: "participating mass",
+    },
+    Quantity {
+        key: "confidence_factor",
+        symbol_html: "FC",
+        unit: "",
+        meaning: "confidence factor, dividing the capacity's accelerations",
+    },
+    Quantity {
+        key: "a0_star_m_s2",
+        symbol_html: "a<sub>0</sub>* = α<sub>0</sub> g / (e* FC)",
+        unit: "m/s²",
+        meaning: "spectral acceleration of activation (eq. C8.7.1.8)",
+    },
+    Quantity {
+        key: "d0_m",
+        symbol_html: "d<sub>0</sub> = R sin α",
+        unit: "m",
+        meaning: "displacement at which a* vanishes: the tower overturns",
+    },
+    Quantity {
+        key: "d_SLV_m",
+        symbol_html: "d<sub>SLV</sub> = 0.4 d<sub>0</sub>",
+        unit: "m",
+        meaning: "ultimate displacement at life safety (§C8.7.1.2.1.6)",
+    },
+    Quantity {
+        key: "d_SLC_m",
+        symbol_html: "d<sub>SLC</sub> = 0.6 d<sub>0</sub>",
+        unit: "m",
+        meaning: "ultimate displacement at collapse (§C8.7.1.2.1.6)",
+    },
+    Quantity {
+        key: "T_SLV_s",
+        symbol_html: "T<sub>SLV</sub> = 1.68π √(d<sub>SLV</sub>/a*(d<sub>SLV</sub>))",
+        unit: "s",
+        meaning: "secant period at life safety",
+    },
+    Quantity {
+        key: "T_SLC_s",
+        symbol_html: "T<sub>SLC</sub> = 1.56π √(d<sub>SLC</sub>/a*(d<sub>SLC</sub>))",
+        unit: "s",
+        meaning: "secant period at collapse",
+    },
+];
+
 /// The capacity's object of `assessment.json`.
 pub fn capacity_json(c: &Capacity) -> Value {
     json!({
@@ -224,5 +315,31 @@ pub fn dynamic_check_json(c: &DynamicCheck) -> Value {
             "completed": false,
             "error": c.error,
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{capacity_json, CAPACITY_QUANTITIES};
+    use crate::{Capacity, CurveKind};
+
+    /// The described quantities are the capacity's numeric fields of
+    /// `assessment.json`, each once: none missing from the report and the
+    /// page, none described that the file lacks.
+    #[test]
+    fn the_capacitys_quantities_are_its_numeric_fields() {
+        let capacity = Capacity::new(1.5e5, 40f64.sqrt(), (1.0f64 / 3.0).atan(), 9.81, 1.35, CurveKind::Linear).unwrap_or_else(|e| panic!("{e}"));
+        let json = capacity_json(&capacity);
+        let mut numeric: Vec<&str> = json
+            .as_object()
+            .into_iter()
+            .flatten()
+            .filter(|(_, v)| v.is_number())
+            .map(|(k, _)| k.as_str())
+            .collect();
+        let mut described: Vec<&str> = CAPACITY_QUANTITIES.iter().map(|q| q.key).collect();
+        numeric.sort_unstable();
+        described.sort_unstable();
+        assert_eq!(described, numeric);
     }
 }

@@ -125,6 +125,23 @@ pub fn check_texts_json(q: Option<f64>) -> String {
     Value::Object(map).to_string()
 }
 
+/// The capacity's quantities as report.html describes them: the JSON text of
+/// `[{ "key", "symbol_html", "unit", "meaning" }, …]`, `key` the field of
+/// `assessment.json`'s `capacity` (rocking_assess::CAPACITY_QUANTITIES).
+pub fn capacity_quantities_json() -> String {
+    let rows: Vec<Value> = rocking_assess::CAPACITY_QUANTITIES
+        .iter()
+        .map(|q| json!({ "key": q.key, "symbol_html": q.symbol_html, "unit": q.unit, "meaning": q.meaning }))
+        .collect();
+    Value::Array(rows).to_string()
+}
+
+/// See [`capacity_quantities_json`].
+#[wasm_bindgen(js_name = capacityQuantities)]
+pub fn capacity_quantities() -> String {
+    capacity_quantities_json()
+}
+
 /// The assessment file's table from its JSON text, validated.
 fn input(text: &str) -> Result<AssessmentInput, String> {
     let value: Value = serde_json::from_str(text).map_err(|e| format!("{ASSESS_ORIGIN}: not a JSON object: {e}"))?;

@@ -27,7 +27,7 @@ mod output;
 mod spectrum;
 mod town;
 
-pub use assess::{assess_dynamic_json, assess_json, check_texts_json, grid_site_json, ASSESS_ORIGIN};
+pub use assess::{assess_dynamic_json, assess_json, capacity_quantities_json, check_texts_json, grid_site_json, ASSESS_ORIGIN};
 pub use spectrum::record_spectrum_json;
 pub use town::WebTown;
 

@@ -8,7 +8,10 @@
 
 use crate::format::sig;
 use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, SpectraFigure};
-use rocking_assess::{governing, linear_kinematic_demand, soil_factor, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role};
+use rocking_assess::{
+    capacity_json, governing, linear_kinematic_demand, soil_factor, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role,
+    CAPACITY_QUANTITIES,
+};
 use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
 use std::fmt::Write;
 
@@ -278,53 +281,22 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
     let _ = writeln!(out, "<h2>1. The tower and its capacity</h2>");
     let b = capacity.radius * capacity.alpha.sin();
     let h = capacity.radius * capacity.alpha.cos();
-    let rows = [
-        (
-            "b, h",
-            "corner to centre of mass, horizontal and vertical".to_string(),
-            format!("{} m, {} m", sig(b, 4), sig(h, 4)),
-        ),
-        (
-            "α = atan(b/h), R",
-            "slenderness, distance to the centre of mass".into(),
-            format!("{} rad, {} m", sig(capacity.alpha, 4), sig(capacity.radius, 4)),
-        ),
-        ("α<sub>0</sub> = b/h", "activation multiplier (§C8.7.1.2.1.3)".into(), sig(capacity.alpha0, 4)),
-        (
-            "e*, M*",
-            "one rigid body: e* = 1, M* = m".into(),
-            format!("{}, {} kg", capacity.e_star, sig(capacity.m_star, 4)),
-        ),
-        ("FC", "confidence factor".into(), capacity.confidence_factor.to_string()),
-        (
-            "a<sub>0</sub>* = α<sub>0</sub> g / (e* FC)",
-            "spectral acceleration of activation (eq. C8.7.1.8)".into(),
-            format!("{} m/s²", sig(capacity.a0_star, 4)),
-        ),
-        (
-            "d<sub>0</sub> = R sin α",
-            "displacement at which a* vanishes".into(),
-            format!("{} m", sig(capacity.d0, 4)),
-        ),
-        (
-            "d<sub>SLV</sub> = 0.4 d<sub>0</sub>, d<sub>SLC</sub> = 0.6 d<sub>0</sub>",
-            "ultimate displacements (§C8.7.1.2.1.6)".into(),
-            format!("{} m, {} m", sig(capacity.d_slv, 4), sig(capacity.d_slc, 4)),
-        ),
-        (
-            "T<sub>SLV</sub> = 1.68π √(d<sub>SLV</sub>/a*(d<sub>SLV</sub>))",
-            "secant period at life safety".into(),
-            format!("{} s", sig(capacity.t_slv, 4)),
-        ),
-        (
-            "T<sub>SLC</sub> = 1.56π √(d<sub>SLC</sub>/a*(d<sub>SLC</sub>))",
-            "secant period at collapse".into(),
-            format!("{} s", sig(capacity.t_slc, 4)),
-        ),
-    ];
     let _ = writeln!(out, "<table><tr><th>quantity</th><th>meaning</th><th>value</th></tr>");
-    for (q, m, v) in rows {
-        let _ = writeln!(out, "<tr><td>{q}</td><td>{m}</td><td class=\"n\">{v}</td></tr>");
+    let _ = writeln!(
+        out,
+        "<tr><td>b, h</td><td>corner to centre of mass, horizontal and vertical</td><td class=\"n\">{} m, {} m</td></tr>",
+        sig(b, 4),
+        sig(h, 4)
+    );
+    let values = capacity_json(capacity);
+    for q in CAPACITY_QUANTITIES {
+        let value = values[q.key].as_f64().map_or_else(String::new, |v| sig(v, 4));
+        let unit = if q.unit.is_empty() { String::new() } else { format!(" {}", q.unit) };
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td>{}</td><td class=\"n\">{value}{unit}</td></tr>",
+            q.symbol_html, q.meaning
+        );
     }
     let _ = writeln!(out, "</table>");
     let _ = writeln!(
