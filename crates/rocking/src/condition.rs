@@ -92,7 +92,7 @@ impl Condition {
             Condition::Impact | Condition::Overturn => self.theta_margin(s, y.theta),
             Condition::SlipNegative | Condition::SlipPositive => {
                 let (force, normal) = kernel.stick_demand(regime.tower, a_g, g_e, y.theta, y.theta_dot);
-                self.slip_margin(force, normal, kernel.mu_s)
+                self.slip_margin(kernel, force, normal)
             }
             Condition::SlipStop => match regime.building {
                 BuildingRegime::Slip(dir) => -(y.slip_vel * dir.sign()),
@@ -125,11 +125,13 @@ impl Condition {
         theta * s - FRAC_PI_2
     }
 
-    /// The slip conditions from the stick demand: `±F_req − μs N`.
+    /// The slip conditions from the stick demand: `±F_req − μs N`, the
+    /// static friction law ([`Kernel::static_friction_margin`]) towards the
+    /// side the slip starts from.
     #[inline(always)]
-    pub(crate) fn slip_margin<T: Real>(self, force: T, normal: T, mu_s: f64) -> T {
+    pub(crate) fn slip_margin<T: Real>(self, kernel: &Kernel, force: T, normal: T) -> T {
         let toward = if self == Condition::SlipNegative { force } else { -force };
-        toward - normal * mu_s
+        kernel.static_friction_margin(toward, normal)
     }
 
     /// Whether the condition starts its regime on zero and moves away from

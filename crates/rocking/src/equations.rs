@@ -189,6 +189,26 @@ impl Kernel {
         normal * (-self.mu_k * sigma)
     }
 
+    /// The static friction law (Coulomb): the foundation holds the building
+    /// stuck while the horizontal force that takes, `F`, stays within `μs N`
+    /// of the normal force `N`. Returned as the margin `F_toward − μs N` of
+    /// the force towards one side (`F` towards `+x` starts a slip towards
+    /// `−x`): negative while the building sticks. The one place the law is
+    /// written: the slip conditions ([`Condition::slip_margin`](crate::condition::Condition::slip_margin)),
+    /// the end of a slip and the impacts' stick tests (with the impulses for
+    /// the forces) all call it, through [`Kernel::sticks`] for `|F| <= μs N`.
+    #[inline(always)]
+    pub(crate) fn static_friction_margin<T: Real>(&self, toward: T, normal: T) -> T {
+        toward - normal * self.mu_s
+    }
+
+    /// Whether static friction holds the building stuck, `|F| <= μs N`:
+    /// [`Kernel::static_friction_margin`] of `|F|` not positive.
+    #[inline(always)]
+    pub(crate) fn sticks(&self, force: f64, normal: f64) -> bool {
+        self.static_friction_margin(force.abs(), normal) <= 0.0
+    }
+
     /// The pivot line's acceleration `Ẍ_p` of a sliding building with the tower
     /// standing on it: (B) with `θ̇ = θ̈ = 0` and the kinetic friction of
     /// `N = M g_e` (both normal-force laws), divided by `M`.
@@ -346,6 +366,7 @@ mod tests {
     //! loose bound is seen as well.
 
     use super::*;
+    use crate::condition::Condition;
     use crate::jet::Jet;
     use crate::reference::solid_block;
     use crate::regime::SlipDirection;
@@ -365,6 +386,23 @@ mod tests {
     const ROUNDING: f64 = 1e-14;
 
     proptest! {
+        /// The static friction law's three readings agree: the end of a
+        /// slip and the impacts stick (`Kernel::sticks`) exactly where
+        /// neither slip condition of the stuck building is positive, so a
+        /// building that stops cannot be set sliding again at the same
+        /// instant by the conditions, nor the reverse; and both are Coulomb's
+        /// `|F| <= μs N` (μs = 1.25 here), written out by hand.
+        #[test]
+        fn static_friction_is_one_law(force in -3.0e7..3.0e7f64, normal in 0.0..2.5e7f64, on_the_edge in any::<bool>()) {
+            let k = kernel(1.0, 4.0, 0.5);
+            // Half the cases exactly on the edge, |F| = μs N (1.25 N is exact for these N).
+            let force = if on_the_edge { force.signum() * 1.25 * normal } else { force };
+            let sticks = k.sticks(force, normal);
+            prop_assert_eq!(sticks, force.abs() <= 1.25 * normal);
+            let holds = |c: Condition| c.slip_margin(&k, force, normal) > 0.0;
+            prop_assert_eq!(sticks, !holds(Condition::SlipNegative) && !holds(Condition::SlipPositive));
+        }
+
         /// (T) with `Ẍ_p = a_g`: `|θ̈|` and `|θ⃛|` inside
         /// [`Kernel::tower_acceleration_bound`] and [`Kernel::tower_jerk_bound`]
         /// for every lean, pivot, velocity and input within the given maxima.

@@ -76,7 +76,7 @@ impl Kernel {
             slip_vel: 0.0,
             building: BuildingRegime::Stick,
         };
-        let after = if p_stick.abs() <= self.mu_s * n_imp.max(0.0) {
+        let after = if self.sticks(p_stick, n_imp.max(0.0)) {
             stick
         } else {
             self.impact_sliding(s, theta_dot, slip_vel, angular, p_stick).unwrap_or(stick)
@@ -150,7 +150,7 @@ impl Kernel {
         let m2h = self.m2 * 0.5 * self.height;
         let n_imp = (-s * self.m2 * self.half_width * theta_dot).max(0.0);
         let p_stick = -self.total * slip_vel - m2h * theta_dot;
-        if p_stick.abs() <= self.mu_s * n_imp {
+        if self.sticks(p_stick, n_imp) {
             return AfterImpact {
                 theta_dot: 0.0,
                 slip_vel: 0.0,

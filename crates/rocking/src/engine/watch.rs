@@ -78,7 +78,7 @@ pub(super) fn watched(
             // What `value` gives, without its call (not inlined: inlining it
             // everywhere cost 7 M instructions of the sweep, the call here 2.7 M).
             (Condition::Impact | Condition::Overturn, _) => c.theta_margin(s, yj.theta),
-            (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(force, normal, kernel.mu_s),
+            (Condition::SlipNegative | Condition::SlipPositive, Some((force, normal))) => c.slip_margin(kernel, force, normal),
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
     }
