@@ -93,3 +93,21 @@ def test_a_bad_row_is_named_and_the_others_ranked_and_a_bad_header_stops_all(pag
     page.set_input_files("#town-towers-file", str(header))
     expect(page.locator("#town-error")).to_contain_text('header.csv: unknown column "height"', timeout=30_000)
     expect(page.locator("#town-ranking tbody tr")).to_have_count(0)
+
+
+def test_cancel_stops_the_dynamic_checks_and_keeps_the_kinematic_ones(page):
+    page.click("#tab-town")
+    page.click("#town-example")
+    kinematic, text = town_done(page)
+    assert "dynamic" not in text.splitlines()[0]
+    page.set_input_files("#town-records-file", [str(r) for r in RECORDS])
+    page.click("#town-dynamic")
+    # Cancelled once the first tower is told done: 11 of the 12 still to go.
+    expect(page.locator("#town")).to_have_attribute("data-progress", "1", timeout=120_000)
+    page.click("#town-cancel")
+    expect(page.locator("#town")).to_have_attribute("data-state", "done")
+    expect(page.locator("#town-progress-label")).to_have_text("cancelled")
+    expect(page.locator("#town-dynamic")).to_be_enabled()
+    # The kinematic inventory stays, whole.
+    assert page.evaluate("document.getElementById('town').csv") == text
+    expect(page.locator("#town-ranking tbody tr")).to_have_count(12)
