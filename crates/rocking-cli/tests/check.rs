@@ -24,6 +24,25 @@ fn check_prints_the_derived_quantities_of_the_church() {
     }
 }
 
+/// The belfry example: each interface's uplift threshold from rest, by hand.
+/// The shaft (150 t, centre 6 m up) carries the belfry (30 t, centre
+/// 12 + 2.25 m up): the stack tips about the shaft's corner (b = 2 m) when
+/// `a (m1 y1 + m2 y2) = g b (m1 + m2)`, a = 3.6e5 / 1.3275e6 g = 0.271186 g;
+/// the belfry on a shaft at rest when `a = g tan α₂ = g 3.2/4.5 = 0.711111 g`.
+#[test]
+fn check_prints_each_interfaces_uplift_threshold() {
+    let r = rocking(&["check", "examples/belfry-on-church.toml"]);
+    assert_eq!(r.code, Some(0), "{r:?}");
+    let out = &r.stdout;
+    for expected in [
+        "belfry: B = 3.2 m, H = 4.5 m, m = 30000 kg",
+        "tower on the building lifts from rest at a_g = 0.271186 g",
+        "belfry on the tower lifts from rest at a_g = 0.711111 g",
+    ] {
+        assert!(out.contains(expected), "{expected:?} not in\n{out}");
+    }
+}
+
 #[test]
 fn check_writes_nothing() {
     let cwd = tempdir();

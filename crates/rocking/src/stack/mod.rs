@@ -27,6 +27,34 @@
 //!
 //! For one block on a building these are the tower's equations (T)–(B) and its
 //! impact law; `tests` checks them against the engine's own functions.
+//!
+//! A model with blocks runs through [`crate::simulate`] like the tower alone:
+//!
+//! ```
+//! use rocking::stack::Block;
+//! use rocking::{simulate, EventKind, EventLog, GroundMotion, Harmonic, Initial, MassInput, Model, Section, Settings, Tower, TowerGeometry};
+//!
+//! let g = 9.81;
+//! let shaft = Tower::from_geometry(&TowerGeometry {
+//!     width: 4.0, height: 12.0, depth: None, section: Section::Solid,
+//!     mass: MassInput::Mass(1.5e5), inertia_pivot: None, restitution: None,
+//! })?;
+//! // A belfry 3.2 m × 4.5 m of 30 t (its inertia that of a solid block: J = m (B² + H²)/12).
+//! let belfry = Block::solid(2, 3.2, 4.5, 3.0e4).expect("a valid block");
+//! let model = Model::new(Some(shaft), None, g)?.with_blocks(&[belfry])?;
+//! let ground = GroundMotion::Harmonic(Harmonic::new(0.8 * g, 2.0, 6.0, 0.0)?);
+//! let mut log = EventLog::default();
+//! let summary = simulate(&model, &ground, Initial::default(), &Settings { duration: 8.0, ..Settings::default() }, &mut log)?;
+//! // The tower's quantities are the shaft's; the blocks' are in `summary.stack`.
+//! let stack = summary.stack.expect("a stacked run");
+//! let belfry_run = stack.blocks()[0];
+//! assert!(summary.impacts > 0 && belfry_run.impacts > 0);
+//! assert!(belfry_run.max_abs_theta / belfry.alpha() < 1.0 && stack.overturned_block.is_none());
+//! // Events say whose they are: 0 the tower's (and the building's), 1 the belfry's.
+//! let belfry_impacts = log.events.iter().filter(|e| e.block == 1 && e.kind == EventKind::Impact).count();
+//! assert_eq!(belfry_impacts, belfry_run.impacts);
+//! # Ok::<(), rocking::Error>(())
+//! ```
 
 // Matrices and their rows are indexed by coordinate, as in the formulas.
 #![allow(clippy::needless_range_loop)]
