@@ -57,6 +57,8 @@ function formFields(keys) {
     else fields[k.section].push(f);
   }
   for (const [section, v] of Object.entries(fields)) if (typeof v === "string") fields[section] = fields[v];
+  // A section without a field on the form (`[[block]]`, not yet on the page) has no fieldset.
+  for (const [section, v] of Object.entries(fields)) if (v.length === 0) delete fields[section];
   return { fields, groundKeys };
 }
 const OPTIONAL_SECTIONS = ["tower", "building", "ground.vertical", "initial"];
