@@ -9,7 +9,7 @@ use crate::error::{ErrorKind, Fault};
 use crate::read::{with_article, Section};
 use arrayvec::{ArrayString, ArrayVec};
 use rocking::stack::{Block, MAX_BLOCKS};
-use rocking::{MassInput, Section as TowerSection, Tower, TowerGeometry};
+use rocking::{Tower, TowerGeometry};
 use toml::{Table, Value};
 
 /// The key of the blocks' array of tables.
@@ -242,34 +242,7 @@ fn one(s: &Section<'_>, index: usize) -> Result<Block, Fault> {
     };
     let width = required("width", "the block's width in m")?;
     let height = required("height", "the block's height in m")?;
-    s.exclusive("mass", "density")?;
-    let mass = match (s.number("mass")?, s.number("density")?) {
-        (Some(m), _) => MassInput::Mass(m),
-        (None, Some(rho)) => MassInput::Density(rho),
-        (None, None) => {
-            return Err(Fault::new(
-                s.key("mass"),
-                ErrorKind::Missing("required: the block's mass in kg (or its density in kg/m³)".into()),
-            ))
-        }
-    };
-    let hollow = s.choice("section", &[("solid", false), ("hollow", true)])?.unwrap_or(false);
-    let section = match (hollow, s.number("wall_thickness")?) {
-        (false, None) => TowerSection::Solid,
-        (false, Some(_)) => {
-            return Err(Fault::new(
-                s.key("wall_thickness"),
-                ErrorKind::NotApplicable("applies only to section = \"hollow\"".into()),
-            ))
-        }
-        (true, Some(t)) => TowerSection::Hollow { wall_thickness: t },
-        (true, None) => {
-            return Err(Fault::new(
-                s.key("wall_thickness"),
-                ErrorKind::Missing("required for section = \"hollow\": the wall thickness in m".into()),
-            ))
-        }
-    };
+    let (mass, section) = crate::tower::mass_and_section(s, "block")?;
     let as_tower = Tower::from_geometry(&TowerGeometry {
         width,
         height,

@@ -15,6 +15,41 @@ enum SectionKind {
     Hollow,
 }
 
+/// The mass (`mass` or `density`) and the section (`section`,
+/// `wall_thickness`) of a body given by its outer dimensions: the tower, or a
+/// block on it (`body` names it in errors).
+pub(crate) fn mass_and_section(s: &Section<'_>, body: &str) -> Result<(MassInput, TowerSection), Fault> {
+    s.exclusive("mass", "density")?;
+    let mass = match (s.number("mass")?, s.number("density")?) {
+        (Some(m), _) => MassInput::Mass(m),
+        (None, Some(rho)) => MassInput::Density(rho),
+        (None, None) => {
+            return Err(Fault::new(
+                s.key("mass"),
+                ErrorKind::Missing(format!("required: the {body}'s mass in kg (or its density in kg/m³)")),
+            ))
+        }
+    };
+    let kind = s.choice("section", &[("solid", SectionKind::Solid), ("hollow", SectionKind::Hollow)])?;
+    let section = match (kind.unwrap_or(SectionKind::Solid), s.number("wall_thickness")?) {
+        (SectionKind::Solid, None) => TowerSection::Solid,
+        (SectionKind::Solid, Some(_)) => {
+            return Err(Fault::new(
+                s.key("wall_thickness"),
+                ErrorKind::NotApplicable("applies only to section = \"hollow\"".into()),
+            ))
+        }
+        (SectionKind::Hollow, Some(t)) => TowerSection::Hollow { wall_thickness: t },
+        (SectionKind::Hollow, None) => {
+            return Err(Fault::new(
+                s.key("wall_thickness"),
+                ErrorKind::Missing("required for section = \"hollow\": the wall thickness in m".into()),
+            ))
+        }
+    };
+    Ok((mass, section))
+}
+
 /// The tower and the extra points (x, y) in m, tower coordinates, to report.
 pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> {
     s.only_scenario_keys()?;
@@ -38,35 +73,7 @@ pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> 
     } else {
         let width = required("width", "the tower's width B in m (or give radius and alpha)")?;
         let height = required("height", "the tower's height H in m (or give radius and alpha)")?;
-        s.exclusive("mass", "density")?;
-        let mass = match (s.number("mass")?, s.number("density")?) {
-            (Some(m), _) => MassInput::Mass(m),
-            (None, Some(rho)) => MassInput::Density(rho),
-            (None, None) => {
-                return Err(Fault::new(
-                    s.key("mass"),
-                    ErrorKind::Missing("required: the tower's mass in kg (or its density in kg/m³)".into()),
-                ))
-            }
-        };
-        let kind = s.choice("section", &[("solid", SectionKind::Solid), ("hollow", SectionKind::Hollow)])?;
-        let wall = s.number("wall_thickness")?;
-        let section = match (kind.unwrap_or(SectionKind::Solid), wall) {
-            (SectionKind::Solid, None) => TowerSection::Solid,
-            (SectionKind::Solid, Some(_)) => {
-                return Err(Fault::new(
-                    s.key("wall_thickness"),
-                    ErrorKind::NotApplicable("applies only to section = \"hollow\"".into()),
-                ))
-            }
-            (SectionKind::Hollow, Some(t)) => TowerSection::Hollow { wall_thickness: t },
-            (SectionKind::Hollow, None) => {
-                return Err(Fault::new(
-                    s.key("wall_thickness"),
-                    ErrorKind::Missing("required for section = \"hollow\": the wall thickness in m".into()),
-                ))
-            }
-        };
+        let (mass, section) = mass_and_section(s, "tower")?;
         Tower::from_geometry(&TowerGeometry {
             width,
             height,

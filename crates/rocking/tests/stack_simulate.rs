@@ -10,7 +10,8 @@ use rocking::{
 
 const G: f64 = 9.81;
 
-fn shaft() -> Tower {
+/// The shaft of the stack tests, 4 m × 20 m, 3.2e5 kg, solid, with `restitution` if given.
+fn shaft_with(restitution: Option<f64>) -> Tower {
     Tower::from_geometry(&TowerGeometry {
         width: 4.0,
         height: 20.0,
@@ -18,9 +19,13 @@ fn shaft() -> Tower {
         section: Section::Solid,
         mass: rocking::MassInput::Mass(3.2e5),
         inertia_pivot: None,
-        restitution: None,
+        restitution,
     })
     .expect("a valid shaft")
+}
+
+fn shaft() -> Tower {
+    shaft_with(None)
 }
 
 /// The displacement of the shaft's top centre `(0, 20)` (m) when the tower
@@ -162,16 +167,7 @@ fn a_stack_the_model_refuses() {
         matches!(&err, rocking::Error::InvalidParameter { parameter: Parameter::Blocks, reason } if reason.contains("wider than the 4 m of the tower")),
         "{err}"
     );
-    let given = Tower::from_geometry(&TowerGeometry {
-        width: 4.0,
-        height: 20.0,
-        depth: None,
-        section: Section::Solid,
-        mass: rocking::MassInput::Mass(3.2e5),
-        inertia_pivot: None,
-        restitution: Some(0.8),
-    })
-    .expect("a valid tower");
+    let given = shaft_with(Some(0.8));
     let narrow = Block::solid(2, 3.0, 6.0, 4.0e4).expect("a valid block");
     let err = Model::new(Some(given), None, G)
         .and_then(|m| m.with_blocks(&[narrow]))
