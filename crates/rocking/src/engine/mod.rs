@@ -113,6 +113,15 @@ struct Cache {
     watch: Watched,
     /// Set when `settle` leaves `watch` computed at the current instant (see [`Settled`]).
     settled: Option<Settled>,
+    /// Whether [`Cache::settled`] is used; only the test that compares the
+    /// reuse with recomputation switches it off.
+    reuse_settled: bool,
+}
+
+#[cfg(test)]
+thread_local! {
+    /// [`Cache::reuse_settled`] of the runs of this thread, for that test.
+    static REUSE_SETTLED: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
 }
 
 /// Where the run reports: the summary being kept and the observer.
@@ -183,6 +192,10 @@ pub(crate) fn run<O: Observer, const N: usize>(
         cache: Cache {
             watch: Watched::default(),
             settled: None,
+            #[cfg(not(test))]
+            reuse_settled: true,
+            #[cfg(test)]
+            reuse_settled: REUSE_SETTLED.with(std::cell::Cell::get),
         },
         report: Report {
             tracker: Tracker::new(),
@@ -377,6 +390,48 @@ mod tests {
         let rel = (two.max_abs_theta() - four.max_abs_theta()).abs() / two.max_abs_theta();
         assert!(rel < 1e-7, "{} against {}", two.max_abs_theta(), four.max_abs_theta());
         assert_ne!(two.evaluations, four.evaluations, "not the same steps: the test compares two paths");
+    }
+
+    /// [`Settled`]: the restart at a kink of a recorded input takes the
+    /// right-hand side and the watched quantities `settle` computed there,
+    /// claiming they are bit for bit those the restart would compute. A
+    /// tower rocking on a sliding building under a sampled sine (a kink
+    /// every 0.01 s, 400 of them; the building's conditions make `settle`
+    /// compute them at each) runs the same with the reuse switched off:
+    /// every event and the summary bit for bit, only the count of
+    /// right-hand side evaluations lower with it.
+    #[test]
+    fn settled_reuse_is_recomputation() {
+        use crate::{Building, EventLog, NormalForce, Record};
+        let building = Building::new(5.0e3, 0.3, 0.25, NormalForce::Constant).unwrap_or_else(|e| panic!("{e}"));
+        let model = Model::new(Some(solid_block(0.4, 2.0)), Some(building), G).unwrap_or_else(|e| panic!("{e}"));
+        let kernel = Kernel::new(&model);
+        let times: Vec<f64> = (0..=400).map(|i| 0.01 * f64::from(i)).collect();
+        let values = times.iter().map(|t| 0.45 * G * (std::f64::consts::TAU * 2.0 * t).sin()).collect();
+        let ground = GroundMotion::Record(Record::from_samples(times, values).unwrap_or_else(|e| panic!("{e}")));
+        let settings = Settings {
+            duration: 6.0,
+            ..Settings::default()
+        };
+        let go = |reuse: bool| {
+            REUSE_SETTLED.with(|r| r.set(reuse));
+            let mut log = EventLog::default();
+            let summary = run::<EventLog, 4>(&kernel, &ground, None, &settings, TowerRegime::Rest, Initial::default(), &mut log);
+            REUSE_SETTLED.with(|r| r.set(true));
+            (summary.unwrap_or_else(|e| panic!("{e}")), log.events)
+        };
+        let (mut with, events_with) = go(true);
+        let (mut without, events_without) = go(false);
+        assert!(with.impacts > 5 && with.first_slip_time.is_some(), "the case must rock and slide: {with:?}");
+        assert_eq!(format!("{events_with:?}"), format!("{events_without:?}"));
+        assert!(
+            with.evaluations < without.evaluations,
+            "{} against {}: no reuse to test",
+            with.evaluations,
+            without.evaluations
+        );
+        (with.evaluations, without.evaluations) = (0, 0);
+        assert_eq!(format!("{with:?}"), format!("{without:?}"));
     }
 
     /// `settle` evaluates the conditions of a tower rocking on a fixed base

@@ -72,7 +72,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let (kernel, regime, piece, vpiece) = (self.kernel, self.regime, self.input.segment.piece, self.input.vsegment.piece);
         let (t, y) = (self.integ.t, self.integ.y);
         let same = |c: &Settled| c.t.to_bits() == t.to_bits() && c.y.same_bits(y) && c.regime == regime && c.pieces == (piece, vpiece);
-        match self.cache.settled.take().filter(same) {
+        match self.cache.settled.take().filter(|c| self.cache.reuse_settled && same(c)) {
             // `settle` left `watch` computed there.
             Some(c) => self
                 .integ
