@@ -4,9 +4,9 @@
 
 use crate::capacity::Capacity;
 use crate::check::{governing, Check};
-use crate::dynamic::{dynamic_check_ticking, most_runs, DynamicCheck, RecordSet};
+use crate::dynamic::{dynamic_checks_ticking, most_runs_of, DynamicCheck, RecordSet};
 use crate::input::AssessmentInput;
-use crate::outputs::{assessment_json, capacity_csv, records_csv, spectra_csv};
+use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -14,14 +14,50 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// The outcome of an assessment.
 #[derive(Debug, Clone)]
 pub struct Assessment {
-    /// The tower's capacity.
+    /// The tower's capacity (with blocks on it, the whole stack turning as one).
     pub capacity: Capacity,
-    /// The kinematic checks: activation, linear, non-linear (life safety, collapse).
+    /// The tower's kinematic checks: activation, linear, non-linear (life safety, collapse).
     pub checks: Vec<Check>,
     /// The record set, if the file has one.
     pub set: Option<RecordSet>,
-    /// The dynamic checks (life safety, collapse), with a record set.
+    /// The tower's dynamic checks (life safety, collapse), with a record set.
     pub dynamic: Vec<DynamicCheck>,
+    /// The mechanism of each block on the tower, the lowest first (none for a tower alone).
+    pub blocks: Vec<BlockMechanism>,
+}
+
+/// The mechanism of a block on the tower (the belfry on its shaft): the block
+/// and those above it turning as one rigid body about a corner of its base.
+/// Its kinematic checks take the ground's spectra for the motion of the
+/// shaft's top: the tower and the building are rigid, so that while the
+/// tower stands (and the building sticks) its top moves with the ground.
+#[derive(Debug, Clone)]
+pub struct BlockMechanism {
+    /// The block's name.
+    pub name: String,
+    /// Its position above the tower (1 the first).
+    pub block: usize,
+    /// Its capacity.
+    pub capacity: Capacity,
+    /// Its kinematic checks, as the tower's.
+    pub checks: Vec<Check>,
+    /// Its dynamic checks, on the tower's runs, its own θ the control point.
+    pub dynamic: Vec<DynamicCheck>,
+}
+
+/// A mechanism's name, capacity and checks: the tower's or a block's.
+#[derive(Debug, Clone, Copy)]
+pub struct MechanismView<'a> {
+    /// `"tower"` or the block's name.
+    pub name: &'a str,
+    /// 0 for the tower, else the block's position above it.
+    pub block: usize,
+    /// Its capacity.
+    pub capacity: &'a Capacity,
+    /// Its kinematic checks.
+    pub checks: &'a [Check],
+    /// Its dynamic checks.
+    pub dynamic: &'a [DynamicCheck],
 }
 
 impl Assessment {
@@ -42,48 +78,139 @@ impl Assessment {
     pub fn run_observed(input: &AssessmentInput, cache: &RecordCache, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Self, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
+        let mut blocks = (1..=input.blocks().len())
+            .map(|k| {
+                let capacity = input.block_capacity(k)?;
+                Ok(BlockMechanism {
+                    name: input.blocks().name(k).to_string(),
+                    block: k,
+                    checks: input.kinematic_checks(&capacity)?,
+                    capacity,
+                    dynamic: Vec::new(),
+                })
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
         let (set, dynamic) = if input.file.records.is_empty() {
             (None, Vec::new())
         } else {
-            let set = RecordSet::read_cached(input, capacity.t_slc, cache)?;
+            // One fitting range for every mechanism: stretched to the longest T_SLC.
+            let t_slc = blocks.iter().map(|b| b.capacity.t_slc).fold(capacity.t_slc, f64::max);
+            let set = RecordSet::read_cached(input, t_slc, cache)?;
             let roles = [Role::LifeSafety, Role::Collapse];
-            let most = roles.len() * most_runs(set.records.len(), &input.lambda);
+            let mechanisms: Vec<(usize, &Capacity)> = std::iter::once((0, &capacity)).chain(blocks.iter().map(|b| (b.block, &b.capacity))).collect();
+            let most = roles.len() * most_runs_of(set.records.len(), &input.lambda, mechanisms.len());
             let done = AtomicUsize::new(0);
             let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, most);
-            let dynamic = roles
+            let mut per_role = roles
                 .into_iter()
-                .map(|role| dynamic_check_ticking(input, &set, &capacity, role, &tick))
+                .map(|role| dynamic_checks_ticking(input, &set, &mechanisms, role, &tick))
                 .collect::<Result<Vec<_>, _>>()?;
-            (Some(set), dynamic)
+            // Regrouped by mechanism: the tower's first, then each block's.
+            let mut by_mechanism: Vec<Vec<DynamicCheck>> = (0..mechanisms.len()).map(|_| Vec::new()).collect();
+            for checks in &mut per_role {
+                for (m, check) in checks.drain(..).enumerate() {
+                    by_mechanism[m].push(check);
+                }
+            }
+            let mut by_mechanism = by_mechanism.into_iter();
+            let tower = by_mechanism.next().unwrap_or_default();
+            for (block, dynamic) in blocks.iter_mut().zip(by_mechanism) {
+                block.dynamic = dynamic;
+            }
+            (Some(set), tower)
         };
         Ok(Self {
             capacity,
             checks,
             set,
             dynamic,
+            blocks,
         })
     }
 
-    /// Every completed check, the kinematic ones first.
+    /// Every mechanism: the tower's, then each block's.
+    pub fn mechanisms(&self) -> Vec<MechanismView<'_>> {
+        let tower = MechanismView {
+            name: "tower",
+            block: 0,
+            capacity: &self.capacity,
+            checks: &self.checks,
+            dynamic: &self.dynamic,
+        };
+        std::iter::once(tower)
+            .chain(self.blocks.iter().map(|b| MechanismView {
+                name: &b.name,
+                block: b.block,
+                capacity: &b.capacity,
+                checks: &b.checks,
+                dynamic: &b.dynamic,
+            }))
+            .collect()
+    }
+
+    /// The governing mechanism and check: the least ζ_E of every mechanism's
+    /// completed checks (the tower's first, so that it governs a tie).
+    pub fn governing_mechanism(&self) -> Option<(MechanismView<'_>, Check)> {
+        self.mechanisms()
+            .into_iter()
+            .filter_map(|m| governing(&m.completed()).copied().map(|c| (m, c)))
+            .reduce(|best, x| if x.1.zeta_e < best.1.zeta_e { x } else { best })
+    }
+
+    /// Every completed check of every mechanism, the tower's first, each
+    /// mechanism's kinematic ones before its dynamic ones.
     pub fn completed(&self) -> Vec<Check> {
-        let mut all = self.checks.clone();
-        all.extend(self.dynamic.iter().filter_map(|d| d.check));
-        all
+        self.mechanisms().iter().flat_map(MechanismView::completed).collect()
     }
 
-    /// The governing check: the least ζ_E of the completed checks.
+    /// The governing check: the least ζ_E of the completed checks of every mechanism.
     pub fn governing(&self) -> Option<Check> {
-        governing(&self.completed()).copied()
+        self.governing_mechanism().map(|(_, c)| c)
     }
 
-    /// The record set and the dynamic checks, if any.
+    /// The record set and the tower's dynamic checks, if any.
     pub fn dynamic_part(&self) -> Option<(&RecordSet, &[DynamicCheck])> {
         self.set.as_ref().map(|s| (s, self.dynamic.as_slice()))
     }
 
-    /// `assessment.json`.
+    /// `assessment.json`. With blocks on the tower, `mechanisms` holds each
+    /// mechanism's `name`, `block` (0 the tower), `capacity`, `checks`
+    /// (kinematic, then dynamic) and `dynamic`, the tower's first (its own are
+    /// the top-level ones too), and `governing` names its `mechanism`.
     pub fn json(&self, input: &AssessmentInput) -> serde_json::Value {
-        assessment_json(input.name(), &self.capacity, &input.site, &self.checks, self.dynamic_part())
+        let mut out = assessment_json(input.name(), &self.capacity, &input.site, &self.checks, self.dynamic_part());
+        if self.blocks.is_empty() {
+            return out;
+        }
+        let mechanisms: Vec<serde_json::Value> = self
+            .mechanisms()
+            .iter()
+            .map(|m| {
+                let dynamic = self.set.as_ref().map(|set| (set, m.dynamic));
+                let one = assessment_json(input.name(), m.capacity, &input.site, m.checks, dynamic);
+                serde_json::json!({
+                    "name": m.name,
+                    "block": m.block,
+                    "capacity": one["capacity"],
+                    "checks": one["checks"],
+                    "governing": one["governing"],
+                    "dynamic": one["dynamic"],
+                })
+            })
+            .collect();
+        if let serde_json::Value::Object(map) = &mut out {
+            map.insert("mechanisms".into(), serde_json::Value::Array(mechanisms));
+            // The governing check of every mechanism, named.
+            let governing = self.governing_mechanism().map_or(serde_json::Value::Null, |(m, c)| {
+                let mut g = check_json(&c);
+                if let serde_json::Value::Object(g) = &mut g {
+                    g.insert("mechanism".into(), serde_json::json!(m.name));
+                }
+                g
+            });
+            map.insert("governing".into(), governing);
+        }
+        out
     }
 
     /// `capacity.csv`.
@@ -93,6 +220,18 @@ impl Assessment {
 
     /// `records.csv` and `spectra.csv`, with a record set.
     pub fn set_csvs(&self) -> Option<(String, String)> {
-        self.set.as_ref().map(|s| (records_csv(s, &self.dynamic), spectra_csv(s, &self.dynamic)))
+        let blocks: Vec<(&str, &[DynamicCheck])> = self.blocks.iter().map(|b| (b.name.as_str(), b.dynamic.as_slice())).collect();
+        self.set
+            .as_ref()
+            .map(|s| (records_csv(s, &self.dynamic, &blocks), spectra_csv(s, &self.dynamic)))
+    }
+}
+
+impl MechanismView<'_> {
+    /// Its completed checks, the kinematic ones first.
+    pub fn completed(&self) -> Vec<Check> {
+        let mut all = self.checks.to_vec();
+        all.extend(self.dynamic.iter().filter_map(|d| d.check));
+        all
     }
 }

@@ -18,6 +18,7 @@
 //! ```
 
 use crate::error::{invalid, Error};
+use rocking::stack::Block;
 use std::f64::consts::PI;
 use std::fmt;
 use std::str::FromStr;
@@ -134,6 +135,22 @@ pub fn secant_period_slc(d_slc: f64, a_at_d_slc: f64) -> f64 {
     1.56 * PI * (d_slc / a_at_d_slc).sqrt()
 }
 
+/// The mass (kg) of a column of blocks standing at rest, each centred on the
+/// one below (`blocks[0]` the lowest), and the height (m) of its centre of
+/// mass above the lowest block's base: `h = Σ m_i (z_i + H_i/2) / Σ m_i`,
+/// `z_i = H_0 + … + H_(i−1)` the height of block i's base. The blocks turning
+/// as one rigid body about a corner of the lowest one's base are a mechanism
+/// whose `b` is half the lowest one's width and whose `h` is this.
+pub fn rigid_column_centre(blocks: &[Block]) -> (f64, f64) {
+    let (mut mass, mut moment, mut base) = (0.0, 0.0, 0.0);
+    for block in blocks {
+        mass += block.mass();
+        moment += block.mass() * (base + block.height() / 2.0);
+        base += block.height();
+    }
+    (mass, moment / mass)
+}
+
 /// The capacity of a tower as one rigid block on its springing level.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Capacity {
@@ -217,12 +234,37 @@ impl Capacity {
         Ok(capacity)
     }
 
-    /// The capacity of the tower of `model` (an error without one).
+    /// The capacity of the tower of `model` (an error without one): with
+    /// blocks on it, the tower and every block turning as one rigid body
+    /// about a corner of the tower's base ([`Capacity::of_column`]).
     pub fn of_model(model: &rocking::Model, confidence_factor: f64, curve: CurveKind) -> Result<Self, Error> {
+        Self::of_block(model, 0, confidence_factor, curve)
+    }
+
+    /// The capacity of the mechanism of block `k` of `model` (0 the tower, `k`
+    /// the `k`-th block above it): block `k` and the blocks above it turning as
+    /// one rigid body about a corner of block `k`'s base ([`Capacity::of_column`]).
+    /// A tower alone is its own `R` and `α`.
+    pub fn of_block(model: &rocking::Model, k: usize, confidence_factor: f64, curve: CurveKind) -> Result<Self, Error> {
         let tower = model
             .tower()
             .ok_or_else(|| invalid("tower", "an assessment needs a [tower]: the capacity is that of the tower rocking"))?;
-        Self::new(tower.mass(), tower.radius(), tower.alpha(), model.gravity(), confidence_factor, curve)
+        match model.stack() {
+            None if k == 0 => Self::new(tower.mass(), tower.radius(), tower.alpha(), model.gravity(), confidence_factor, curve),
+            Some(stack) if k < stack.len() => Self::of_column(&stack.blocks()[k..], model.gravity(), confidence_factor, curve),
+            _ => Err(invalid("block", format!("the tower carries no block {k}"))),
+        }
+    }
+
+    /// The capacity of a column of blocks (`blocks[0]` the lowest) turning as
+    /// one rigid body about a corner of the lowest one's base: `b` half its
+    /// width, `h` and the mass of [`rigid_column_centre`], `R = √(b² + h²)`,
+    /// `α = atan(b/h)`; e* = 1 and M* the whole column's mass.
+    pub fn of_column(blocks: &[Block], g: f64, confidence_factor: f64, curve: CurveKind) -> Result<Self, Error> {
+        let lowest = blocks.first().ok_or_else(|| invalid("block", "a column has at least one block"))?;
+        let (mass, h) = rigid_column_centre(blocks);
+        let b = lowest.width() / 2.0;
+        Self::new(mass, libm::hypot(b, h), libm::atan2(b, h), g, confidence_factor, curve)
     }
 
     /// The spectral acceleration a* (m/s²) of the chosen curve at the

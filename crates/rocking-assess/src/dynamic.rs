@@ -11,6 +11,14 @@
 //! bisected to [`LAMBDA_TOLERANCE`]; the response need not grow with λ, so the
 //! scan's first failure is the one reported, and the whole scan is kept for the
 //! report (the mean response against λ).
+//!
+//! With blocks on the tower, each mechanism (the tower with the blocks on it,
+//! each block with those above it) has its own check on the same runs: its
+//! control point is its own block's `θ_k` (relative to the block below) over
+//! its own capacity's `R`, `α`, and a record makes it collapse when its block
+//! or one below it overturned. A block above it that overturned ends the run:
+//! its response is then its largest d* up to then. The set at λ = 1 and the
+//! scan are run once for all of them; each bisects its own first failure.
 
 use crate::capacity::Capacity;
 use crate::check::{Check, Method, Unit};
@@ -194,19 +202,48 @@ impl RecordSet {
         Ok(Self { periods, range, records })
     }
 
-    /// Runs record `i` at `scale` on its fitted record: its response, or the one line of its failure.
+    /// Runs record `i` at `scale` on its fitted record: the tower's response
+    /// (`capacity` the tower's), or the one line of its failure.
     pub fn run(&self, i: usize, scale: f64, capacity: &Capacity) -> Result<RecordResponse, String> {
+        Ok(self.run_mechanisms(i, scale, &[(0, capacity)])?.remove(0))
+    }
+
+    /// Runs record `i` at `scale`: the response of each mechanism `(k, capacity)`
+    /// (block `k`, 0 the tower) in order, or the one line of the run's failure.
+    pub fn run_mechanisms(&self, i: usize, scale: f64, mechanisms: &[(usize, &Capacity)]) -> Result<Vec<RecordResponse>, String> {
         let r = &self.records[i];
         let mut case = r.case.clone();
         case.ground = GroundMotion::Record(r.record.scaled(scale));
         let outcome = case.run(RunOptions::SUMMARY).map_err(|e| e.fault.to_string())?;
         let s = &outcome.summary;
-        let overturned = s.overturned();
-        Ok(RecordResponse {
-            max_displacement: (!overturned).then(|| capacity.displacement_at_rotation(s.max_abs_theta())),
-            overturned,
-            max_slip: case.model.building().map(|_| s.max_abs_slip),
-        })
+        let max_slip = case.model.building().map(|_| s.max_abs_slip);
+        Ok(mechanisms
+            .iter()
+            .map(|&(k, capacity)| {
+                let (theta, overturned) = block_response(s, k);
+                RecordResponse {
+                    max_displacement: (!overturned).then(|| capacity.displacement_at_rotation(theta)),
+                    overturned,
+                    max_slip,
+                }
+            })
+            .collect())
+    }
+}
+
+/// The largest `|θ_k|` (rad) of block `k` (0 the tower) over a run, and
+/// whether its mechanism collapsed: block `k` or a block under it overturned.
+fn block_response(summary: &rocking::Summary, k: usize) -> (f64, bool) {
+    match &summary.stack {
+        None => (summary.max_abs_theta(), summary.overturned()),
+        Some(stack) => {
+            let theta = if k == 0 {
+                stack.tower().max_abs_theta
+            } else {
+                stack.blocks()[k - 1].max_abs_theta
+            };
+            (theta, stack.overturned_block.is_some_and(|fell| fell <= k))
+        }
     }
 }
 
@@ -219,26 +256,58 @@ pub type Tick<'a> = &'a (dyn Fn() + Sync);
 /// halved down to [`LAMBDA_TOLERANCE`]). Fewer are run when the check holds
 /// over the whole scan, or a record fails.
 pub fn most_runs(records: usize, lambda: &LambdaScan) -> usize {
+    most_runs_of(records, lambda, 1)
+}
+
+/// As [`most_runs`] for the checks of `mechanisms` mechanisms on the same
+/// runs: the set at λ = 1 and the scan once, a bisection each.
+pub fn most_runs_of(records: usize, lambda: &LambdaScan, mechanisms: usize) -> usize {
     let mut width = lambda.step.max(lambda.from);
     let mut halvings = 0;
     while width > LAMBDA_TOLERANCE {
         width *= 0.5;
         halvings += 1;
     }
-    records * (1 + lambda.values().len() + halvings)
+    records * (1 + lambda.values().len() + mechanisms * halvings)
 }
 
-/// The set's responses at λ (each record at λ times its scale) and the verdict there.
-fn at_lambda(set: &RecordSet, scales: &[f64], lambda: f64, rule: SetRule, capacity: &Capacity, d_ls: f64, tick: Tick<'_>) -> LambdaPoint {
-    let responses: Vec<Result<RecordResponse, String>> = (0..scales.len())
+/// A mechanism of a dynamic check: its block (0 the tower), its capacity and
+/// its ultimate displacement `d_LS` of the check's limit state.
+#[derive(Clone, Copy)]
+struct Control<'a> {
+    block: usize,
+    capacity: &'a Capacity,
+    d_ls: f64,
+}
+
+/// Runs of the set, one per (λ, record) pair in parallel: each run's responses, per mechanism.
+fn runs(set: &RecordSet, scales: &[f64], lambdas: &[f64], controls: &[Control<'_>], tick: Tick<'_>) -> Vec<Result<Vec<RecordResponse>, String>> {
+    let n = scales.len();
+    let mechanisms: Vec<(usize, &Capacity)> = controls.iter().map(|c| (c.block, c.capacity)).collect();
+    (0..lambdas.len() * n)
         .into_par_iter()
-        .map(|i| {
-            let r = set.run(i, lambda * scales[i], capacity);
+        .map(|k| {
+            let r = set.run_mechanisms(k % n, lambdas[k / n] * scales[k % n], &mechanisms);
             tick();
             r
         })
-        .collect();
-    point(lambda, responses, rule, capacity, d_ls)
+        .collect()
+}
+
+/// The points of mechanism `m` of the runs at `lambdas` (in the order of [`runs`]).
+fn points(runs: &[Result<Vec<RecordResponse>, String>], lambdas: &[f64], m: usize, rule: SetRule, control: Control<'_>) -> Vec<LambdaPoint> {
+    let n = runs.len() / lambdas.len().max(1);
+    lambdas
+        .iter()
+        .enumerate()
+        .map(|(j, &lambda)| {
+            let responses = runs[j * n..(j + 1) * n]
+                .iter()
+                .map(|r| r.as_ref().map(|all| all[m].clone()).map_err(Clone::clone))
+                .collect();
+            point(lambda, responses, rule, control.capacity, control.d_ls)
+        })
+        .collect()
 }
 
 fn point(lambda: f64, responses: Vec<Result<RecordResponse, String>>, rule: SetRule, capacity: &Capacity, d_ls: f64) -> LambdaPoint {
@@ -266,98 +335,115 @@ pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capaci
 
 /// As [`dynamic_check`], `tick` told after each record's run (at most [`most_runs`]).
 pub fn dynamic_check_ticking(input: &AssessmentInput, set: &RecordSet, capacity: &Capacity, role: Role, tick: Tick<'_>) -> Result<DynamicCheck, Error> {
+    Ok(dynamic_checks_ticking(input, set, &[(0, capacity)], role, tick)?.remove(0))
+}
+
+/// The non-linear dynamic checks of the life-safety or collapse state `role`
+/// of several mechanisms on the same runs, each `(k, capacity)` with its
+/// control point block `k`'s θ (0 the tower), in order; `tick` told after
+/// each record's run (at most [`most_runs_of`]).
+pub fn dynamic_checks_ticking(
+    input: &AssessmentInput,
+    set: &RecordSet,
+    mechanisms: &[(usize, &Capacity)],
+    role: Role,
+    tick: Tick<'_>,
+) -> Result<Vec<DynamicCheck>, Error> {
     let origin = input.origin();
     let spectrum = input.site.spectrum(role);
     let limit_state = input.site.limit_state(role);
-    let d_ls = match role {
-        Role::LifeSafety => capacity.d_slv,
-        Role::Collapse => capacity.d_slc,
-        Role::Damage => return Err(Fault::invalid("site", "the dynamic checks are of the life-safety and collapse states").in_file(origin)),
+    let d_ls = |c: &Capacity| match role {
+        Role::LifeSafety => Ok(c.d_slv),
+        Role::Collapse => Ok(c.d_slc),
+        Role::Damage => Err(Fault::invalid("site", "the dynamic checks are of the life-safety and collapse states").in_file(origin)),
     };
+    let controls = mechanisms
+        .iter()
+        .map(|&(block, capacity)| {
+            Ok(Control {
+                block,
+                capacity,
+                d_ls: d_ls(capacity)?,
+            })
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
     let target_g: Vec<f64> = set.periods.iter().map(|&t| spectrum.se(t)).collect();
     let spectra: Vec<Vec<f64>> = set.records.iter().map(|r| r.psa_g.clone()).collect();
     let fitted =
         fit_record_set(&set.periods, &spectra, &target_g, set.range).map_err(|e| Fault::invalid("assessment.records", e.to_string()).in_file(origin))?;
     let rule = fitted.rule;
     let scales = fitted.scales.clone();
-    let at_one = at_lambda(set, &scales, 1.0, rule, capacity, d_ls, tick);
-    // The scan: every (λ, record) pair in parallel; the whole curve is kept.
+    // The set at λ = 1 and the scan: every (λ, record) pair in parallel, once for all mechanisms.
+    let at_one_runs = runs(set, &scales, &[1.0], &controls, tick);
     let lambdas = input.lambda.values();
-    let n = scales.len();
-    let runs: Vec<Result<RecordResponse, String>> = (0..lambdas.len() * n)
-        .into_par_iter()
-        .map(|k| {
-            let r = set.run(k % n, lambdas[k / n] * scales[k % n], capacity);
-            tick();
-            r
-        })
-        .collect();
-    let mut scan: Vec<LambdaPoint> = runs
-        .chunks(n)
-        .zip(&lambdas)
-        .map(|(r, &lambda)| point(lambda, r.to_vec(), rule, capacity, d_ls))
-        .collect();
+    let scan_runs = runs(set, &scales, &lambdas, &controls, tick);
+    let ag = spectrum.ag();
     let incomplete = |p: &LambdaPoint| {
         p.responses
             .iter()
             .zip(&set.records)
             .find_map(|(r, rec)| r.as_ref().err().map(|e| format!("record {} at λ = {}: {e}", rec.path, p.lambda)))
     };
-    let mut error = incomplete(&at_one);
-    let mut bracket = None;
-    let mut holds_at = 0.0;
-    for p in &scan {
-        if !p.complete {
-            error = error.or_else(|| incomplete(p));
-            break;
-        }
-        if !p.holds {
-            bracket = Some((holds_at, p.lambda));
-            break;
-        }
-        holds_at = p.lambda;
-    }
-    if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
-        while hi - lo > LAMBDA_TOLERANCE {
-            let mid = 0.5 * (lo + hi);
-            let p = at_lambda(set, &scales, mid, rule, capacity, d_ls, tick);
+    let mut checks = Vec::with_capacity(controls.len());
+    for (m, &control) in controls.iter().enumerate() {
+        let at_one = points(&at_one_runs, &[1.0], m, rule, control).remove(0);
+        let mut scan = points(&scan_runs, &lambdas, m, rule, control);
+        let mut error = incomplete(&at_one);
+        let mut bracket = None;
+        let mut holds_at = 0.0;
+        for p in &scan {
             if !p.complete {
-                error = incomplete(&p);
+                error = error.or_else(|| incomplete(p));
                 break;
             }
-            if p.holds {
-                lo = mid;
-            } else {
-                hi = mid;
+            if !p.holds {
+                bracket = Some((holds_at, p.lambda));
+                break;
             }
-            scan.push(p);
+            holds_at = p.lambda;
         }
-        bracket = Some((lo, hi));
-    }
-    let ag = spectrum.ag();
-    let check = error.is_none().then(|| {
-        let ag_capacity = match bracket {
-            Some((lo, _)) => AgCapacity::At(lo * ag),
-            None => AgCapacity::AtLeast(input.lambda.to * ag),
-        };
-        Check::new(
+        if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
+            while hi - lo > LAMBDA_TOLERANCE {
+                let mid = 0.5 * (lo + hi);
+                let p = points(&runs(set, &scales, &[mid], &[control], tick), &[mid], 0, rule, control).remove(0);
+                if !p.complete {
+                    error = incomplete(&p);
+                    break;
+                }
+                if p.holds {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+                scan.push(p);
+            }
+            bracket = Some((lo, hi));
+        }
+        let check = error.is_none().then(|| {
+            let ag_capacity = match bracket {
+                Some((lo, _)) => AgCapacity::At(lo * ag),
+                None => AgCapacity::AtLeast(input.lambda.to * ag),
+            };
+            Check::new(
+                limit_state,
+                Method::NonlinearDynamic,
+                Unit::Displacement,
+                at_one.combined,
+                control.d_ls,
+                ag,
+                ag_capacity,
+            )
+        });
+        checks.push(DynamicCheck {
             limit_state,
-            Method::NonlinearDynamic,
-            Unit::Displacement,
-            at_one.combined,
-            d_ls,
-            ag,
-            ag_capacity,
-        )
-    });
-    Ok(DynamicCheck {
-        limit_state,
-        target_g,
-        fitted,
-        at_one,
-        scan,
-        bracket,
-        check,
-        error,
-    })
+            target_g: target_g.clone(),
+            fitted: fitted.clone(),
+            at_one,
+            scan,
+            bracket,
+            check,
+            error,
+        });
+    }
+    Ok(checks)
 }

@@ -162,9 +162,22 @@ impl AssessmentInput {
         Ok(with_ground(&self.file.scenario, self.file.record_ground(record)?, duration))
     }
 
-    /// The tower's capacity with the file's FC and curve.
+    /// The names of the blocks on the tower, the lowest first.
+    pub fn blocks(&self) -> &rocking_scenario::BlockNames {
+        self.scenario.blocks()
+    }
+
+    /// The tower's capacity with the file's FC and curve (with blocks on it,
+    /// the whole stack turning as one rigid body on the springing level).
     pub fn capacity(&self) -> Result<Capacity, Error> {
-        Capacity::of_model(self.model(), self.file.confidence_factor, self.curve()).map_err(|e| Fault::invalid("tower", e.to_string()).in_file(self.origin()))
+        self.block_capacity(0)
+    }
+
+    /// The capacity of the mechanism of block `k` (0 the tower, `k` the `k`-th
+    /// block above it: the belfry on its shaft) with the file's FC and curve.
+    pub fn block_capacity(&self, k: usize) -> Result<Capacity, Error> {
+        let key = if k == 0 { "tower".to_string() } else { self.blocks().name(k).to_string() };
+        Capacity::of_block(self.model(), k, self.file.confidence_factor, self.curve()).map_err(|e| Fault::invalid(key, e.to_string()).in_file(self.origin()))
     }
 
     /// The kinematic checks ([`crate::kinematic_checks`]): activation, linear, non-linear (two).

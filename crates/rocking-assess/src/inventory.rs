@@ -405,15 +405,17 @@ impl Inventory {
             }
         }
         let mut cells = self.identity(index);
-        let completed = done.completed();
+        let completed = done.mechanisms()[0].completed();
         for (state, method) in &self.checks {
             match completed.iter().find(|c| c.limit_state == *state && c.method == *method) {
                 Some(c) => cells.extend([Cell::Float(c.ag_capacity.value()), Cell::Float(c.zeta_e)]),
                 None => cells.extend([Cell::Empty, Cell::Empty]),
             }
         }
-        match done.governing() {
-            Some(g) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}", g.limit_state, g.method))]),
+        // The tower's checks in the columns; the governing of every mechanism, a block's named.
+        match done.governing_mechanism() {
+            Some((m, g)) if m.block > 0 => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {} {}", m.name, g.limit_state, g.method))]),
+            Some((_, g)) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}", g.limit_state, g.method))]),
             None => cells.extend([Cell::Empty, Cell::Empty]),
         }
         // A dynamic check that could not be completed: the others stand, the reason is the error.

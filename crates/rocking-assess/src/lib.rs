@@ -49,14 +49,16 @@ mod search;
 mod site;
 mod town;
 
-pub use assess::Assessment;
+pub use assess::{Assessment, BlockMechanism, MechanismView};
 pub use capacity::{
     activation_acceleration, activation_multiplier, collapse_displacement, exact_acceleration_at, exact_capacity_curve, linear_capacity_curve,
-    secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind, DEFAULT_CONFIDENCE_FACTOR,
+    rigid_column_centre, secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind,
+    DEFAULT_CONFIDENCE_FACTOR,
 };
 pub use check::{acceleration_ratio, governing, Check, Method, MethodText, Unit};
 pub use dynamic::{
-    combined_response, dynamic_check, dynamic_check_ticking, most_runs, DynamicCheck, LambdaPoint, RecordResponse, RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
+    combined_response, dynamic_check, dynamic_check_ticking, dynamic_checks_ticking, most_runs, most_runs_of, DynamicCheck, LambdaPoint, RecordResponse,
+    RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
 };
 pub use error::Error;
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};

@@ -3,7 +3,7 @@
 
 use crate::capacity::Capacity;
 use crate::check::{governing, Check, Method};
-use crate::dynamic::{DynamicCheck, RecordSet};
+use crate::dynamic::{DynamicCheck, RecordResponse, RecordSet};
 use crate::site::{Role, Site};
 use rocking_codes::CodeSpectrum;
 use rocking_codes::SetRule;
@@ -231,24 +231,37 @@ fn number(x: f64) -> String {
 
 /// `records.csv`: one row per limit state and record at λ = 1 (the fitted scales):
 /// the displacement empty when the tower overturned, the slip empty without a
-/// building, `error` the one line of a record that failed to run.
-pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
-    let mut out = RECORDS_HEADER.join(",") + "\n";
-    for c in checks {
-        for ((record, scale), response) in set.records.iter().zip(&c.fitted.scales).zip(&c.at_one.responses) {
-            let mut row = vec![c.limit_state.as_str().to_string(), field(&record.path), number(*scale)];
-            match response {
+/// building, `error` the one line of a record that failed to run. With blocks
+/// on the tower (`blocks`: each block's name and dynamic checks, in the order
+/// of `checks`), each adds `<name>_max_control_displacement_m` (its own θ's
+/// d*, empty when its mechanism collapsed) and `<name>_overturned` (it fell,
+/// or a block under it did) after `max_building_slip_m`.
+pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck], blocks: &[(&str, &[DynamicCheck])]) -> String {
+    let mut header: Vec<String> = RECORDS_HEADER[..RECORDS_HEADER.len() - 1].iter().map(|h| h.to_string()).collect();
+    for (name, _) in blocks {
+        header.push(format!("{name}_max_control_displacement_m"));
+        header.push(format!("{name}_overturned"));
+    }
+    header.push("error".into());
+    let mut out = header.join(",") + "\n";
+    for (c, check) in checks.iter().enumerate() {
+        for (i, ((record, scale), response)) in set.records.iter().zip(&check.fitted.scales).zip(&check.at_one.responses).enumerate() {
+            let mut row = vec![check.limit_state.as_str().to_string(), field(&record.path), number(*scale)];
+            let push = |row: &mut Vec<String>, response: &Result<RecordResponse, String>, slip: bool| match response {
                 Ok(r) => {
                     row.push(r.max_displacement.map(number).unwrap_or_default());
                     row.push(r.overturned.to_string());
-                    row.push(r.max_slip.map(number).unwrap_or_default());
-                    row.push(String::new());
+                    if slip {
+                        row.push(r.max_slip.map(number).unwrap_or_default());
+                    }
                 }
-                Err(e) => {
-                    row.extend([String::new(), String::new(), String::new()]);
-                    row.push(field(e));
-                }
+                Err(_) => row.extend(std::iter::repeat_n(String::new(), if slip { 3 } else { 2 })),
+            };
+            push(&mut row, response, true);
+            for (_, block) in blocks {
+                push(&mut row, &block[c].at_one.responses[i], false);
             }
+            row.push(response.as_ref().err().map(|e| field(e)).unwrap_or_default());
             out.push_str(&row.join(","));
             out.push('\n');
         }

@@ -74,10 +74,7 @@ pub fn write_files(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Ass
         write(RECORDS_CSV, records)?;
         write(SPECTRA_CSV, spectra)?;
     }
-    write(
-        REPORT_HTML,
-        super::assess_report::report_html(input, &done.capacity, &done.checks, done.dynamic_part())?,
-    )
+    write(REPORT_HTML, super::assess_report::report_html(input, done)?)
 }
 
 fn assess(args: &Args) -> anyhow::Result<()> {
@@ -97,36 +94,46 @@ fn assess(args: &Args) -> anyhow::Result<()> {
     let staging = output::Staging::new(&dir, &inputs)?;
 
     let done = Assessment::run(&file)?;
-    let (capacity, checks) = (&done.capacity, &done.checks);
     write_files(staging.folder(), &dir, &file, &done)?;
     staging.commit()?;
 
-    let mut lines = vec![format!(
-        "{}: α0 = {}, a0* = {} m/s², d0 = {} m, T_SLV = {} s, T_SLC = {} s (FC {}, {} curve)",
-        file.name(),
-        sig(capacity.alpha0, 4),
-        sig(capacity.a0_star, 4),
-        sig(capacity.d0, 4),
-        sig(capacity.t_slv, 4),
-        sig(capacity.t_slc, 4),
-        capacity.confidence_factor,
-        capacity.curve
-    )];
-    lines.extend(checks.iter().map(check_line));
-    for d in &done.dynamic {
-        match &d.check {
-            Some(c) => lines.push(check_line(c)),
-            None => lines.push(format!(
-                "  {:4} {:20} could not be completed: {}",
-                d.limit_state.as_str(),
-                "nonlinear_dynamic",
-                d.error.as_deref().unwrap_or("a record failed")
-            )),
+    let mechanisms = done.mechanisms();
+    let stacked = mechanisms.len() > 1;
+    let mut lines = Vec::new();
+    for m in &mechanisms {
+        let capacity = m.capacity;
+        lines.push(format!(
+            "{}: α0 = {}, a0* = {} m/s², d0 = {} m, T_SLV = {} s, T_SLC = {} s (FC {}, {} curve)",
+            if stacked {
+                format!("{}, {}", file.name(), m.name)
+            } else {
+                file.name().to_string()
+            },
+            sig(capacity.alpha0, 4),
+            sig(capacity.a0_star, 4),
+            sig(capacity.d0, 4),
+            sig(capacity.t_slv, 4),
+            sig(capacity.t_slc, 4),
+            capacity.confidence_factor,
+            capacity.curve
+        ));
+        lines.extend(m.checks.iter().map(check_line));
+        for d in m.dynamic {
+            match &d.check {
+                Some(c) => lines.push(check_line(c)),
+                None => lines.push(format!(
+                    "  {:4} {:20} could not be completed: {}",
+                    d.limit_state.as_str(),
+                    "nonlinear_dynamic",
+                    d.error.as_deref().unwrap_or("a record failed")
+                )),
+            }
         }
     }
-    if let Some(g) = done.governing() {
+    if let Some((m, g)) = done.governing_mechanism() {
         let relation = if g.ag_capacity.is_lower_bound() { "≥" } else { "=" };
-        lines.push(format!("governing: {} {}, ζ_E {relation} {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
+        let of = if stacked { format!("{} ", m.name) } else { String::new() };
+        lines.push(format!("governing: {of}{} {}, ζ_E {relation} {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
     }
     lines.push(format!(
         "wrote {} in {} ({} s)",

@@ -9,7 +9,7 @@
 use crate::format::sig;
 use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, SpectraFigure};
 use rocking_assess::{
-    capacity_json, governing, linear_kinematic_demand, soil_factor, AssessmentInput, Capacity, Check, DynamicCheck, Method, RecordSet, Role,
+    capacity_json, linear_kinematic_demand, soil_factor, Assessment, AssessmentInput, Capacity, Check, DynamicCheck, MechanismView, Method, RecordSet, Role,
     CAPACITY_QUANTITIES,
 };
 use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
@@ -66,7 +66,7 @@ fn check_row(out: &mut String, c: &Check, q: f64) {
 }
 
 /// The capacity curve in the ADRS plane with the ultimate displacements and the demands.
-fn adrs_figure(capacity: &Capacity, checks: &[Check]) -> anyhow::Result<String> {
+fn adrs_figure(capacity: &Capacity, checks: &[Check], of: &str) -> anyhow::Result<String> {
     let points = capacity.curve_points(201);
     let mut markers = vec![
         Marker {
@@ -88,7 +88,7 @@ fn adrs_figure(capacity: &Capacity, checks: &[Check]) -> anyhow::Result<String> 
         });
     }
     let chart = LineChart {
-        title: "Capacity curve in the ADRS plane".into(),
+        title: format!("Capacity curve in the ADRS plane{of}"),
         subtitle: format!("{} curve, FC = {}, e* = 1", capacity.curve, capacity.confidence_factor),
         x_label: "spectral displacement d* (m)".into(),
         y_label: "spectral acceleration a* (m/s²)".into(),
@@ -154,7 +154,7 @@ fn spectra_figure(set: &RecordSet, d: &DynamicCheck) -> anyhow::Result<String> {
     Ok(scalable(spectra_svg(&figure)?, (1000, 680)))
 }
 
-fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64) -> anyhow::Result<String> {
+fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64, name: &str) -> anyhow::Result<String> {
     let mut scan: Vec<(f64, f64)> = d.scan.iter().map(|p| (p.lambda, p.combined)).collect();
     scan.sort_by(|x, y| x.0.total_cmp(&y.0));
     let top = scan.last().map_or(1.0, |p| p.0);
@@ -173,7 +173,11 @@ fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64) -> anyhow::Result<String>
         });
     }
     let chart = LineChart {
-        title: format!("{}: the set's response against λ", d.limit_state),
+        title: if name.is_empty() {
+            format!("{}: the set's response against λ", d.limit_state)
+        } else {
+            format!("{}, {name}: the set's response against λ", d.limit_state)
+        },
         subtitle: "every record at λ times its fitted scale; overturning counted as d0".into(),
         x_label: "λ (multiplier of the fitted scales)".into(),
         y_label: "response d* (m)".into(),
@@ -242,43 +246,8 @@ fn site_rows(out: &mut String, input: &AssessmentInput) {
     let _ = writeln!(out, "</table>");
 }
 
-/// The page.
-pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check], dynamic: Option<(&RecordSet, &[DynamicCheck])>) -> anyhow::Result<String> {
-    let mut out = String::new();
-    let name = esc(input.name());
-    let code = if input.site.is_ntc() {
-        "NTC 2018 and the Circolare 21 gennaio 2019 n. 7 (§C8.7.1.2.1)"
-    } else {
-        "EN 1998-1 spectra, EN 1998-3 limit states, the Circolare's checks"
-    };
-    let _ = writeln!(
-        out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Assessment: {name}</title><style>{STYLE}</style></head><body>"
-    );
-    let _ = writeln!(out, "<h1>Assessment of {name}: the tower's local mechanism to {code}</h1>");
-    let _ = writeln!(
-        out,
-        "<p class=\"note\">Made by rocking {} from <code>{}</code>. The tower is one rigid block overturning about a base corner at its springing level; the building under it is rigid, so that the springing level moves with the ground when the building does not slide (the floor spectrum of an elastic church is not modelled).</p>",
-        env!("CARGO_PKG_VERSION"),
-        esc(&input.origin().display().to_string())
-    );
-    let mut all: Vec<Check> = checks.to_vec();
-    if let Some((_, d)) = dynamic {
-        all.extend(d.iter().filter_map(|c| c.check));
-    }
-    if let Some(g) = governing(&all) {
-        let _ = writeln!(
-            out,
-            "<p><b>Governing check: {} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
-            g.limit_state,
-            g.method.text(input.file.q).name,
-            if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
-            sig(g.zeta_e, 3),
-            verdict(g)
-        );
-    }
-
-    let _ = writeln!(out, "<h2>1. The tower and its capacity</h2>");
+/// The table of a capacity and its curve's formula.
+fn capacity_table(out: &mut String, capacity: &Capacity) {
     let b = capacity.radius * capacity.alpha.sin();
     let h = capacity.radius * capacity.alpha.cos();
     let _ = writeln!(out, "<table><tr><th>quantity</th><th>meaning</th><th>value</th></tr>");
@@ -307,7 +276,91 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
             rocking_assess::CurveKind::Exact => "exact, a*(θ) = g tan(α − θ)/FC, d*(θ) = R (sin α − sin(α − θ))",
         }
     );
+}
 
+/// The table of a mechanism's checks.
+fn checks_table(out: &mut String, m: &MechanismView<'_>, q: f64) {
+    let _ = writeln!(out, "<table><tr><th>LS</th><th>method</th><th>stops holding when</th><th>demand at a<sub>g</sub></th><th>capacity</th><th>a<sub>g</sub> (g)</th><th>a<sub>g,capacity</sub> (g)</th><th>ζ<sub>E</sub></th><th>verdict</th></tr>");
+    for c in &m.completed() {
+        check_row(out, c, q);
+    }
+    for c in m.dynamic.iter().filter(|c| c.check.is_none()) {
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td>{}</td><td colspan=\"7\" class=\"fails\">could not be completed: {}</td></tr>",
+            c.limit_state,
+            Method::NonlinearDynamic.text(q).name,
+            esc(c.error.as_deref().unwrap_or("a record failed"))
+        );
+    }
+    let _ = writeln!(out, "</table>");
+}
+
+/// The page.
+pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result<String> {
+    let (capacity, checks, dynamic) = (&done.capacity, &done.checks, done.dynamic_part());
+    let mechanisms = done.mechanisms();
+    let stacked = mechanisms.len() > 1;
+    let mut out = String::new();
+    let name = esc(input.name());
+    let code = if input.site.is_ntc() {
+        "NTC 2018 and the Circolare 21 gennaio 2019 n. 7 (§C8.7.1.2.1)"
+    } else {
+        "EN 1998-1 spectra, EN 1998-3 limit states, the Circolare's checks"
+    };
+    let _ = writeln!(
+        out,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Assessment: {name}</title><style>{STYLE}</style></head><body>"
+    );
+    let _ = writeln!(out, "<h1>Assessment of {name}: the tower's local mechanism to {code}</h1>");
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">Made by rocking {} from <code>{}</code>. The tower is one rigid block overturning about a base corner at its springing level; the building under it is rigid, so that the springing level moves with the ground when the building does not slide (the floor spectrum of an elastic church is not modelled).</p>",
+        env!("CARGO_PKG_VERSION"),
+        esc(&input.origin().display().to_string())
+    );
+    if stacked {
+        let _ = writeln!(
+            out,
+            "<p class=\"note\">The tower carries {} block{} ({}). Each is a mechanism of its own: the block and those above it turning as one rigid body about a corner of its base on the block below; the tower's mechanism is the whole stack turning about a corner of the tower's base. The kinematic checks of a block take the ground's spectra for the motion of the shaft's top: exact while the shaft does not rock (the tower and the church are rigid here, and the church sticks), that is up to the tower's activation at a<sub>g</sub> = {} g; beyond it the shaft's rocking changes the demand on the block, which only the dynamic checks (the whole stack run through the model) see. The floor spectrum of an elastic building (the Circolare's ψ(Z) γ for a mechanism above ground) is not applied.</p>",
+            mechanisms.len() - 1,
+            if mechanisms.len() > 2 { "s" } else { "" },
+            mechanisms[1..].iter().map(|m| esc(m.name)).collect::<Vec<_>>().join(", "),
+            sig(checks[0].ag_capacity.value(), 4)
+        );
+    }
+    if let Some((m, g)) = done.governing_mechanism() {
+        let _ = writeln!(
+            out,
+            "<p><b>Governing check: {}{} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
+            if stacked { format!("{}, ", esc(m.name)) } else { String::new() },
+            g.limit_state,
+            g.method.text(input.file.q).name,
+            if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+            sig(g.zeta_e, 3),
+            verdict(&g)
+        );
+    }
+
+    if stacked {
+        let _ = writeln!(out, "<h2>1. The mechanisms and their capacities</h2>");
+        for m in &mechanisms {
+            let what = if m.block == 0 {
+                "the tower with every block on it, one rigid body turning about a corner of the tower's base; M* the whole stack's mass".to_string()
+            } else {
+                format!(
+                    "{} with the blocks above it, one rigid body turning about a corner of its base on {}; M* their mass",
+                    esc(m.name),
+                    esc(mechanisms[m.block - 1].name)
+                )
+            };
+            let _ = writeln!(out, "<h3>{}</h3>\n<p>{what}.</p>", esc(m.name));
+            capacity_table(&mut out, m.capacity);
+        }
+    } else {
+        let _ = writeln!(out, "<h2>1. The tower and its capacity</h2>");
+        capacity_table(&mut out, capacity);
+    }
     let _ = writeln!(out, "<h2>2. The site</h2>");
     let _ = writeln!(
         out,
@@ -317,22 +370,15 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
     site_rows(&mut out, input);
 
     let _ = writeln!(out, "<h2>3. The checks</h2>");
-    let _ = writeln!(out, "<table><tr><th>LS</th><th>method</th><th>stops holding when</th><th>demand at a<sub>g</sub></th><th>capacity</th><th>a<sub>g</sub> (g)</th><th>a<sub>g,capacity</sub> (g)</th><th>ζ<sub>E</sub></th><th>verdict</th></tr>");
-    for c in &all {
-        check_row(&mut out, c, input.file.q);
-    }
-    if let Some((_, d)) = dynamic {
-        for c in d.iter().filter(|c| c.check.is_none()) {
-            let _ = writeln!(
-                out,
-                "<tr><td>{}</td><td>{}</td><td colspan=\"7\" class=\"fails\">could not be completed: {}</td></tr>",
-                c.limit_state,
-                Method::NonlinearDynamic.text(input.file.q).name,
-                esc(c.error.as_deref().unwrap_or("a record failed"))
-            );
+    for m in &mechanisms {
+        if stacked {
+            let _ = writeln!(out, "<h3>{}</h3>", esc(m.name));
+        }
+        checks_table(&mut out, m, input.file.q);
+        if stacked {
+            let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve of {} with its ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(m.capacity, m.checks, &format!(": {}", m.name))?, esc(m.name));
         }
     }
-    let _ = writeln!(out, "</table>");
     let _ = writeln!(
         out,
         "<p class=\"note\">ζ<sub>E</sub> = a<sub>g,capacity</sub> / a<sub>g</sub>; a check holds when ζ<sub>E</sub> ≥ 1. The non-linear kinematic capacity is not taken below the activation's. “≥” marks a capacity beyond the search (2 g, or the last λ).</p>"
@@ -347,7 +393,9 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
         sig(life_safety.ag(), 4),
         sig(soil_factor(&life_safety), 4)
     );
-    let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(capacity, checks)?);
+    if !stacked {
+        let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(capacity, checks, "")?);
+    }
 
     if let Some((set, dynamic)) = dynamic {
         let _ = writeln!(out, "<h2>4. The non-linear dynamic checks</h2>");
@@ -360,12 +408,13 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
             if input.model().building().is_some() { " (the tower, and the church sliding on its foundation)" } else { "" },
             input.file.free_after
         );
-        for d in dynamic {
-            let d_ls = if d.limit_state == input.site.limit_state(Role::LifeSafety) {
-                capacity.d_slv
-            } else {
-                capacity.d_slc
-            };
+        if stacked {
+            let _ = writeln!(
+                out,
+                "<p>Each mechanism reads the same runs: its control point is its own block's rotation θ on the block below, over its own capacity (R, α); a record makes it collapse when its block or one under it overturns. An overturning ends the run, so that the blocks under the one that fell give their largest d* up to then.</p>"
+            );
+        }
+        for (i, d) in dynamic.iter().enumerate() {
             let c = &d.fitted.compatibility;
             let _ = writeln!(out, "<h3>{}</h3>", d.limit_state);
             let _ = writeln!(
@@ -378,29 +427,44 @@ pub fn report_html(input: &AssessmentInput, capacity: &Capacity, checks: &[Check
                 COMPATIBILITY_UPPER
             );
             let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
-            let _ = writeln!(
-                out,
-                "<table><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th><th>max slip of the building (m)</th><th>error</th></tr>"
-            );
-            for ((r, s), resp) in set.records.iter().zip(&d.fitted.scales).zip(&d.at_one.responses) {
-                let (dm, ov, slip, err) = match resp {
-                    Ok(x) => (
-                        x.max_displacement.map_or("—".into(), |v| sig(v, 4)),
-                        x.overturned.to_string(),
-                        x.max_slip.map_or("—".into(), |v| sig(v, 4)),
-                        String::new(),
-                    ),
-                    Err(e) => ("".into(), "".into(), "".into(), esc(e)),
+            let mut head = "<table><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th>".to_string();
+            for m in &mechanisms[1..] {
+                let _ = write!(head, "<th>{0}: max d* (m)</th><th>{0} fell</th>", esc(m.name));
+            }
+            let _ = writeln!(out, "{head}<th>max slip of the building (m)</th><th>error</th></tr>");
+            for (k, ((r, s), resp)) in set.records.iter().zip(&d.fitted.scales).zip(&d.at_one.responses).enumerate() {
+                let cells = |resp: &Result<rocking_assess::RecordResponse, String>| match resp {
+                    Ok(x) => (x.max_displacement.map_or("—".into(), |v| sig(v, 4)), x.overturned.to_string()),
+                    Err(_) => (String::new(), String::new()),
+                };
+                let (dm, ov) = cells(resp);
+                let mut blocks = String::new();
+                for m in &mechanisms[1..] {
+                    let (bd, bo) = cells(&m.dynamic[i].at_one.responses[k]);
+                    let _ = write!(blocks, "<td class=\"n\">{bd}</td><td>{bo}</td>");
+                }
+                let (slip, err) = match resp {
+                    Ok(x) => (x.max_slip.map_or("—".into(), |v| sig(v, 4)), String::new()),
+                    Err(e) => (String::new(), esc(e)),
                 };
                 let _ = writeln!(
                     out,
-                    "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td><td class=\"n\">{slip}</td><td>{err}</td></tr>",
+                    "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td>{blocks}<td class=\"n\">{slip}</td><td>{err}</td></tr>",
                     esc(&r.path),
                     sig(*s, 4)
                 );
             }
             let _ = writeln!(out, "</table>");
-            let _ = writeln!(out, "<figure>{}<figcaption>The response at each λ of the scan and of the bisection; the first λ at which the check fails is the one reported.</figcaption></figure>", lambda_figure(d, d_ls, capacity.d0)?);
+            for m in &mechanisms {
+                let d = &m.dynamic[i];
+                let d_ls = if d.limit_state == input.site.limit_state(Role::LifeSafety) {
+                    m.capacity.d_slv
+                } else {
+                    m.capacity.d_slc
+                };
+                let of = if stacked { format!(" of {}", esc(m.name)) } else { String::new() };
+                let _ = writeln!(out, "<figure>{}<figcaption>The response{of} at each λ of the scan and of the bisection; the first λ at which the check fails is the one reported.</figcaption></figure>", lambda_figure(d, d_ls, m.capacity.d0, if stacked { m.name } else { "" })?);
+            }
         }
     }
     let _ = writeln!(out, "</body></html>");

@@ -1,0 +1,141 @@
+//! The mechanisms of a stack (a belfry on its shaft, a lantern on the belfry)
+//! against numbers worked out by hand from the formulas of the capacity
+//! (Circolare 2019 §C8.7.1.2.1.3–C8.7.1.2.1.7): each block with the blocks
+//! above it is one rigid body turning about a corner of its base, `b` half its
+//! width, `h` the height of their centre of mass above its base, M* their
+//! mass; the tower's mechanism is the whole stack's. The kinematic checks of a
+//! block read the ground's spectra (the shaft's top moves with the ground
+//! while the shaft stands).
+//!
+//! The shaft is the tests' tower (tests/data/tower_on_b.toml: 4 m × 12 m,
+//! 150 t, FC = 1.35, subsoil B).
+
+#![allow(clippy::unwrap_used)]
+
+use approx::assert_relative_eq;
+use rocking_assess::{AgCapacity, Assessment, AssessmentInput, Method};
+use std::f64::consts::PI;
+use std::path::Path;
+
+const G: f64 = 9.81;
+
+/// The tests' tower with `blocks` (TOML `[[block]]` tables) on it.
+fn stacked(blocks: &str) -> AssessmentInput {
+    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
+    let text = file.replacen("[site]\n", &format!("{blocks}\n[site]\n"), 1);
+    assert_ne!(text, file, "tower_on_b.toml has no [site]");
+    AssessmentInput::from_toml_str(&text, Path::new("stack.toml")).unwrap()
+}
+
+const BELFRY_AND_LANTERN: &str = "[[block]]\nname = \"belfry\"\nwidth = 1.6\nheight = 8.0\nmass = 2.0e4\n\
+[[block]]\nname = \"lantern\"\nwidth = 0.8\nheight = 2.0\nmass = 2.0e3\n";
+
+#[test]
+fn each_mechanism_is_its_block_with_those_above_it() {
+    let input = stacked(BELFRY_AND_LANTERN);
+    let done = Assessment::run(&input).unwrap();
+    let names: Vec<&str> = done.mechanisms().iter().map(|m| m.name).collect();
+    assert_eq!(names, ["tower", "belfry", "lantern"]);
+
+    // By hand. Tower: b = 2; masses 150 t at 6 m, 20 t at 12 + 4 = 16 m, 2 t at
+    // 12 + 8 + 1 = 21 m: h = (900 + 320 + 42)/172 = 1262/172 m, M* = 172 t.
+    // Belfry: b = 0.8; 20 t at 4 m, 2 t at 8 + 1 = 9 m: h = (80 + 18)/22 = 98/22 m, M* = 22 t.
+    // Lantern: b = 0.4, h = 1, M* = 2 t.
+    let expected = [(2.0, 1262.0 / 172.0, 1.72e5), (0.8, 98.0 / 22.0, 2.2e4), (0.4, 1.0, 2.0e3)];
+    for (m, (b, h, mass)) in done.mechanisms().iter().zip(expected) {
+        let c = m.capacity;
+        let alpha0 = b / h;
+        let a0 = alpha0 * G / 1.35;
+        // The capacity is computed from R = √(b² + h²) and α = atan2(b, h), and
+        // α0 back from R sin α / R cos α: a few roundings of 1e-16 each.
+        let tol = 1e-14;
+        assert_relative_eq!(c.alpha0, alpha0, max_relative = tol);
+        assert_relative_eq!(c.e_star, 1.0);
+        assert_relative_eq!(c.m_star, mass, max_relative = tol);
+        assert_relative_eq!(c.a0_star, a0, max_relative = tol);
+        assert_relative_eq!(c.d0, b, max_relative = tol);
+        assert_relative_eq!(c.d_slv, 0.4 * b, max_relative = tol);
+        assert_relative_eq!(c.d_slc, 0.6 * b, max_relative = tol);
+        // The linear curve: a*(d_SLV) = 0.6 a0*, a*(d_SLC) = 0.4 a0*.
+        assert_relative_eq!(c.t_slv, 1.68 * PI * (0.4 * b / (0.6 * a0)).sqrt(), max_relative = tol);
+        assert_relative_eq!(c.t_slc, 1.56 * PI * (0.6 * b / (0.4 * a0)).sqrt(), max_relative = tol);
+    }
+    // The belfry's numbers written out: α0 = 0.8 · 22 / 98 = 0.179592, a0* = 1.30503 m/s².
+    assert_relative_eq!(done.blocks[0].capacity.alpha0, 0.179_592, max_relative = 1e-5);
+    assert_relative_eq!(done.blocks[0].capacity.a0_star, 1.305_03, max_relative = 1e-5);
+
+    // Activation on subsoil B, the SLD's F0 = 2.52 (ST = 1): where SS = 1.4 −
+    // 0.4 F0 ag is above its cap of 1.2 (ag < 0.2/(0.4 · 2.52) = 0.198 g),
+    // ag S = 1.2 ag and the capacity is a0*/(1.2 g): the tower's and the
+    // belfry's. The lantern's a0*/(1.2 g) = 0.247 g is beyond: there
+    // ag (1.4 − 1.008 ag) = a0*/g, the least root of the quadratic.
+    for m in done.mechanisms() {
+        let activation = m.checks[0];
+        assert_eq!(activation.method, Method::Activation);
+        let ratio = m.capacity.a0_star / G;
+        let by_hand = if ratio / 1.2 < 0.2 / (0.4 * 2.52) {
+            ratio / 1.2
+        } else {
+            let k = 0.4 * 2.52;
+            (1.4 - (1.4f64 * 1.4 - 4.0 * k * ratio).sqrt()) / (2.0 * k)
+        };
+        assert_eq!(m.name == "lantern", ratio / 1.2 >= 0.198, "{}: the branch", m.name);
+        // The root is bisected to 1e-12 g.
+        assert!(
+            (activation.ag_capacity.value() - by_hand).abs() < 1e-11,
+            "{}: {activation:?} against {by_hand}",
+            m.name
+        );
+        assert_relative_eq!(activation.zeta_e, by_hand / 0.062, max_relative = 1e-9);
+        // The linear kinematic check: q = 2 times it, against the SLV's 0.155 g.
+        assert_relative_eq!(m.checks[1].zeta_e, 2.0 * by_hand / 0.155, max_relative = 1e-9);
+    }
+    // The numbers written out: the belfry's 0.110859 g, the lantern's 0.260499 g.
+    assert_relative_eq!(done.blocks[1].checks[0].ag_capacity.value(), 0.260_499, max_relative = 1e-5);
+    assert_relative_eq!(done.blocks[0].checks[0].ag_capacity.value(), 0.110_859, max_relative = 1e-5);
+
+    // The belfry governs: its SLV linear kinematic check, ζ_E = 2 · 0.110859 / 0.155.
+    let (m, g) = done.governing_mechanism().unwrap();
+    assert_eq!((m.name, g.method), ("belfry", Method::LinearKinematic));
+    assert_relative_eq!(g.zeta_e, 1.430_44, max_relative = 1e-5);
+    assert_eq!(done.governing(), Some(g));
+    let json = done.json(&input);
+    assert_eq!(json["governing"]["mechanism"], "belfry");
+    assert_eq!(json["governing"]["zeta_E"], g.zeta_e);
+    assert_eq!(json["mechanisms"][1]["capacity"]["alpha0"], done.blocks[0].capacity.alpha0);
+    // The top-level capacity and checks are the tower's.
+    assert_eq!(json["capacity"], json["mechanisms"][0]["capacity"]);
+    assert_eq!(json["checks"], json["mechanisms"][0]["checks"]);
+}
+
+/// A belfry as wide as the shaft and 1 m tall, of the shaft's density
+/// (150 t over 4 × 4 × 12 m³: 12.5 t for 4 × 4 × 1 m³), far too stocky to
+/// govern (α0 = 2/0.5 = 4).
+const STOCKY: &str = "[[block]]\nname = \"belfry\"\nwidth = 4.0\nheight = 1.0\nmass = 1.25e4\n";
+
+#[test]
+fn a_belfry_too_stocky_to_govern_leaves_the_towers_verdict() {
+    let input = stacked(STOCKY);
+    let done = Assessment::run(&input).unwrap();
+    // The belfry never activates within the search: its capacities are lower bounds.
+    assert_eq!(done.blocks[0].checks[0].ag_capacity, AgCapacity::AtLeast(2.0));
+    // The verdict is the tower's own governing check, to the last bit.
+    let (m, g) = done.governing_mechanism().unwrap();
+    assert_eq!(m.name, "tower");
+    let tower_only = rocking_assess::governing(&done.checks).copied().unwrap();
+    assert_eq!(g, tower_only);
+    assert_eq!(done.json(&input)["governing"]["mechanism"], "tower");
+
+    // The tower with it is one block 4 m × 13 m of 162.5 t: h = 6.5 m exactly
+    // ((150 · 6 + 12.5 · 12.5)/162.5 = 1056.25/162.5); its checks are those of
+    // that tower given alone, to the rounding of R and α through the stack's
+    // widths (a few 1e-16) moved through the bisected roots (1e-12 g).
+    let combined = rocking_assess::Capacity::new(1.625e5, 2f64.hypot(6.5), 2f64.atan2(6.5), G, 1.35, rocking_assess::CurveKind::Linear).unwrap();
+    assert_relative_eq!(done.capacity.alpha0, 2.0 / 6.5, max_relative = 1e-14);
+    assert_relative_eq!(done.capacity.a0_star, combined.a0_star, max_relative = 1e-14);
+    assert_relative_eq!(done.capacity.t_slc, combined.t_slc, max_relative = 1e-14);
+    let alone = rocking_assess::kinematic_checks(&combined, &input.site, 2.0).unwrap();
+    for (stack, one) in done.checks.iter().zip(&alone) {
+        assert_relative_eq!(stack.zeta_e, one.zeta_e, max_relative = 1e-9);
+    }
+}
