@@ -112,3 +112,73 @@ fn peaks_are_true_extremes() {
     );
     assert!(summary.max_abs_theta() > 0.1 * tower.alpha());
 }
+
+/// Housner's cascade, the impacts of a block released from rest, in closed
+/// form: the `n`-th impact meets the ground at `rⁿ⁻¹ ω1`, `ω1` from energy
+/// (`ω1² = 2p² (cos(α − θ0) − cos α)`), and leaves it at `rⁿ ω1`; between
+/// them the flight rises to the apex energy gives and takes twice the time
+/// from that apex to `θ = 0` (the reference quadrature). The impact times
+/// are the partial sums of that series of flight times, and the block comes
+/// to rest at the finite sum where `rⁿ ω1` falls below the rest threshold.
+/// The run integrates the large flights (rtol 1e-11) and jumps the small
+/// ones in closed form (`cascade.rs`); both are checked here.
+#[test]
+fn the_cascade_is_housners_geometric_series() {
+    let tower = block();
+    let (p, alpha, r) = (tower.frequency_parameter(G), tower.alpha(), tower.restitution());
+    let theta0 = 0.3 * alpha;
+    let (_, log) = run_logged(&fixed(tower), &GroundMotion::None, Initial { theta: theta0, theta_dot: 0.0 }, &tight(10.0));
+    let impacts: Vec<_> = log.events.iter().filter(|e| e.kind == EventKind::Impact).collect();
+    // The apex of a flight leaving θ = 0 at ω: 2 sin(α − ψ/2) sin(ψ/2) = ω² / (2p²)
+    // (energy, as cos(α − ψ) − cos α without the cancellation), by bisection.
+    let apex = |omega: f64| {
+        let c = omega * omega / (2.0 * p * p);
+        let (mut lo, mut hi) = (0.0, alpha);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if 2.0 * (alpha - 0.5 * mid).sin() * (0.5 * mid).sin() < c {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    // A flight's duration: twice the reference quadrature's time from its
+    // apex; below an apex of 1e-6 rad, where that quadrature's difference of
+    // cosines loses digits, the linearised equation's closed form
+    // `(2/λ) artanh(ω / (λ tan α))`, `λ = p √(cos α)`, off by a relative ψm².
+    let lambda = p * alpha.cos().sqrt();
+    let flight = |omega: f64| match apex(omega) {
+        psi if psi > 1e-6 => 2.0 * reference::free_rocking_time_to_impact(p, alpha, psi),
+        _ => 2.0 / lambda * (omega / (lambda * alpha.tan())).atanh(),
+    };
+    let omega1 = (2.0 * p * p * ((alpha - theta0).cos() - alpha.cos())).sqrt();
+    let mut t = reference::free_rocking_time_to_impact(p, alpha, theta0);
+    let mut omega = omega1;
+    for (n, e) in impacts.iter().enumerate() {
+        // The last integrated flights rise some 1e-5 rad, where atol 1e-13
+        // is a relative 1e-8 of θ: the speeds they hand on err by up to
+        // 1.2e-8 (the flights jumped in closed form after them add none).
+        // The times, sums of flights, err by up to 1e-9 s. Both bounds are
+        // 3 times what is seen.
+        assert!((e.time - t).abs() <= 3e-9, "impact {}: at {} s against {t} s", n + 1, e.time);
+        let speed = e.before.theta_dot.abs() / omega - 1.0;
+        assert!(speed.abs() <= 3.5e-8, "impact {}: θ̇⁻ {} against {omega}", n + 1, e.before.theta_dot);
+        omega *= r;
+        if omega >= rocking::REST_ANGULAR_VELOCITY {
+            t += flight(omega);
+        }
+    }
+    // The block stood at the last impact, where rⁿ ω1 fell below the threshold.
+    assert_eq!(impacts.len(), ((rocking::REST_ANGULAR_VELOCITY / omega1).ln() / r.ln()).ceil() as usize);
+    let rest = log.events.iter().find(|e| e.kind == EventKind::Rest).expect("comes to rest");
+    assert!((rest.time - t).abs() <= 3e-9, "rest at {} s against {t} s", rest.time);
+    // In finite time: below the whole series. A flight that leaves at ω and
+    // rises to ψm is decelerated by at least p² sin(α − ψm), so it lasts at
+    // most 2ω / (p² sin(α − ψm)); with the largest apex, the first flight's,
+    // in every term, the sum is geometric.
+    let slowest = p * p * (alpha - apex(r * omega1)).sin();
+    let bound = reference::free_rocking_time_to_impact(p, alpha, theta0) + 2.0 * omega1 * r / (slowest * (1.0 - r));
+    assert!(rest.time < bound, "{} against {bound}", rest.time);
+}
