@@ -923,16 +923,18 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
          Every number is in SI units and written with every digit (the shortest form that reads back to the same value).\n\n",
     );
     let unit = |u: &str| if u.is_empty() { "–".to_string() } else { u.to_string() };
+    // A `|` in a meaning (|f_x|) would end its table cell: written escaped.
+    let cell = |m: &str| m.replace('|', "\\|");
     out.push_str("## `history.csv`\n\nOne row every `simulation.output_dt` seconds.\n\n| column | unit | meaning |\n|---|---|---|\n");
     for c in history {
-        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), c.meaning));
+        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), cell(c.meaning)));
     }
     for p in points {
         out.push_str(&format!(
             "| `pK_{}` | {} | {} (one pair per entry K = 1, 2, … of `tower.points`) |\n",
             p.suffix,
             unit(p.unit),
-            p.meaning
+            cell(p.meaning)
         ));
     }
     for c in HISTORY_BLOCKS {
@@ -940,12 +942,12 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
             "| `<name>_{}` | {} | {} (one pair per `[[block]]`, after the points, named by the block's `name`) |\n",
             c.suffix,
             unit(c.unit),
-            c.meaning
+            cell(c.meaning)
         ));
     }
     out.push_str("\n## `events.csv`\n\nOne row per event (a change of regime), in time order.\n\n| column | unit | meaning |\n|---|---|---|\n");
     for c in events {
-        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), c.meaning));
+        out.push_str(&format!("| `{}` | {} | {} |\n", c.name, unit(c.unit), cell(c.meaning)));
     }
     out.push_str(
         "\n## `summary.json` and `sweep.csv`\n\n`summary.json` holds these fields in this order (a dotted name is a nested object); \
@@ -954,17 +956,17 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
          | field | unit | meaning |\n|---|---|---|\n",
     );
     for f in summary {
-        out.push_str(&format!("| `{}` | {} | {} |\n", f.name, unit(f.unit), f.meaning));
+        out.push_str(&format!("| `{}` | {} | {} |\n", f.name, unit(f.unit), cell(f.meaning)));
     }
     for f in SUMMARY_BLOCKS {
         out.push_str(&format!(
             "| `<name>_{}` | {} | {} (one per `[[block]]`, named by the block's `name`) |\n",
             f.suffix,
             unit(f.unit),
-            f.meaning
+            cell(f.meaning)
         ));
     }
-    out.push_str(&format!("| `{}` | {} | {} |\n", WALL_TIME.name, unit(WALL_TIME.unit), WALL_TIME.meaning));
+    out.push_str(&format!("| `{}` | {} | {} |\n", WALL_TIME.name, unit(WALL_TIME.unit), cell(WALL_TIME.meaning)));
     out.push_str(
         "\nWith `[[block]]` the tower's fields are those of the tower (block 1) in the stack, and `overturned` is true when any block overturned. \
          The derived quantities (`alpha_rad` … `uplift_acceleration_g`) are the tower's alone; `rocking check` prints the ground acceleration \
@@ -1048,6 +1050,21 @@ mod tests {
         assert_eq!(cells.last().map(|(k, _)| k.as_str()), Some("impacts_plus_one"));
         assert_eq!(cells.last().map(|(_, c)| c.clone()), Some(Cell::Int(o.summary.impacts as i64 + 1)));
         assert!(outputs_markdown_of(HISTORY, HISTORY_POINTS, EVENTS, &fields).contains("`impacts_plus_one`"));
+    }
+
+    #[test]
+    fn every_row_of_the_reference_has_its_three_cells() {
+        // A `|` left unescaped in a meaning (|f_x|) splits its cell: a row of
+        // the three-column tables then has more than the four separators of
+        // `| name | unit | meaning |`. The pipes are counted by hand here.
+        let reference = outputs_markdown();
+        let rows: Vec<&str> = reference.lines().filter(|l| l.starts_with("| `")).collect();
+        assert!(rows.len() > 40, "{} rows", rows.len());
+        assert!(reference.contains(r"ratio \|f_x\| / f_y"));
+        for row in rows {
+            let separators = row.char_indices().filter(|&(i, c)| c == '|' && !row[..i].ends_with('\\')).count();
+            assert_eq!(separators, 4, "{row}");
+        }
     }
 
     #[test]
