@@ -348,11 +348,19 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
             let what = if m.block == 0 {
                 "the tower with every block on it, one rigid body turning about a corner of the tower's base; M* the whole stack's mass".to_string()
             } else {
-                format!(
-                    "{} with the blocks above it, one rigid body turning about a corner of its base on {}; M* their mass",
-                    esc(m.name),
+                let below = if m.block == 1 {
+                    "the tower".to_string()
+                } else {
                     esc(mechanisms[m.block - 1].name)
-                )
+                };
+                if m.block + 1 < mechanisms.len() {
+                    format!(
+                        "{} with the blocks above it, one rigid body turning about a corner of its base on {below}; M* their mass",
+                        esc(m.name)
+                    )
+                } else {
+                    format!("{}, a rigid body turning about a corner of its base on {below}; M* its mass", esc(m.name))
+                }
             };
             let _ = writeln!(out, "<h3>{}</h3>\n<p>{what}.</p>", esc(m.name));
             capacity_table(&mut out, m.capacity);
