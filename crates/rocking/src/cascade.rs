@@ -106,7 +106,7 @@ impl Kernel {
     /// digits, and solved by Newton (the left side's derivative is
     /// `sin(α − ψm)`). `None` if the tower would go over (`ψm >= α`).
     pub(crate) fn free_rocking_apex(&self, omega: f64) -> Option<f64> {
-        let p2 = self.k * self.g;
+        let p2 = self.free_rocking_p2();
         let c = omega * omega / (2.0 * p2);
         if c >= 1.0 - self.cos_alpha {
             return None;
@@ -135,7 +135,7 @@ impl Kernel {
     /// (`sinc x = sin x / x`): no difference of nearly equal cosines, no
     /// singularity at the apex, and `2 ω / (p² sin α)` as `ψm → 0`.
     pub(crate) fn free_rocking_flight_time(&self, apex: f64) -> f64 {
-        let p2 = self.k * self.g;
+        let p2 = self.free_rocking_p2();
         let integral: f64 = GAUSS_NODES
             .iter()
             .zip(GAUSS_WEIGHTS)
@@ -163,7 +163,7 @@ impl Kernel {
             apex,
             slip,
             duration: self.free_rocking_flight_time(apex),
-            lambda: (self.k * self.g * self.cos_alpha).sqrt(),
+            lambda: (self.free_rocking_p2() * self.cos_alpha).sqrt(),
             tan_alpha: self.tan_alpha,
         })
     }

@@ -129,6 +129,19 @@ impl Kernel {
         -(g_e * lean.sin_phi * lean.s + acc_pivot * lean.cos_phi) * self.k
     }
 
+    /// `p² = m2 g R / I_O` (1/s²) of (T) in free rocking (no input, `g_e =
+    /// g`, a fixed base or a stuck building): there (T) reads
+    /// `ψ̈ = −p² sin(α − ψ)` for the lean towards the pivot `ψ = s θ`, and
+    /// its first integral, energy, `½ ψ̇² + p² cos(α − ψ)`, is constant. The
+    /// cascade's closed forms (`cascade.rs`: the apex of a flight, its
+    /// duration, the linearised interpolant) and the free motion's verdict
+    /// are written with it; a test holds that energy constant along
+    /// [`Kernel::tower_equation`].
+    #[inline(always)]
+    pub(crate) fn free_rocking_p2(&self) -> f64 {
+        self.k * self.g
+    }
+
     /// A bound of `|θ̈|` from (T) with `Ẍ_p = a_g` (a stuck building or a
     /// fixed base), given upper bounds of `g_e` and `|a_g|`:
     /// `|θ̈| = k |s g_e sin φ + a_g cos φ| <= k sqrt(g_e² + a_g²)` (Cauchy–Schwarz).
@@ -386,6 +399,26 @@ mod tests {
     const ROUNDING: f64 = 1e-14;
 
     proptest! {
+        /// The free rocking energy `½ ψ̇² + p² cos(α − ψ)` of
+        /// [`Kernel::free_rocking_p2`] is the first integral of (T): its
+        /// time derivative along [`Kernel::tower_equation`] (no input,
+        /// `g_e = g`), `ψ̇ (ψ̈ + p² sin(α − ψ))`, is zero to the rounding of
+        /// its two terms, for every lean, speed and pivot. A change of (T)
+        /// that the cascade's closed forms do not follow fails here.
+        #[test]
+        fn free_rocking_energy_is_the_first_integral_of_t(
+            width in 0.2..4.0f64, slender in 1.5..8.0f64, lean in 0.0..1.0f64, speed in -3.0..3.0f64, positive in any::<bool>(),
+        ) {
+            let k = kernel(width, slender * width, 0.5);
+            let s = if positive { 1.0 } else { -1.0 };
+            let psi = lean * k.alpha;
+            let theta_ddot = k.tower_equation(k.lean(s, Jet::new(s * psi, s * speed)), Jet::from(0.0), Jet::from(G));
+            let p2 = k.free_rocking_p2();
+            let (inertial, restoring) = (speed * s * theta_ddot.v, speed * p2 * (k.alpha - psi).sin());
+            prop_assert!((inertial + restoring).abs() <= ROUNDING * (inertial.abs() + restoring.abs() + f64::MIN_POSITIVE), "{inertial} + {restoring}");
+            prop_assert!((p2 - G * k.m2r / k.inertia).abs() <= ROUNDING * p2);
+        }
+
         /// The static friction law's three readings agree: the end of a
         /// slip and the impacts stick (`Kernel::sticks`) exactly where
         /// neither slip condition of the stuck building is positive, so a

@@ -279,7 +279,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             EndState::Overturned => Some(true),
             _ if !over(self.integ.t, self.input.ground) || !over(self.integ.t, self.input.vertical) || self.regime.building != BuildingRegime::Stick => None,
             EndState::Rest => Some(false),
-            _ => Some(free_motion_overturns(k.alpha, (k.k * k.g).sqrt(), k.restitution, theta, theta_dot)),
+            _ => Some(free_motion_overturns(k.alpha, k.free_rocking_p2().sqrt(), k.restitution, theta, theta_dot)),
         };
         (state, verdict)
     }
