@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import csv
+import inspect
 import math
 import threading
-import time
 from pathlib import Path
 from typing import Dict, List
 
@@ -135,42 +135,70 @@ def test_bad_axes_raise_value_error() -> None:
 
 
 def test_the_gil_is_released_during_a_sweep() -> None:
-    """A Python loop in the main thread keeps running while a sweep of about a second runs in another.
+    """Another thread's Python work completes while a sweep runs, told without a clock.
 
-    With the GIL held for the whole sweep, the loop would not advance at all
-    until the sweep ends. One worker thread leaves the other core to the loop.
+    The sweep runs on the main thread (where its Ctrl-C is heard) and cannot end
+    on its own during the test: two cases of 100,000 s of rocking each, some
+    70 s of work on one core (a loaded machine only makes it longer). A second
+    thread repeats a fixed piece of Python work, each time checking the result
+    against its closed form, until it finds the main thread inside the sweep's
+    native call; then it sends SIGINT. Were the GIL held for the whole sweep,
+    the second thread could not run at all until the sweep had ended: no
+    SIGINT would reach it, and it would end with every case done. Released,
+    the sweep stops short, with the note of how many cases it did.
     """
-    s = rocking.Scenario.from_toml(CHURCH)
-    start = time.perf_counter()
-    rocking.sweep(s, {"ground.frequency": [5.0] * 20}, threads=1)
-    per_case = (time.perf_counter() - start) / 20
-    cases = max(20, min(2000, int(1.0 / per_case)))
+    import os
+    import signal
+    import sys
 
-    done = threading.Event()
-    elapsed = []
+    from conftest import Interrupted
 
-    def work() -> None:
-        t0 = time.perf_counter()
-        rocking.sweep(s, {"ground.frequency": np.linspace(3.0, 7.0, cases)}, threads=1)
-        elapsed.append(time.perf_counter() - t0)
-        done.set()
+    d = rocking.Scenario.from_toml(CHURCH).to_dict()
+    d["simulation"]["duration"] = d["ground"]["duration"] = 1.0e5
+    d["simulation"]["output_dt"] = 100.0
+    axes = {"ground.frequency": [4.0, 5.0]}
+    # The line of rocking.sweep that calls the native sweep: while the call
+    # runs, the main thread's innermost Python frame stays on it.
+    lines, first = inspect.getsourcelines(rocking.sweep)
+    calls = [first + i for i, line in enumerate(lines) if "return _sweep_raw(" in line]
+    assert len(calls) == 1, calls
+    main = threading.get_ident()
+    n = 100_000
+    state = threading.Lock()
+    ended = threading.Event()
+    works: List[int] = []
 
-    # The loop's pace alone, for 0.2 s.
-    count, t0 = 0, time.perf_counter()
-    while time.perf_counter() - t0 < 0.2:
-        count += 1
-    alone = count / (time.perf_counter() - t0)
+    def watch() -> None:
+        while not ended.is_set():
+            works.append(sum(i * i for i in range(n)))
+            frame = sys._current_frames().get(main)
+            inside = frame is not None and frame.f_code is rocking.sweep.__code__ and frame.f_lineno == calls[0]
+            with state:
+                if inside and not ended.is_set():
+                    os.kill(os.getpid(), signal.SIGINT)
+                    return
 
-    thread = threading.Thread(target=work)
-    count = 0
-    thread.start()
-    while not done.is_set():
-        count += 1
-    thread.join()
-    assert elapsed and elapsed[0] > 0.3, f"the sweep took {elapsed} s: too short to tell"
-    during = count / elapsed[0]
-    # Held, the GIL would give the loop nothing; released, it keeps a good part of its pace.
-    assert during > 0.2 * alone, f"{count} iterations in {elapsed[0]:.2f} s ({during:.0f}/s) against {alone:.0f}/s alone"
+    def handler(signum, frame):  # type: ignore[no-untyped-def]
+        raise Interrupted
+
+    previous = signal.signal(signal.SIGINT, handler)
+    watcher = threading.Thread(target=watch)
+    try:
+        watcher.start()
+        with pytest.raises(Interrupted) as caught:
+            try:
+                rocking.sweep(d, axes, threads=1)
+            finally:
+                with state:
+                    ended.set()
+    finally:
+        ended.set()
+        watcher.join()
+        signal.signal(signal.SIGINT, previous)
+    # The work done, each time in full: the sum of i² for i < n, (n - 1) n (2n - 1) / 6.
+    assert works and works == [(n - 1) * n * (2 * n - 1) // 6] * len(works)
+    done, total = stopped_after(list(getattr(caught.value, "__notes__", [])), "rocking.sweep")
+    assert total == 2 and done < total, (done, total)
 
 
 def test_ctrl_c_stops_a_sweep() -> None:
