@@ -227,3 +227,37 @@ fn set_duration(path: &str) -> f64 {
     let text = std::fs::read_to_string(records_dir().join(path)).unwrap();
     rocking::Record::parse(&text, None, &rocking::CsvOptions::default(), G).unwrap().duration()
 }
+
+#[test]
+fn an_inventory_names_a_block_that_governs() {
+    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
+    let text = file.replacen("[site]\n", &format!("{BELFRY_AND_LANTERN}\n[site]\n"), 1);
+    // Tower a: the file's stack, where the belfry governs (the first test).
+    // Tower b: a shaft 1.7 m wide (the belfry's 1.6 m fits on it), α0 =
+    // 0.85 · 172/1262 = 0.1158 below the belfry's 0.1796: the tower governs,
+    // SLV linear kinematic, ζ_E = 2 (α0 g/1.35)/(1.2 g)/0.155 =
+    // 2 · 0.1158/1.62/0.155 = 0.923 (activation at 0.0715 g, on the branch
+    // SS = 1.2).
+    let towers = "id,name,lon,lat,tower.width\na,a,14.4,41.0,\nb,b,14.4,41.0,1.7\n";
+    let inventory = rocking_assess::Inventory::new(&text, Path::new("assess.toml"), towers.as_bytes(), Path::new("towers.csv")).unwrap();
+    let header = inventory.header();
+    let at = |row: &rocking_scenario::Row, name: &str| row.cells[header.iter().position(|h| h == name).unwrap()].clone();
+    let (a, b) = (inventory.row(0), inventory.row(1));
+    assert_eq!(at(&a, "governing"), rocking_scenario::Cell::Text("belfry SLV linear_kinematic".into()));
+    let rocking_scenario::Cell::Float(zeta) = at(&a, "zeta_E") else {
+        panic!("no ζ_E")
+    };
+    assert_relative_eq!(zeta, 1.430_44, max_relative = 1e-5);
+    // The check columns are the tower's: its activation, a0*/(1.2 g) with
+    // α0 = 2 · 172/1262.
+    let rocking_scenario::Cell::Float(activation) = at(&a, "SLD_activation_ag_capacity_g") else {
+        panic!("no activation")
+    };
+    assert_relative_eq!(activation, 2.0 * 172.0 / 1262.0 / 1.35 / 1.2, max_relative = 1e-9);
+    assert_eq!(at(&b, "governing"), rocking_scenario::Cell::Text("SLV linear_kinematic".into()));
+    let rocking_scenario::Cell::Float(zeta) = at(&b, "zeta_E") else {
+        panic!("no ζ_E")
+    };
+    assert_relative_eq!(zeta, 2.0 * (0.85 * 172.0 / 1262.0) / 1.62 / 0.155, max_relative = 1e-9);
+    assert_relative_eq!(zeta, 0.923, max_relative = 1e-3);
+}
