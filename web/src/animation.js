@@ -6,6 +6,11 @@
 // exaggeration factors written on the drawing. Dashed: the church where it
 // started and the tower at rest on it. Under the slider, the timeline: the
 // spans where the church slides shaded, the impacts as red ticks.
+//
+// Blocks stacked on the tower (a belfry) are drawn at their poses: each turns
+// by its θ relative to the block below about its pivot corner, their
+// positions sums of rotated vectors (docs/src/model.md, "A stack of blocks"),
+// every rotation exaggerated by the same factor.
 
 /** The exaggeration factors offered; "auto" picks one of them. */
 export const FACTORS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
@@ -14,6 +19,45 @@ export const FACTORS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
 export function autoFactor(peak, target) {
   if (!(peak > 0)) return 1;
   return FACTORS.filter((f) => peak * f <= target).pop() || 1;
+}
+
+/** R(φ) (x, y) with R(φ) = [[cos φ, sin φ], [−sin φ, cos φ]] (the model's rotation). */
+function rotate(phi, x, y) {
+  const c = Math.cos(phi);
+  const s = Math.sin(phi);
+  return [c * x + s * y, -s * x + c * y];
+}
+
+/**
+ * The corners of each block of a stack at its pose, the tower first: blocks
+ * of `widths` and `heights`, each turned by `thetas[k]` relative to the one
+ * below about the corner sgn θ of its base, on a base at `shift`. Block k's
+ * base centre is C_k = C_{k−1} + R(φ_{k−1}) (s_k B_k/2, H_{k−1}) + R(φ_k) (−s_k B_k/2, 0),
+ * with C_0 = (shift, 0), H_0 = 0 and φ_k = θ_1 + … + θ_k; its corners
+ * C_k + R(φ_k) (±B_k/2, 0 or H_k).
+ */
+export function stackCorners(shift, widths, heights, thetas) {
+  const out = [];
+  let [cx, cy] = [shift, 0];
+  let phi = 0;
+  let below = 0;
+  widths.forEach((width, k) => {
+    const half = width / 2;
+    const side = Math.sign(thetas[k]);
+    const [ax, ay] = rotate(phi, side * half, below);
+    phi += thetas[k];
+    const [bx, by] = rotate(phi, -side * half, 0);
+    cx += ax + bx;
+    cy += ay + by;
+    out.push(
+      [[-half, 0], [half, 0], [half, heights[k]], [-half, heights[k]]].map(([x, y]) => {
+        const [rx, ry] = rotate(phi, x, y);
+        return [cx + rx, cy + ry];
+      }),
+    );
+    below = heights[k];
+  });
+  return out;
 }
 
 export class Animation {
@@ -43,14 +87,17 @@ export class Animation {
     const s = result.summary;
     const b = tower && typeof tower.width === "number" ? tower.width / 2 : Math.max(0.5, (s.R_m || 1) * Math.sin(s.alpha_rad || 0.3));
     const h = tower && typeof tower.height === "number" ? tower.height : Math.max(1, (s.R_m || 4) * Math.cos(s.alpha_rad || 0.3) * 2);
-    this.shape = { tower: !!tower, building: !!scenario.building, b, h };
+    // The blocks on the tower as the engine built them (the check's `blocks`).
+    const blocks = (tower && result.derived?.blocks) || [];
+    this.shape = { tower: !!tower, building: !!scenario.building, b, h, blocks };
     this.alpha = s.alpha_rad;
     this.history = result.history;
     this.regimeNames = result.regimeNames;
     this.events = result.events;
     this.slips = result.slips;
     // auto: a peak rotation drawn as about 15°, a peak slip as a quarter of the church's length (8 b).
-    this.auto = { theta: autoFactor(s.max_abs_theta_rad, (15 * Math.PI) / 180), slip: autoFactor(s.max_abs_slip_m, 2 * b) };
+    const peak = Math.max(s.max_abs_theta_rad || 0, ...blocks.map((k) => s[`${k.name}_max_abs_theta_rad`] || 0));
+    this.auto = { theta: autoFactor(peak, (15 * Math.PI) / 180), slip: autoFactor(s.max_abs_slip_m, 2 * b) };
     for (const [key, select] of [["theta", this.theta], ["slip", this.slip]]) select.options[0].text = `auto (${this.auto[key]}×)`;
     const n = this.history.t.length;
     this.slider.max = String(Math.max(0, n - 1));
@@ -127,13 +174,18 @@ export class Animation {
     const fTheta = this.factor("theta");
     const fSlip = this.factor("slip");
     // Past a quarter turn the drawing would fold over: the drawn angle stops at 90°.
-    const theta = Math.max(-Math.PI / 2, Math.min(Math.PI / 2, hist.theta[i] * fTheta));
+    const drawn = (x) => Math.max(-Math.PI / 2, Math.min(Math.PI / 2, x * fTheta));
+    const theta = drawn(hist.theta[i]);
     const u = hist.slip[i] * fSlip;
-    const { b, h } = shape;
+    const { b, h, blocks } = shape;
+    const widths = [2 * b, ...blocks.map((k) => k.width_m)];
+    const heights = [h, ...blocks.map((k) => k.height_m)];
+    const thetas = [theta, ...blocks.map((k) => drawn(hist[`${k.name}_theta`][i]))];
+    const total = heights.reduce((a, x) => a + x, 0);
     // The church: schematic, 4 tower widths long and half the tower's height.
     const church = shape.building ? { w: 8 * b, h: 0.5 * h } : { w: 0, h: 0 };
-    const worldW = Math.max(church.w, 2 * b) + 2 * h;
-    const worldH = church.h + h * 1.15;
+    const worldW = Math.max(church.w, 2 * b) + 2 * total;
+    const worldH = church.h + total * 1.15;
     const scale = Math.min(canvas.width / worldW, (canvas.height - 46) / worldH);
     const X = (x) => canvas.width / 2 + x * scale;
     const Y = (y) => canvas.height - 20 - y * scale;
@@ -154,18 +206,14 @@ export class Animation {
       ctx.lineTo(X(shift + church.w / 2), Y(church.h));
       ctx.lineTo(X(shift + church.w / 2), Y(0));
     };
-    const towerPath = (shift, angle) => {
-      const s = angle > 0 ? 1 : angle < 0 ? -1 : 0;
-      const c = Math.cos(angle);
-      const sn = Math.sin(angle);
-      ctx.beginPath();
-      for (const [x, y] of [[-b, 0], [b, 0], [b, h], [-b, h]]) {
-        const px = s * b + c * (x - s * b) + sn * y;
-        const py = -sn * (x - s * b) + c * y;
-        ctx.lineTo(X(shift + px), Y(base + py));
-      }
-      ctx.closePath();
-    };
+    // The tower and its blocks, each a closed path of its corners.
+    const stackPaths = (shift, angles) =>
+      stackCorners(shift, widths, heights, angles).map((corners) => {
+        const path = new Path2D();
+        for (const [x, y] of corners) path.lineTo(X(x), Y(base + y));
+        path.closePath();
+        return path;
+      });
     if (shape.building) {
       ctx.fillStyle = "#d9c8a9";
       ctx.fillRect(X(u - church.w / 2), Y(church.h), church.w * scale, church.h * scale);
@@ -178,11 +226,12 @@ export class Animation {
       ctx.fill();
     }
     if (shape.tower) {
-      towerPath(u, theta);
-      ctx.fillStyle = "#8c8c8c";
-      ctx.fill();
-      ctx.strokeStyle = "#333";
-      ctx.stroke();
+      stackPaths(u, thetas).forEach((path, k) => {
+        ctx.fillStyle = k ? "#a89a86" : "#8c8c8c";
+        ctx.fill(path);
+        ctx.strokeStyle = "#333";
+        ctx.stroke(path);
+      });
     }
     // The ghosts: the church where it started, the tower at rest on it.
     ctx.strokeStyle = "rgba(30, 60, 140, 0.8)";
@@ -191,10 +240,7 @@ export class Animation {
       churchPath(0);
       ctx.stroke();
     }
-    if (shape.tower) {
-      towerPath(0, 0);
-      ctx.stroke();
-    }
+    if (shape.tower) for (const path of stackPaths(0, thetas.map(() => 0))) ctx.stroke(path);
     ctx.setLineDash([]);
     // Scale bar (true lengths) and the factors.
     const bar = Math.pow(10, Math.floor(Math.log10(worldW / 4)));
@@ -207,8 +253,10 @@ export class Animation {
     canvas.dataset.pxPerM = String(scale);
     canvas.dataset.churchShiftPx = String(u * scale);
     canvas.dataset.drawnThetaRad = String(theta);
+    canvas.dataset.drawnBlockThetaRad = JSON.stringify(thetas.slice(1));
     const regime = this.regimeNames[hist.regime[i]];
-    this.label.textContent = `t = ${hist.t[i].toFixed(3)} s   θ/α = ${fmt(hist.theta[i] / (this.alpha || 1))}   θ = ${hist.theta[i].toExponential(3)} rad   slip = ${hist.slip[i].toExponential(3)} m   ${regime}`;
+    const onTop = blocks.map((k) => `   ${k.name} θ/α = ${fmt(hist[`${k.name}_theta`][i] / k.alpha_rad)}`).join("");
+    this.label.textContent = `t = ${hist.t[i].toFixed(3)} s   θ/α = ${fmt(hist.theta[i] / (this.alpha || 1))}${onTop}   θ = ${hist.theta[i].toExponential(3)} rad   slip = ${hist.slip[i].toExponential(3)} m   ${regime}`;
     this.slider.setAttribute("aria-valuetext", `t = ${hist.t[i].toFixed(3)} s`);
     this.drawTimeline();
   }
@@ -226,7 +274,8 @@ export class Animation {
     ctx.strokeStyle = "#c00";
     ctx.beginPath();
     for (const e of this.events || []) {
-      if (e.kind !== "impact" && e.kind !== "overturn") continue;
+      // The tower's and each block's (`belfry_impact`).
+      if (!/(^|_)(impact|overturn)$/.test(e.kind)) continue;
       const px = Math.round(x(e.t)) + 0.5;
       ctx.moveTo(px, 0);
       ctx.lineTo(px, c.height);

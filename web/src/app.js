@@ -21,6 +21,9 @@ const $ = (id) => document.getElementById(id);
 // crates/rocking-scenario/src/keys.rs), by formFields().
 let FIELDS = {};
 let GROUND_KEYS = {};
+// The fields of each [[block]] on the tower (every number and string of the
+// section, the block's name first), from the same description.
+let BLOCK_FIELDS = [];
 // The keys' descriptions by dotted key.
 let keyInfo = new Map();
 // A choice that decides which of its section's fields apply leads the section.
@@ -45,22 +48,36 @@ function describeKey(key) {
 function formFields(keys) {
   const fields = {};
   const groundKeys = {};
+  const blockFields = [];
   for (const k of keys) {
     if (k.section === null) continue;
+    if (k.section === BLOCK) {
+      if (k.kind === "number" || k.kind === "string") blockFields.push(fieldOf(k));
+      continue;
+    }
     for (const type of k.types || []) (groundKeys[type] ??= []).push(k.name);
     fields[k.section] ??= [];
     if (k.kind === "table") fields[k.key] = k.section;
     if (!k.on_form || !k.sweepable) continue;
-    const f = { k: k.name, u: shownUnit(k), d: k.placeholder };
-    if (k.choices.length) Object.assign(f, { t: "select", o: k.placeholder ? ["", ...k.choices] : k.choices, u: "" });
+    const f = fieldOf(k);
     if (LEADS.includes(k.key)) fields[k.section].unshift(f);
     else fields[k.section].push(f);
   }
   for (const [section, v] of Object.entries(fields)) if (typeof v === "string") fields[section] = fields[v];
-  // A section without a field on the form (`[[block]]`, not yet on the page) has no fieldset.
+  // A section without a field on the form has no fieldset (the blocks have their own, blockSets).
   for (const [section, v] of Object.entries(fields)) if (v.length === 0) delete fields[section];
-  return { fields, groundKeys };
+  return { fields, groundKeys, blockFields };
 }
+
+/** A key's field: its name, unit, placeholder, and choices if it has them. */
+function fieldOf(k) {
+  const f = { k: k.name, u: shownUnit(k), d: k.placeholder };
+  if (k.choices.length) Object.assign(f, { t: "select", o: k.placeholder ? ["", ...k.choices] : k.choices, u: "" });
+  return f;
+}
+
+// The section of the blocks on the tower, a list of tables (`[[block]]`).
+const BLOCK = "block";
 const OPTIONAL_SECTIONS = ["tower", "building", "ground.vertical", "initial"];
 // A vertical motion switched on from the form starts as this one.
 const VERTICAL_START = { type: "harmonic", amplitude: 0.2, frequency: 8.0 };
@@ -157,6 +174,7 @@ function buildForm() {
   const form = $("form");
   form.replaceChildren();
   for (const [section, fields] of Object.entries(FIELDS)) {
+    if (section === BLOCK) continue;
     const set = document.createElement("fieldset");
     const legend = document.createElement("legend");
     const present = tableOf(section) !== undefined;
@@ -184,9 +202,78 @@ function buildForm() {
     }
     form.append(set);
   }
+  if (scenario.tower) form.append(...blockSets());
 }
 
-function field(section, f, value) {
+/** The name of block `i` (from 0) on the tower: its `name`, or the default `block2`, `block3`, … */
+const blockName = (i) => (typeof scenario.block?.[i]?.name === "string" && scenario.block[i].name) || `block${i + 2}`;
+
+/**
+ * The fieldsets of the blocks on the tower, each with its fields (named as
+ * errors name them: `belfry.width`) and a button that removes it, and the
+ * button that adds one on top.
+ */
+function blockSets() {
+  const blocks = Array.isArray(scenario.block) ? scenario.block : [];
+  const sets = blocks.map((table, i) => {
+    const set = document.createElement("fieldset");
+    set.className = "block";
+    const legend = document.createElement("legend");
+    legend.textContent = `[[block]] ${blockName(i)}`;
+    const remove = document.createElement("button");
+    remove.type = "button";
+    remove.textContent = "remove";
+    remove.setAttribute("aria-label", `remove the block ${blockName(i)}`);
+    remove.addEventListener("click", () => {
+      scenario.block.splice(i, 1);
+      if (!scenario.block.length) delete scenario.block;
+      buildForm();
+      recompute();
+    });
+    legend.append(" ", remove);
+    set.append(legend);
+    for (const f of BLOCK_FIELDS) {
+      const input = field(BLOCK, f, table[f.k], { table: () => table, name: f.k === "name" ? `block[${i + 1}].name` : `${blockName(i)}.${f.k}` });
+      set.append(input);
+    }
+    return set;
+  });
+  const add = document.createElement("button");
+  add.type = "button";
+  add.id = "add-block";
+  add.textContent = "add a block on top (a belfry)";
+  add.addEventListener("click", () => {
+    scenario.block = blocks;
+    scenario.block.push(newBlock(blocks));
+    buildForm();
+    recompute();
+  });
+  return [...sets, add];
+}
+
+/**
+ * A block to put on top of `blocks` (on the tower when there is none): 60 %
+ * as wide as the block below, 40 % of the tower's height, a fifth of its
+ * mass (or its density); a start the user then edits.
+ */
+function newBlock(blocks) {
+  const tower = scenario.tower;
+  const below = blocks.length ? blocks[blocks.length - 1] : tower;
+  const round = (x) => Number(x.toPrecision(2));
+  const block = { name: blocks.length ? `block${blocks.length + 2}` : "belfry" };
+  block.width = round(0.6 * (typeof below.width === "number" ? below.width : 4));
+  block.height = round(0.4 * (typeof tower.height === "number" ? tower.height : 12));
+  if (typeof tower.mass === "number") block.mass = round(0.2 * tower.mass);
+  else block.density = typeof tower.density === "number" ? tower.density : 1800;
+  return block;
+}
+
+/**
+ * A key's field: `where` gives the table it edits and the input's name
+ * (default: the section's table, `section.key`).
+ */
+function field(section, f, value, where = {}) {
+  const tableOfField = where.table || (() => ensureTable(section));
   const label = document.createElement("label");
   label.className = "field";
   const name = document.createElement("span");
@@ -203,10 +290,10 @@ function field(section, f, value) {
     input.placeholder = f.d || "";
     input.value = value === undefined ? "" : String(value);
   }
-  input.name = `${section}.${f.k}`;
-  input.id = `field-${section}.${f.k}`;
+  input.name = where.name || `${section}.${f.k}`;
+  input.id = `field-${input.name}`;
   input.addEventListener(f.t === "select" ? "change" : "input", () => {
-    const table = ensureTable(section);
+    const table = tableOfField();
     const v = f.t === "select" ? input.value || undefined : parseValue(input.value);
     if (v === undefined) delete table[f.k];
     else table[f.k] = v;
@@ -225,6 +312,8 @@ function field(section, f, value) {
   if (f.t !== "select") {
     input.addEventListener("change", () => {
       if (section === "building" && f.k === "mu_static") lowerKineticFriction();
+      // A block's new name names its fields.
+      if (section === BLOCK && f.k === "name") buildForm();
       recompute();
     });
   }
@@ -371,7 +460,10 @@ async function computeNow() {
     $("verdict").dataset.endState = result.summary.end_state || "";
     const falls = ["overturned", "beyond_stability_limit"].includes(result.summary.end_state) || result.summary.will_overturn === true;
     $("verdict").classList.toggle("danger", falls);
-    fillTable($("check"), out.derived);
+    // Each block's quantities under its name (blocks.belfry.alpha_rad).
+    const { blocks, ...derived } = out.derived;
+    if (blocks?.length) derived.blocks = Object.fromEntries(blocks.map(({ name, ...rest }) => [name, rest]));
+    fillTable($("check"), derived);
     spectrum.update(scenario, recordNames.ground);
     $("results").classList.remove("stale");
     $("status").textContent = `Computed in ${(result.summary.wall_time_s * 1000).toFixed(1)} ms.`;
@@ -415,13 +507,25 @@ function flatten(obj, prefix = "", out = []) {
 // The summary's fields as the outputs reference describes them, and the derived quantities (name → { unit, meaning }).
 let fieldInfo = new Map();
 
+/** A summary field's description; a block's (`belfry_impacts`) is that of `<name>_impacts`, its name first. */
+function infoOf(key) {
+  const info = fieldInfo.get(key);
+  if (info) return info;
+  const name = (result?.blocks || []).find((b) => key.startsWith(`${b}_`));
+  const block = name && fieldInfo.get(`<name>_${key.slice(name.length + 1)}`);
+  return block && { ...block, block: name };
+}
+
 /** A field's plain-language label: its meaning from the outputs reference, else its key. */
 function labelOf(key) {
-  const meaning = fieldInfo.get(key)?.meaning;
+  const meaning = infoOf(key)?.meaning;
   if (!meaning) return key;
   // The reference's first clause, without its Markdown: "the tower at the end: `rest`, …" → "The tower at the end".
-  const plain = meaning.replace(/`/g, "").split(/[:;(]/)[0].trim();
-  return plain.charAt(0).toUpperCase() + plain.slice(1);
+  // Without a leading condition ("(with [[block]]) the largest …").
+  const plain = meaning.replace(/`/g, "").replace(/^\([^)]*\)\s*/, "").split(/[:;(]/)[0].trim();
+  const label = plain.charAt(0).toUpperCase() + plain.slice(1);
+  const block = infoOf(key).block;
+  return block ? `${block}: ${label}` : label;
 }
 
 function fillTable(table, obj) {
@@ -433,7 +537,7 @@ function fillTable(table, obj) {
     const name = tr.insertCell();
     name.className = "label";
     name.textContent = labelOf(key);
-    const info = fieldInfo.get(key);
+    const info = infoOf(key);
     if (info) name.title = `${key}: ${info.meaning.replace(/`/g, "")}`;
     const code = document.createElement("code");
     code.textContent = key;
@@ -820,7 +924,7 @@ async function main() {
   }
   const keys = (await rocking.keys()).scenario;
   keyInfo = new Map(keys.map((k) => [k.key, k]));
-  ({ fields: FIELDS, groundKeys: GROUND_KEYS } = formFields(keys));
+  ({ fields: FIELDS, groundKeys: GROUND_KEYS, blockFields: BLOCK_FIELDS } = formFields(keys));
   // The axes of the page's sweep are numbers.
   numericKeys = (await rocking.sweepableKeys()).filter((k) => describeKey(k)?.kind === "number");
   fieldInfo = new Map([...(await rocking.derivedFields()), ...(await rocking.summaryFields())].map((f) => [f.name, f]));

@@ -81,6 +81,9 @@ export class Charts {
     this.container = rest;
     this.state = { impacts: [], slips: [] };
     this.plots = null;
+    // The blocks' chart (with [[block]] tables): remade when the blocks change.
+    this.blockPlot = null;
+    this.blockNames = "";
     new ResizeObserver(() => this.resize()).observe(rest);
   }
 
@@ -92,6 +95,49 @@ export class Charts {
     if (!this.plots) return;
     const [w0, w1] = this.widths();
     this.plots.forEach((p, k) => p.width !== (k ? w1 : w0) && p.setSize({ width: k ? w1 : w0, height: p.height }));
+    if (this.blockPlot && this.blockPlot.width !== w1) this.blockPlot.setSize({ width: w1, height: this.blockPlot.height });
+  }
+
+  /**
+   * θ/α of each block on the tower (its rotation relative to the block below
+   * over its own α, from the check's `blocks`), the tower's with them; none
+   * without blocks.
+   */
+  updateBlocks(result) {
+    const blocks = result.derived.blocks || [];
+    const names = blocks.map((b) => b.name).join(",");
+    if (names !== this.blockNames) {
+      this.blockPlot?.destroy();
+      this.blockPlot = null;
+      this.blockNames = names;
+      if (!blocks.length) return;
+      const colours = ["#b5634b", "#7a3d99", "#2a7a2a", "#c06010", "#444"];
+      this.blockPlot = new uPlot(
+        {
+          height: 240,
+          width: this.widths()[1],
+          plugins: [markers(this.state)],
+          legend: { live: false },
+          cursor: { sync: { key: "t" } },
+          title: "θ/α of each block on the block below (each its own α; red lines: the tower's impacts)",
+          scales: { x: { time: false }, y: { range: yRange } },
+          series: [{}, { label: "tower θ/α", stroke: "#1f4e99", width: 1 }, ...blocks.map((b, k) => ({ label: `${b.name} θ/α`, stroke: colours[k % colours.length], width: 1.5 }))],
+          axes: [{ label: "t (s)" }, yAxis("θ/α")],
+        },
+        [[], [], ...blocks.map(() => [])],
+        this.container,
+      );
+    }
+    if (!this.blockPlot) return;
+    const h = result.chart;
+    const alpha = result.summary.alpha_rad;
+    const series = blocks.map((b) => Array.from(h[`${b.name}_theta`], (x) => x / b.alpha_rad));
+    this.blockPlot.setData([Array.from(h.t), Array.from(h.theta, (x) => (alpha ? x / alpha : null)), ...series]);
+    const s = result.summary;
+    const peaks = blocks.map((b) => `${b.name} peak ${tickText(s[`${b.name}_max_theta_over_alpha`] ?? 0)}, ${s[`${b.name}_impacts`] ?? 0} impacts`).join("; ");
+    const canvas = this.blockPlot.root.querySelector("canvas");
+    canvas.setAttribute("role", "img");
+    canvas.setAttribute("aria-label", `θ/α of each block on the block below against time: ${peaks}.`);
   }
 
   create() {
@@ -160,5 +206,6 @@ export class Charts {
       canvas.setAttribute("role", "img");
       canvas.setAttribute("aria-label", text[k]);
     });
+    this.updateBlocks(result);
   }
 }

@@ -86,7 +86,7 @@ function run(text) {
   const derived = JSON.parse(check(text));
   const output = runColumns(text);
   try {
-    const { summary, events, event_columns, order, columns, text: textColumns } = JSON.parse(output.meta());
+    const { summary, events, event_columns, order, columns, text: textColumns, blocks } = JSON.parse(output.meta());
     const history = {};
     let regimeNames = [];
     for (const name of order) {
@@ -107,7 +107,7 @@ function run(text) {
     }
     summary.wall_time_s = (performance.now() - start) / 1000;
     const h = history;
-    const names = ["theta", "ground_acc", "slip", "top_dx", ...(h.ground_acc_v ? ["ground_acc_v"] : [])];
+    const names = ["theta", "ground_acc", "slip", "top_dx", ...(h.ground_acc_v ? ["ground_acc_v"] : []), ...blocks.map((b) => `${b}_theta`)];
     const { t, series } = thin(h.t, names.map((c) => h[c]), CHART_BUCKETS);
     const chart = { t };
     names.forEach((c, j) => (chart[c] = series[j]));
@@ -123,7 +123,7 @@ function run(text) {
     const frames = {};
     for (const [name, column] of Object.entries(history)) frames[name] = stride > 1 ? column.constructor.from(picks, (i) => column[i]) : column.slice();
     const transfer = [...Object.values(frames).map((c) => c.buffer), t.buffer, ...series.map((s) => s.buffer)];
-    const message = { summary, derived, history: frames, rows, stride, regimeNames, events, eventColumns: event_columns, chart, slips };
+    const message = { summary, derived, history: frames, rows, stride, regimeNames, events, eventColumns: event_columns, chart, slips, blocks };
     return { message, transfer };
   } finally {
     output.free();

@@ -166,14 +166,16 @@ pub fn keys() -> String {
 
 /// The summary's fields as the outputs reference describes them: the JSON
 /// text of `[{ name, unit, meaning }, …]`, in the order of `summary.json`
-/// (dotted names for nested ones), `wall_time_s` last. The page labels its
-/// summary with them.
+/// (dotted names for nested ones), each block's as `<name>_max_abs_theta_rad`
+/// …, `wall_time_s` last. The page labels its summary with them.
 pub fn summary_fields_json() -> String {
-    use rocking_scenario::columns::{SUMMARY, WALL_TIME};
+    use rocking_scenario::columns::{SUMMARY, SUMMARY_BLOCKS, WALL_TIME};
+    let field = |name: String, unit: &str, meaning: &str| json!({ "name": name, "unit": unit, "meaning": meaning });
     let fields: Vec<Value> = SUMMARY
         .iter()
-        .chain([&WALL_TIME])
-        .map(|f| json!({ "name": f.name, "unit": f.unit, "meaning": f.meaning }))
+        .map(|f| field(f.name.to_string(), f.unit, f.meaning))
+        .chain(SUMMARY_BLOCKS.iter().map(|f| field(format!("<name>_{}", f.suffix), f.unit, f.meaning)))
+        .chain([field(WALL_TIME.name.to_string(), WALL_TIME.unit, WALL_TIME.meaning)])
         .collect();
     Value::Array(fields).to_string()
 }

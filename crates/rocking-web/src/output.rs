@@ -8,7 +8,7 @@
 //! [`rocking_scenario::summary_json`] as is.
 
 use rocking::NormalForce;
-use rocking_scenario::columns::{history_header, Read, Value as CellValue, DERIVED, EVENTS, HISTORY, HISTORY_POINTS};
+use rocking_scenario::columns::{event_kind, history_header, Read, Value as CellValue, DERIVED, EVENTS, HISTORY, HISTORY_BLOCKS, HISTORY_POINTS, KIND};
 use rocking_scenario::{record_format_name, summary_json, Case, Cell, Outcome};
 use serde_json::{json, Map, Value};
 
@@ -30,7 +30,8 @@ pub fn outcome_json(outcome: &Outcome) -> Value {
 
 /// The summary, the events and the history's layout as JSON (`order`: every
 /// column in `history.csv` order; `columns`: the numeric ones, in that order;
-/// `text`: the text columns by name), and the numeric columns themselves,
+/// `text`: the text columns by name; `blocks`: the names of the blocks on the
+/// tower), and the numeric columns themselves,
 /// handed to JavaScript as `Float64Array`s (copying 10^5 numbers is far faster
 /// than printing and parsing them).
 pub fn outcome_parts(outcome: &Outcome) -> (Value, Vec<Vec<f64>>) {
@@ -42,6 +43,7 @@ pub fn outcome_parts(outcome: &Outcome) -> (Value, Vec<Vec<f64>>) {
         "order": columns.order,
         "columns": columns.names,
         "text": columns.text.into_iter().collect::<Map<String, Value>>(),
+        "blocks": outcome.layout.blocks.iter().collect::<Vec<_>>(),
     });
     (meta, columns.values)
 }
@@ -84,11 +86,17 @@ impl Columns {
                     .push(history.point_values.iter().map(|row| row.get(k).map_or(f64::NAN, p.read)).collect());
             }
         }
+        for (i, name) in layout.blocks.iter().enumerate() {
+            for c in HISTORY_BLOCKS {
+                columns.names.push(format!("{name}_{}", c.suffix));
+                columns.values.push(samples.iter().map(|s| (c.read)(s, i + 1)).collect());
+            }
+        }
         columns
     }
 }
 
-/// The events as rows with the `events.csv` columns.
+/// The events as rows with the `events.csv` columns (a block's `kind` named by it: `belfry_uplift`).
 fn events(outcome: &Outcome) -> Value {
     let columns: Vec<_> = EVENTS.iter().filter(|c| (c.present)(&outcome.layout)).collect();
     outcome
@@ -99,6 +107,7 @@ fn events(outcome: &Outcome) -> Value {
                 .iter()
                 .map(|c| {
                     let value = match c.read.value(e) {
+                        _ if c.name == KIND => json!(event_kind(&outcome.layout, e)),
                         CellValue::Number(x) => json!(x),
                         CellValue::Text(t) => json!(t),
                     };
@@ -145,6 +154,7 @@ pub fn check(case: &Case) -> Value {
         out.insert(q.name.into(), json!((q.value)(model)));
     }
     out.insert("points".into(), json!(case.points));
+    out.insert("blocks".into(), blocks(case));
     out.insert("building".into(), json!(building));
     out.insert(
         "ground".into(),
@@ -161,6 +171,31 @@ pub fn check(case: &Case) -> Value {
         }),
     );
     Value::Object(out)
+}
+
+/// The blocks on the tower, the lowest first, as the engine holds them:
+/// `[{ name, width_m, height_m, mass_kg, inertia_centre_kg_m2, alpha_rad,
+/// uplift_acceleration_g }, …]`, the last the ground acceleration that lifts
+/// the block off the one below from rest (what `rocking check` prints); empty
+/// without blocks.
+fn blocks(case: &Case) -> Value {
+    let Some(stack) = case.model.stack() else { return json!([]) };
+    let g = case.model.gravity();
+    let thresholds = stack.uplift_thresholds();
+    let above = stack.blocks().iter().zip(thresholds.iter()).enumerate().skip(1);
+    above
+        .map(|(k, (b, threshold))| {
+            json!({
+                "name": case.blocks.name(k),
+                "width_m": b.width(),
+                "height_m": b.height(),
+                "mass_kg": b.mass(),
+                "inertia_centre_kg_m2": b.inertia_centre(),
+                "alpha_rad": b.alpha(),
+                "uplift_acceleration_g": threshold / g,
+            })
+        })
+        .collect()
 }
 
 /// A sweep cell as JSON (`null` for an empty one).

@@ -1,0 +1,179 @@
+"""Blocks stacked on the tower on the page: `window.rocking.run` gives the
+command's numbers for a belfry on the church, the form adds and removes a
+block, the run shows its summary and θ/α, and the animation draws every block
+at its pose (checked against the pose worked out about each pivot)."""
+
+import csv
+import json
+import math
+import subprocess
+import urllib.parse
+
+from conftest import BIN, OUT, computed, open_page
+from playwright.sync_api import expect
+
+# The bell tower on its church with a belfry 2 m × 5 m of 30 t on it, under
+# 0.6 g at 2 Hz for 4 s: the belfry lifts (tan α = 0.4), rocks and lands.
+BELFRY_TOML = """\
+name = "belfry-on-church"
+
+[tower]
+width = 4.0
+height = 12.0
+mass = 1.5e5
+
+[building]
+mass = 2.0e6
+mu_static = 1.25
+mu_kinetic = 1.0
+
+[[block]]
+name = "belfry"
+width = 2.0
+height = 5.0
+mass = 3.0e4
+
+[ground]
+type = "harmonic"
+amplitude = 0.6
+frequency = 2.0
+duration = 4.0
+
+[simulation]
+duration = 5.0
+output_dt = 0.01
+"""
+
+BELFRY = {
+    "name": "belfry-on-church",
+    "tower": {"width": 4.0, "height": 12.0, "mass": 1.5e5},
+    "building": {"mass": 2.0e6, "mu_static": 1.25, "mu_kinetic": 1.0},
+    "block": [{"name": "belfry", "width": 2.0, "height": 5.0, "mass": 3.0e4}],
+    "ground": {"type": "harmonic", "amplitude": 0.6, "frequency": 2.0, "duration": 4.0},
+    "simulation": {"duration": 5.0, "output_dt": 0.01},
+}
+
+
+def test_a_belfry_on_the_page_equals_the_command(page, tmp_path):
+    """summary.json, every history column and every event of the command,
+    equal to the last bit: the same engine (libm's functions on both targets),
+    and numbers printed in their shortest form that reads back to the same bits
+    (JSON on the page, ryu in the CSV files)."""
+    path = tmp_path / "belfry.toml"
+    path.write_text(BELFRY_TOML)
+    out = tmp_path / "out"
+    subprocess.run([BIN, "run", str(path), "--out", str(out)], check=True, capture_output=True)
+    summary = json.loads((out / "summary.json").read_text())
+    with open(out / "history.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(out / "events.csv", newline="") as f:
+        events = list(csv.DictReader(f))
+
+    got = page.evaluate("s => window.rocking.run(s)", BELFRY)
+    del summary["wall_time_s"], got["summary"]["wall_time_s"]
+    assert got["summary"] == summary
+    assert summary["belfry_impacts"] > 0 and summary["belfry_max_abs_theta_rad"] > 0
+    assert list(got["history"]) == list(rows[0])
+    assert list(got["history"])[-2:] == ["belfry_theta", "belfry_theta_dot"]
+    for name, column in got["history"].items():
+        want = [row[name] if name == "regime" else float(row[name]) for row in rows]
+        assert column == want, name
+    assert len(got["events"]) == len(events)
+    for g, w in zip(got["events"], events):
+        assert list(g) == list(w)
+        assert g == {k: v if k in ("kind", "regime") else float(v) for k, v in w.items()}
+    assert any(e["kind"] == "belfry_uplift" for e in got["events"])
+    # The check gives the belfry's α = atan(2/5) and its uplift at g tan α = 0.4 g (by hand).
+    check = page.evaluate("s => window.rocking.check(s)", BELFRY)
+    [belfry] = check["blocks"]
+    assert belfry["name"] == "belfry" and math.isclose(belfry["alpha_rad"], math.atan(0.4), rel_tol=1e-15)
+    # The threshold is the engine's moment balance at rest: g tan α to a few roundings.
+    assert math.isclose(belfry["uplift_acceleration_g"], 0.4, rel_tol=1e-14)
+
+
+def rotate(phi, x, y):
+    """R(φ) (x, y), the model's rotation: R = [[cos φ, sin φ], [−sin φ, cos φ]]."""
+    return (math.cos(phi) * x + math.sin(phi) * y, -math.sin(phi) * x + math.cos(phi) * y)
+
+
+def test_the_animation_puts_each_block_at_its_pose(page):
+    """stackCorners against the pose worked out about each pivot: the tower
+    (4 m × 12 m) turned by 0.1 rad about its corner (+2, 0); the belfry
+    (2 m × 5 m) turned by −0.2 rad relative to it about its own corner s = −1,
+    which sits at the tower's top point (−1, 12), the belfry's corners
+    pivot + R(φ) ((x, y) − (−1, 0)) with φ = 0.1 − 0.2."""
+    got = page.evaluate(
+        "async () => (await import('./src/animation.js')).stackCorners(0.5, [4, 2], [12, 5], [0.1, -0.2])"
+    )
+    tower_pivot = (0.5 + 2.0, 0.0)
+    moved = lambda pivot, phi, px, x, y: tuple(p + r for p, r in zip(pivot, rotate(phi, x - px, y)))
+    tower = [moved(tower_pivot, 0.1, 2.0, x, y) for x, y in [(-2, 0), (2, 0), (2, 12), (-2, 12)]]
+    belfry_pivot = moved(tower_pivot, 0.1, 2.0, -1.0, 12.0)
+    belfry = [moved(belfry_pivot, -0.1, -1.0, x, y) for x, y in [(-1, 0), (1, 0), (1, 5), (-1, 5)]]
+    for got_block, want_block in zip(got, [tower, belfry]):
+        for g, w in zip(got_block, want_block):
+            # A few roundings of numbers of order 10 m.
+            assert math.dist(g, w) < 1e-13, (g, w)
+    # At rest every block stands centred on the one below.
+    rest = page.evaluate("async () => (await import('./src/animation.js')).stackCorners(0, [4, 2], [12, 5], [0, 0])")
+    assert rest[1] == [[-1, 12], [1, 12], [1, 17], [-1, 17]]
+
+
+def test_a_belfry_added_and_removed_in_the_form(browser, server):
+    """The form's button puts a block on the tower; the run shows its summary
+    fields, its θ/α chart and draws it; the link carries it; removing it
+    brings back the tower alone."""
+    page = open_page(browser, server)
+    page.click("#add-block")
+    computed(page)
+    # The added block: 60 % of the tower's width, 40 % of its height, a fifth of its mass.
+    assert page.input_value('input[name="belfry.width"]') == "2.4"
+    assert page.input_value('input[name="belfry.height"]') == "4.8"
+    page.fill('input[name="belfry.width"]', "2")
+    page.fill('input[name="belfry.height"]', "5")
+    computed(page)
+    expect(page.locator('#summary tr[data-key="belfry_max_abs_theta_rad"]')).to_have_count(1)
+    expect(page.locator('#summary tr[data-key="belfry_max_abs_theta_rad"] td.label')).to_contain_text("belfry: Largest rotation")
+    # α = atan(2/5) in the derived quantities (by hand).
+    alpha = json.loads(page.locator('#check tr[data-key="blocks.belfry.alpha_rad"] td.num').get_attribute("data-value"))
+    assert math.isclose(alpha, math.atan(0.4), rel_tol=1e-15)
+    assert '"block":[{"name":"belfry"' in page.evaluate("decodeURIComponent(location.hash)")
+    expect(page.locator("#charts canvas[aria-label^='θ/α of each block']")).to_have_count(1)
+    # A wrong width is named at its field.
+    page.fill('input[name="belfry.width"]', "9")
+    page.locator('input[name="belfry.width"]').blur()
+    expect(page.locator("#error")).to_contain_text("belfry.width")
+    expect(page.locator('input[name="belfry.width"]')).to_have_attribute("aria-invalid", "true")
+    page.click("button[aria-label='remove the block belfry']")
+    computed(page)
+    expect(page.locator('#summary tr[data-key="belfry_max_abs_theta_rad"]')).to_have_count(0)
+    expect(page.locator("#charts canvas[aria-label^='θ/α of each block']")).to_have_count(0)
+    assert '"block"' not in page.evaluate("decodeURIComponent(location.hash)")
+    page.close()
+
+
+def test_the_belfrys_animation_and_screenshot(browser, server):
+    """The belfry scenario from a link: the animation draws the belfry at
+    its θ of the history (times the shown factor) at the instant of its
+    largest sampled rotation; its summary rows labelled in words. Screenshots:
+    target/web-tests/blocks.png (the results), blocks-page.png (the view)."""
+    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(BELFRY)))
+    out = page.evaluate("s => window.rocking.run(s)", BELFRY)
+    theta = out["history"]["belfry_theta"]
+    i = max(range(len(theta)), key=lambda k: abs(theta[k]))
+    page.locator("#time").fill(str(i))
+    canvas = page.locator("#tower-canvas")
+    factor = float(page.locator("#exaggerate-theta option").first.text_content().split("(")[1].split("×")[0])
+    drawn = json.loads(canvas.get_attribute("data-drawn-block-theta-rad"))
+    # The history's θ times the factor, clamped at a quarter turn.
+    assert drawn == [max(-math.pi / 2, min(math.pi / 2, theta[i] * factor))]
+    expect(page.locator("#time-label")).to_contain_text("belfry θ/α")
+    for key, label in [("max_seat_impulse_ratio", "The largest ratio"), ("belfry_impacts", "belfry: Impacts of the block")]:
+        expect(page.locator(f'#summary tr[data-key="{key}"] td.label')).to_contain_text(label)
+    OUT.mkdir(parents=True, exist_ok=True)
+    page.locator("#results").screenshot(path=str(OUT / "blocks.png"))
+    # Tall enough for the block's fields at the end of the form.
+    page.set_viewport_size({"width": 1280, "height": 1250})
+    page.screenshot(path=str(OUT / "blocks-page.png"))
+    assert page.errors == [], page.errors
+    page.close()
