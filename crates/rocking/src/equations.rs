@@ -351,6 +351,16 @@ impl Kernel {
         )
     }
 
+    /// The top centre `(0, H)`'s kinematics: [`Kernel::point_kinematics`]
+    /// of that point, the one the summary's peaks (`max_top_displacement`,
+    /// `max_top_abs_acceleration`), the screening's watched top and the
+    /// history's `top_dx`, `top_abs_acc` all read. `s`: the pivot sign of a
+    /// rocking tower (`None` at rest).
+    #[inline(always)]
+    pub(crate) fn top_kinematics<T: Real>(&self, s: Option<f64>, rotation: (T, T), theta_dot: T, theta_ddot: T, acc_pivot: T) -> (T, T) {
+        self.point_kinematics(s, (0.0, self.height), rotation, theta_dot, theta_ddot, acc_pivot)
+    }
+
     /// Point kinematics (paper eqs. 7–13 with docs/src/model.md's rotation): the
     /// horizontal displacement relative to the building and the absolute
     /// horizontal acceleration of the tower point `(x, y)` (tower coordinates,
@@ -397,6 +407,29 @@ mod tests {
     /// on numbers of the same size, each within half an ulp; the screening
     /// pads every bound by a relative 1e-9 on top.
     const ROUNDING: f64 = 1e-14;
+
+    /// The top centre by hand: about the pivot `(s b, 0)` it sits at
+    /// `(−s b, H)`, turned by θ, so it moves by `H sin θ + s b (1 − cos θ)`
+    /// and accelerates by `Ẍ_p + θ̈ (H cos θ + s b sin θ) − θ̇² (H sin θ −
+    /// s b cos θ)`; at rest, with the ground. To rounding (a few ulps of
+    /// the largest term).
+    #[test]
+    fn top_kinematics_by_hand() {
+        let k = kernel(2.0, 6.0, 0.5);
+        let (b, h) = (1.0, 6.0);
+        for (s, theta) in [(1.0, 0.3), (-1.0, -0.2), (1.0, 1e-6)] {
+            let (theta_dot, theta_ddot, acc_pivot) = (0.7, -1.3, 2.1);
+            let (sin_t, cos_t) = (f64::sin(theta), f64::cos(theta));
+            let (dx, acc) = k.top_kinematics(Some(s), (sin_t, cos_t), theta_dot, theta_ddot, acc_pivot);
+            let dx_hand = h * sin_t + s * b * (1.0 - cos_t);
+            let acc_hand = acc_pivot + theta_ddot * (h * cos_t + s * b * sin_t) - theta_dot * theta_dot * (h * sin_t - s * b * cos_t);
+            assert!(
+                (dx - dx_hand).abs() <= 1e-14 * h && (acc - acc_hand).abs() <= 1e-14 * 10.0,
+                "{dx} {dx_hand} {acc} {acc_hand}"
+            );
+        }
+        assert_eq!(k.top_kinematics(None, (0.0, 1.0), 0.0, 0.0, 2.5), (0.0, 2.5));
+    }
 
     proptest! {
         /// The free rocking energy `½ ψ̇² + p² cos(α − ψ)` of

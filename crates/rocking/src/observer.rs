@@ -156,14 +156,9 @@ impl Step<'_> {
             TowerRegime::Rest => None,
             TowerRegime::Rocking(p) => Some(p),
         };
-        let (top_dx, top_abs_acc) = self.kernel.point_kinematics(
-            pivot.map(Pivot::sign),
-            (0.0, self.kernel.height),
-            crate::trig::sin_cos(y.theta),
-            y.theta_dot,
-            acc.theta,
-            a_g + acc.slip,
-        );
+        let (top_dx, top_abs_acc) = self
+            .kernel
+            .top_kinematics(pivot.map(Pivot::sign), crate::trig::sin_cos(y.theta), y.theta_dot, acc.theta, a_g + acc.slip);
         Sample {
             t,
             ground_acc: a_g,

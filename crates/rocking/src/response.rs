@@ -285,7 +285,7 @@ impl Tracker {
         let acc = kernel.accelerations_leaning(regime.building, lean, a_g, g_e, y.theta_dot);
         let acc_pivot = a_g + acc.slip;
         let rotation = lean.map_or((0.0, 1.0), |lean| kernel.rotation(lean));
-        let top = kernel.point_kinematics(s, (0.0, kernel.height), rotation, y.theta_dot, acc.theta, acc_pivot).1;
+        let top = kernel.top_kinematics(s, rotation, y.theta_dot, acc.theta, acc_pivot).1;
         let (fx, fy) = kernel.pivot_reactions(lean, y.theta_dot, acc.theta, acc_pivot, g_e);
         self.top(top);
         self.pivot(fx, fy);
@@ -316,7 +316,7 @@ impl Tracker {
         // for |θ| < π/2, so its peaks are at the extremes of θ.
         let top = |theta: f64| {
             let s = (theta != 0.0).then(|| theta.signum());
-            kernel.point_kinematics(s, (0.0, kernel.height), crate::trig::sin_cos(theta), 0.0, 0.0, 0.0).0
+            kernel.top_kinematics(s, crate::trig::sin_cos(theta), 0.0, 0.0, 0.0).0
         };
         s.max_top_displacement = top(s.theta_range.0).abs().max(top(s.theta_range.1).abs());
         self.summary

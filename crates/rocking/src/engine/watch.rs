@@ -82,9 +82,7 @@ pub(super) fn watched(
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
     }
-    w.top = kernel
-        .point_kinematics(Some(s), (0.0, kernel.height), kernel.rotation(lean), yj.theta_dot, theta_ddot, acc_pivot)
-        .1;
+    w.top = kernel.top_kinematics(Some(s), kernel.rotation(lean), yj.theta_dot, theta_ddot, acc_pivot).1;
     (w.fx, w.fy) = kernel.pivot_reactions(Some(lean), yj.theta_dot, theta_ddot, acc_pivot, g_e);
     w
 }
