@@ -333,3 +333,40 @@ fn a_csv_record_set_takes_units_and_dt() {
 pub fn files_in(folder: &std::path::Path) -> usize {
     std::fs::read_dir(folder).map_or(0, |entries| entries.count())
 }
+
+/// A belfry 1.6 m × 8 m of 20 t on the tests' tower: α0 = 0.8/4 = 0.2 against
+/// the stack's 2/(1220/170) = 0.2787, so that the belfry governs, SLV linear
+/// kinematic, ζ_E = 2 (0.2/1.35/1.2)/0.155 = 1.593; the terminal, the JSON and
+/// the report say so, each mechanism with its own section.
+#[test]
+fn a_belfry_is_a_mechanism_of_its_own() {
+    let dir = tempdir();
+    let text = edited(
+        &tower_on_b(),
+        "[site]\n",
+        "[[block]]\nname = \"belfry\"\nwidth = 1.6\nheight = 8.0\nmass = 2.0e4\n\n[site]\n",
+    );
+    let file = write(dir.path(), "assess.toml", &text);
+    let out = dir.path().join("out");
+    let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    assert!(r.stdout.contains("governing: belfry SLV linear_kinematic, ζ_E = 1.59"), "{}", r.stdout);
+    let json: Value = serde_json::from_str(&read(&out.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(json["governing"]["mechanism"], "belfry");
+    // The activation capacity on the branch SS = 1.2 is a0*/(1.2 g): the ratio is 2 · 0.2 / (1.35 · 1.2 · 0.155).
+    let expected = 2.0 * 0.2 / (1.35 * 1.2 * 0.155);
+    assert!((number(&json, &["governing", "zeta_E"]) - expected).abs() < 1e-9 * expected);
+    assert!((number(&json["mechanisms"][0]["capacity"], &["alpha0"]) - 2.0 * 170.0 / 1220.0).abs() < 1e-14);
+    assert!((number(&json["mechanisms"][1]["capacity"], &["m_star_kg"]) - 2.0e4).abs() < 1e-9);
+    let report = read(&out.join("report.html"));
+    for part in [
+        "<h2>1. The mechanisms and their capacities</h2>",
+        "<h3>tower</h3>",
+        "<h3>belfry</h3>",
+        "Capacity curve in the ADRS plane: belfry",
+        "Governing check: belfry, SLV",
+        "the ground's spectra for the motion of the shaft's top",
+    ] {
+        assert!(report.contains(part), "no {part:?} in the report");
+    }
+}
