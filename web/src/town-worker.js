@@ -11,7 +11,7 @@ onmessage = async ({ data }) => {
   try {
     await ready;
     const start = performance.now();
-    const town = new WebTown(data.assess, data.origin, data.towers, data.towersName, data.grid ?? undefined, JSON.stringify(data.records));
+    const town = new WebTown(data.assess, data.origin, data.towers, data.towersName, data.grid ?? undefined, data.gridName ?? undefined, JSON.stringify(data.records));
     const total = town.length;
     const step = data.records.length > 0 ? 1 : Math.max(1, total);
     let done = 0;

@@ -1,8 +1,8 @@
 // The town tab: every bell tower of a towers' CSV (one row each: id, name,
 // lon, lat, and any key of the assessment file as a column) assessed as
 // `rocking inventory` assesses them, from one of the examples' assessment
-// files with its hazard grid (each tower's site from the grid at its lon,
-// lat). The kinematic checks run as soon as the file is chosen; with record
+// files with its hazard grid, or from the user's own with the grid file it
+// names (each tower's site from the grid at its lon, lat). The kinematic checks run as soon as the file is chosen; with record
 // files chosen, the dynamic checks run in the worker, a tower at a time, with
 // a progress bar. The map (lon/lat, coloured by the governing ζ_E) and the
 // ranking (least ζ_E first) show the rows of the command's inventory.csv,
@@ -29,6 +29,8 @@ export class TownView {
     this.id = 0;
     this.towers = null; // { name, text } of the towers' CSV
     this.records = []; // [{ name, text }] of the record set
+    this.own = null; // { name, text } of the user's own assessment file, in place of an example's
+    this.grid = null; // { name, text } of the hazard grid the user's own file names
     this.result = null;
   }
 
@@ -49,6 +51,9 @@ export class TownView {
       a check fails when ζ<sub>E</sub> &lt; 1, and the governing check is the one of least ζ<sub>E</sub>.</p>
       <div class="row">
         <label>Assessment file <select id="town-assess">${withGrid.map((a, i) => `<option value="${i}"${i === first ? " selected" : ""}>${esc(a.path)}</option>`).join("")}</select></label>
+        or your own <input type="file" id="town-assess-file" accept=".toml,text/plain" aria-label="your own assessment file">
+        with the hazard grid it names <input type="file" id="town-grid-file" aria-label="the hazard grid your assessment file names">
+        <span id="town-assess-name"></span>
       </div>
       <div class="row">
         <label>Towers (CSV) <input type="file" id="town-towers-file" accept=".csv,text/csv,text/plain"></label>
@@ -69,7 +74,25 @@ export class TownView {
         <canvas id="town-map" width="640" height="560" role="img" aria-label="Map of the towers (none assessed yet)"></canvas>
         <table id="town-ranking"><caption>The towers ranked by their governing ζ<sub>E</sub> (least first)</caption><thead></thead><tbody></tbody></table>
       </div>`;
-    $("town-assess").addEventListener("change", () => this.run(false));
+    $("town-assess").addEventListener("change", () => {
+      this.own = null;
+      $("town-assess-name").textContent = "";
+      this.run(false);
+    });
+    // The user's own file and its grid: the records it names are matched by file name to those picked.
+    const picked = async (e) => {
+      const file = e.target.files[0];
+      return file ? { name: file.name, text: await file.text() } : null;
+    };
+    $("town-assess-file").addEventListener("change", async (e) => {
+      this.own = (await picked(e)) ?? this.own;
+      $("town-assess-name").textContent = this.own ? this.own.name : "";
+      this.run(false);
+    });
+    $("town-grid-file").addEventListener("change", async (e) => {
+      this.grid = (await picked(e)) ?? this.grid;
+      if (this.own) this.run(false);
+    });
     $("town-towers-file").addEventListener("change", async (e) => {
       const file = e.target.files[0];
       if (!file) return;
@@ -113,7 +136,10 @@ export class TownView {
     this.worker?.terminate();
     this.worker = new Worker(new URL("./town-worker.js", import.meta.url), { type: "module" });
     const id = ++this.id;
-    const entry = this.assessments[Number($("town-assess").value)];
+    const example = this.assessments[Number($("town-assess").value)];
+    const entry = this.own
+      ? { toml: this.own.text, path: this.own.name, grid: this.grid?.text ?? null, gridName: this.grid?.name ?? null }
+      : { toml: example.toml, path: example.path, grid: grids[example.grid] ?? null, gridName: null };
     $("town-towers-name").textContent = this.towers.name;
     this.panel.dataset.state = "running";
     $("town-progress").value = 0;
@@ -157,7 +183,8 @@ export class TownView {
       id,
       assess: entry.toml,
       origin: entry.path,
-      grid: grids[entry.grid] ?? null,
+      grid: entry.grid,
+      gridName: entry.gridName,
       towers: this.towers.text,
       towersName: this.towers.name,
       records: dynamic ? this.records : [],

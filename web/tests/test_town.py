@@ -111,3 +111,38 @@ def test_cancel_stops_the_dynamic_checks_and_keeps_the_kinematic_ones(page):
     # The kinematic inventory stays, whole.
     assert page.evaluate("document.getElementById('town').csv") == text
     expect(page.locator("#town-ranking tbody tr")).to_have_count(12)
+
+
+def test_a_users_own_assessment_file_and_its_grid_give_the_commands_inventory(page, tmp_path):
+    """The user's ASSESS.toml and the grid it names, picked: the command's inventory.csv on
+    the same files, byte for byte; the records it names are matched to those picked by file
+    name, and one not picked is named in one line."""
+    mine = tmp_path / "mine"
+    (mine / "hazard").mkdir(parents=True)
+    grid = mine / "hazard" / "grid.txt"
+    grid.write_text((ROOT / "data" / "hazard" / "synthetic_grid.txt").read_text())
+    assess = (TOWN / "assess.toml").read_text()
+    assert '"../../data/hazard/synthetic_grid.txt"' in assess
+    # Heavier than the example's (so not its rows), on the grid at its own place.
+    assess = assess.replace('"../../data/hazard/synthetic_grid.txt"', '"hazard/grid.txt"').replace("q = 2.0", "q = 1.5")
+    (mine / "ASSESS.toml").write_text(assess)
+    page.click("#tab-town")
+    page.set_input_files("#town-towers-file", str(TOWN / "towers.csv"))
+    town_done(page)
+    page.set_input_files("#town-assess-file", str(mine / "ASSESS.toml"))
+    # The grid it names is not picked yet: one line saying which.
+    expect(page.locator("#town-error")).to_have_text("ASSESS.toml: site.grid: names grid.txt, which is not picked", timeout=30_000)
+    page.set_input_files("#town-grid-file", str(grid))
+    town, text = town_done(page)
+    expected = command_csv(TOWN / "towers.csv", mine / "ASSESS.toml", tmp_path / "out")
+    assert text == expected
+    assert text != command_csv(TOWN / "towers.csv", TOWN / "assess.toml", tmp_path / "example")
+    # Records the file names, two of its three picked: the third is named.
+    named = assess.replace("q = 1.5", "q = 1.5\nrecords = ['records/kt_01.AT2', 'records/kt_02.AT2', 'records/kt_03.AT2']")
+    (mine / "NAMED.toml").write_text(named)
+    page.set_input_files("#town-assess-file", str(mine / "NAMED.toml"))
+    expect(page.locator("#town-assess-name")).to_have_text("NAMED.toml")
+    town_done(page)
+    page.set_input_files("#town-records-file", [str(r) for r in RECORDS[:2]])
+    page.click("#town-dynamic")
+    expect(page.locator("#town-error")).to_have_text("NAMED.toml: assessment.records: no record file picked for kt_03.AT2", timeout=30_000)

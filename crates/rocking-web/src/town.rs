@@ -23,15 +23,35 @@ impl WebTown {
     /// The inventory of the towers' CSV text `towers` (named `towers_name` in
     /// errors) on the assessment file's TOML text `assess` (named `origin`,
     /// the folder its grid's path is relative to), with the hazard grid's text
-    /// `grid` when the file names one, and `records` the JSON text of the
+    /// `grid` when the file names one (picked as `grid_name`, when given: its
+    /// file name must be the one `site.grid` names), and `records` the JSON text of the
     /// record set `[{ "name", "text" }, …]` to put in `assessment.records`
-    /// (`null` or empty: the kinematic checks only, whatever the file says).
-    pub fn create(assess: &str, origin: &str, towers: &str, towers_name: &str, grid: Option<String>, records: &str) -> Result<Self, String> {
+    /// (`null` or empty: the kinematic checks only, whatever the file says;
+    /// when the file names its records, those of the set with their file names).
+    pub fn create(
+        assess: &str,
+        origin: &str,
+        towers: &str,
+        towers_name: &str,
+        grid: Option<String>,
+        grid_name: Option<String>,
+        records: &str,
+    ) -> Result<Self, String> {
         let origin = Path::new(origin);
         let mut table = rocking_scenario::parse_toml(assess, origin).map_err(|e| e.to_string())?;
         set_records(&mut table, records, origin)?;
         let grids = match (grid, grid_path(&table, origin)) {
-            (Some(text), Some(path)) => GridCache::holding(&path, &text).map_err(|e| format!("{}: site.grid: {e}", origin.display()))?,
+            (Some(text), Some(path)) => {
+                let named = file_name(&path.to_string_lossy()).to_string();
+                if let Some(picked) = grid_name.as_deref().map(file_name).filter(|p| *p != named) {
+                    return Err(format!("{}: site.grid: names {named}, not {picked}", origin.display()));
+                }
+                GridCache::holding(&path, &text).map_err(|e| format!("{}: site.grid: {e}", origin.display()))?
+            }
+            (None, Some(path)) => {
+                let named = file_name(&path.to_string_lossy()).to_string();
+                return Err(format!("{}: site.grid: names {named}, which is not picked", origin.display()));
+            }
             _ => GridCache::default(),
         };
         let inventory = Inventory::from_table(table, origin, towers.as_bytes(), Path::new(towers_name), grids).map_err(|e| e.to_string())?;
@@ -50,8 +70,52 @@ fn grid_path(table: &Table, origin: &Path) -> Option<std::path::PathBuf> {
     Some(origin.parent().unwrap_or(Path::new("")).join(grid))
 }
 
+/// The part of a path after its last `/` (or backslash).
+fn file_name(path: &str) -> &str {
+    path.rsplit(['/', '\\']).next().unwrap_or(path)
+}
+
+/// The records of `given` (`{ name, text }` values) that the patterns of
+/// `assessment.records` (a string or strings, file paths or globs) match by
+/// file name, in the patterns' order; a pattern that matches none of them is
+/// an error naming it.
+fn named_records(patterns: &toml::Value, given: Vec<Value>, origin: &Path) -> Result<Vec<Value>, String> {
+    let patterns: Vec<&str> = match patterns {
+        toml::Value::String(p) => vec![p.as_str()],
+        toml::Value::Array(items) => items.iter().filter_map(toml::Value::as_str).collect(),
+        _ => Vec::new(),
+    };
+    let name = |v: &Value| file_name(v.get("name").and_then(Value::as_str).unwrap_or("")).to_string();
+    let mut chosen: Vec<Value> = Vec::new();
+    let mut missing: Vec<&str> = Vec::new();
+    for pattern in patterns {
+        let wanted = file_name(pattern);
+        let glob = glob::Pattern::new(wanted).map_err(|e| format!("{}: assessment.records: {pattern}: {e}", origin.display()))?;
+        let matched: Vec<&Value> = given.iter().filter(|v| glob.matches(&name(v))).collect();
+        if matched.is_empty() {
+            missing.push(wanted);
+        }
+        for v in matched {
+            if !chosen.iter().any(|c| name(c) == name(v)) {
+                chosen.push(v.clone());
+            }
+        }
+    }
+    if missing.is_empty() {
+        Ok(chosen)
+    } else {
+        Err(format!(
+            "{}: assessment.records: no record file picked for {}",
+            origin.display(),
+            missing.join(", ")
+        ))
+    }
+}
+
 /// Puts the record set `records` (JSON text of `[{ name, text }, …]`) in
-/// `assessment.records`, or takes the records out when it is empty.
+/// `assessment.records`: all of them, or when the file names its records
+/// (paths or globs), those of them with the file names it names. Takes the
+/// records out when the set is empty.
 fn set_records(table: &mut Table, records: &str, origin: &Path) -> Result<(), String> {
     let given: Value = serde_json::from_str(records).map_err(|e| format!("{}: assessment.records: not JSON: {e}", origin.display()))?;
     let assessment = table
@@ -61,6 +125,10 @@ fn set_records(table: &mut Table, records: &str, origin: &Path) -> Result<(), St
         .ok_or_else(|| format!("{}: assessment: expected a table", origin.display()))?;
     match given {
         Value::Array(items) if !items.is_empty() => {
+            let items = match assessment.get("records") {
+                Some(named) if !named.as_array().is_some_and(|a| a.iter().any(toml::Value::is_table)) => named_records(named, items, origin)?,
+                _ => items,
+            };
             let value: toml::Value = serde_json::from_value(Value::Array(items)).map_err(|e| format!("{}: assessment.records: {e}", origin.display()))?;
             assessment.insert("records".into(), value);
         }
@@ -75,8 +143,16 @@ fn set_records(table: &mut Table, records: &str, origin: &Path) -> Result<(), St
 impl WebTown {
     /// See [`WebTown::create`].
     #[wasm_bindgen(constructor)]
-    pub fn new(assess: &str, origin: &str, towers: &str, towers_name: &str, grid: Option<String>, records: &str) -> Result<WebTown, JsError> {
-        Self::create(assess, origin, towers, towers_name, grid, records).map_err(|e| JsError::new(&e))
+    pub fn new(
+        assess: &str,
+        origin: &str,
+        towers: &str,
+        towers_name: &str,
+        grid: Option<String>,
+        grid_name: Option<String>,
+        records: &str,
+    ) -> Result<WebTown, JsError> {
+        Self::create(assess, origin, towers, towers_name, grid, grid_name, records).map_err(|e| JsError::new(&e))
     }
 
     /// The number of towers.

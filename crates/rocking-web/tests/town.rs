@@ -37,7 +37,7 @@ fn the_example_town_from_text_is_the_town_from_files() {
     let assess = read("examples/town/assess.toml");
     let towers = read("examples/town/towers.csv");
     let grid = read("data/hazard/synthetic_grid.txt");
-    let mut town = WebTown::create(&assess, "examples/town/assess.toml", &towers, "towers.csv", Some(grid), "null").unwrap();
+    let mut town = WebTown::create(&assess, "examples/town/assess.toml", &towers, "towers.csv", Some(grid), None, "null").unwrap();
     assert_eq!(town.length(), 12);
     // A few at a time, as the page's worker runs them.
     assert_eq!(town.advance(5), 5);
@@ -75,7 +75,16 @@ fn records_given_as_text_give_the_dynamic_checks_of_the_files() {
     let given = json!(records.map(|r| json!({ "name": r, "text": read(&format!("data/records/synthetic/{r}")) })));
     let towers = "id,name,lon,lat,tower.width,tower.height\nA,slender,14.34,41.06,3.6,30.0\n";
     let grid = read("data/hazard/synthetic_grid.txt");
-    let mut town = WebTown::create(&with_text, "examples/town/assess.toml", towers, "towers.csv", Some(grid), &given.to_string()).unwrap();
+    let mut town = WebTown::create(
+        &with_text,
+        "examples/town/assess.toml",
+        towers,
+        "towers.csv",
+        Some(grid),
+        None,
+        &given.to_string(),
+    )
+    .unwrap();
     town.advance(1);
     let csv = town.csv();
     assert!(csv.contains("SLC_nonlinear_dynamic_zeta_E"), "{csv}");
@@ -87,11 +96,55 @@ fn a_bad_row_names_the_towers_file_its_row_and_column() {
     let assess = read("examples/town/assess.toml");
     let grid = read("data/hazard/synthetic_grid.txt");
     let towers = "id,name,lon,lat,tower.width\nA,,14.34,41.06,-4\nB,,14.35,41.07,\n";
-    let mut town = WebTown::create(&assess, "examples/town/assess.toml", towers, "mine.csv", Some(grid), "[]").unwrap();
+    let mut town = WebTown::create(&assess, "examples/town/assess.toml", towers, "mine.csv", Some(grid), None, "[]").unwrap();
     town.advance(2);
     let csv = town.csv();
     assert!(csv.contains("mine.csv row 1 (id A), column tower.width"), "{csv}");
     let shown: Value = serde_json::from_str(&town.town().map_err(|_| "town").unwrap()).unwrap();
     // The bad tower is not ranked; the good one is.
     assert_eq!(shown["ranking"], json!([1]));
+}
+
+#[test]
+fn a_users_file_takes_the_records_it_names_from_those_picked_by_file_name() {
+    let records = ["kt_01.AT2", "kt_02.AT2", "kt_03.AT2"];
+    let with_files = read("examples/town/assess.toml").replace(
+        "q = 2.0\n",
+        &format!(
+            "q = 2.0\nrecords = {}\nlambda = {{ from = 0.5, to = 3.0, step = 0.5 }}\n",
+            json!(records.map(|r| format!("../../data/records/synthetic/{r}")))
+        ),
+    );
+    let picked = |names: &[&str]| {
+        json!(names
+            .iter()
+            .map(|r| json!({ "name": r, "text": read(&format!("data/records/synthetic/{r}")) }))
+            .collect::<Vec<_>>())
+        .to_string()
+    };
+    let towers = "id,name,lon,lat,tower.width,tower.height\nA,slender,14.34,41.06,3.6,30.0\n";
+    let grid = || Some(read("data/hazard/synthetic_grid.txt"));
+    let grid_name = || Some("synthetic_grid.txt".to_string());
+    // Picked in another order, with one the file does not name: the file's three, in its order.
+    let set = picked(&["kt_04.AT2", "kt_03.AT2", "kt_02.AT2", "kt_01.AT2"]);
+    let mut town = WebTown::create(&with_files, "ASSESS.toml", towers, "towers.csv", grid(), grid_name(), &set).unwrap();
+    town.advance(1);
+    assert_eq!(town.csv(), from_files(&with_files, towers));
+    // One the file names is not picked: one line naming it.
+    let err = WebTown::create(
+        &with_files,
+        "ASSESS.toml",
+        towers,
+        "towers.csv",
+        grid(),
+        grid_name(),
+        &picked(&["kt_01.AT2", "kt_02.AT2"]),
+    )
+    .err();
+    assert_eq!(err.as_deref(), Some("ASSESS.toml: assessment.records: no record file picked for kt_03.AT2"));
+    // The grid: the one the file names, or a line saying which it names.
+    let err = WebTown::create(&with_files, "ASSESS.toml", towers, "towers.csv", None, None, "[]").err();
+    assert_eq!(err.as_deref(), Some("ASSESS.toml: site.grid: names synthetic_grid.txt, which is not picked"));
+    let err = WebTown::create(&with_files, "ASSESS.toml", towers, "towers.csv", grid(), Some("other.txt".into()), "[]").err();
+    assert_eq!(err.as_deref(), Some("ASSESS.toml: site.grid: names synthetic_grid.txt, not other.txt"));
 }
