@@ -102,12 +102,15 @@ def test_cancel_stops_the_dynamic_checks_and_keeps_the_kinematic_ones(page):
     assert "dynamic" not in text.splitlines()[0]
     page.set_input_files("#town-records-file", [str(r) for r in RECORDS])
     page.click("#town-dynamic")
-    # Cancelled once the first tower is told done: 11 of the 12 still to go.
-    expect(page.locator("#town")).to_have_attribute("data-progress", "1", timeout=120_000)
+    # Cancelled once a tower is told done (on a busy machine a second may be
+    # told before the click: at least one, not exactly one), with some of the
+    # 12 still to go.
+    page.wait_for_function("Number(document.getElementById('town').dataset.progress) >= 1", timeout=120_000)
     page.click("#town-cancel")
     expect(page.locator("#town")).to_have_attribute("data-state", "done")
     expect(page.locator("#town-progress-label")).to_have_text("cancelled")
     expect(page.locator("#town-dynamic")).to_be_enabled()
+    assert int(page.locator("#town").get_attribute("data-progress")) < 12
     # The kinematic inventory stays, whole.
     assert page.evaluate("document.getElementById('town').csv") == text
     expect(page.locator("#town-ranking tbody tr")).to_have_count(12)
