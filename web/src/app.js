@@ -36,7 +36,8 @@ function shownUnit(k) {
 
 /** The description of a dotted key; a key of the vertical motion is described by [ground]'s. */
 function describeKey(key) {
-  return keyInfo.get(key) || keyInfo.get(key.replace(/^ground\.vertical\./, "ground."));
+  const blockKey = Array.isArray(scenario.block) && scenario.block.some((_, i) => key.startsWith(`${blockName(i)}.`)) ? `${BLOCK}.${key.slice(key.indexOf(".") + 1)}` : key;
+  return keyInfo.get(blockKey) || keyInfo.get(key.replace(/^ground\.vertical\./, "ground."));
 }
 
 /**
@@ -203,6 +204,7 @@ function buildForm() {
     form.append(set);
   }
   if (scenario.tower) form.append(...blockSets());
+  refreshAxisKeys();
 }
 
 /** The name of block `i` (from 0) on the tower: its `name`, or the default `block2`, `block3`, … */
@@ -565,15 +567,17 @@ function verdictOf(result) {
     false: " It will come to rest: its free motion from there does not carry it over.",
     null: " Ground motion remains after the run (or the church still slides): what follows is not decided here; run longer.",
   }[String(s.will_overturn)];
+  // With blocks on the tower the free motion's verdict (one block's closed form) is not given.
+  const undecided = result.derived?.blocks?.length ? " With blocks on the tower, whether their free motion overturns one is not foretold here (will_overturn is the lone tower's)." : next;
   switch (s.end_state) {
     case "overturned":
       return `The tower overturned at t = ${format(s.overturn_time_s)} s.`;
     case "beyond_stability_limit":
-      return `The tower ends past its stability limit (θ/α = ${format(ratio)} ${at}), not yet overturned.${next}`;
+      return `The tower ends past its stability limit (θ/α = ${format(ratio)} ${at}), not yet overturned.${s.will_overturn === null ? undecided : next}`;
     case "rocking":
-      return `The tower is still rocking at the end (θ/α = ${format(ratio)} ${at}).${next}`;
+      return `The tower is still rocking at the end (θ/α = ${format(ratio)} ${at}).${s.will_overturn === null ? undecided : next}`;
     default:
-      return `The tower is at rest at the end (${at}).${s.will_overturn === null ? next : ""}`;
+      return `The tower is at rest at the end (${at}).${s.will_overturn === null ? undecided : ""}`;
   }
 }
 
@@ -762,6 +766,25 @@ async function download(name) {
 
 // ---- the sweep view ----
 let numericKeys = [];
+
+/** The keys the sweep's axes offer: the numeric ones, and each block's by its name (`belfry.width`). */
+function axisKeys() {
+  const blocks = Array.isArray(scenario.block) ? scenario.block : [];
+  const own = BLOCK_FIELDS.filter((f) => f.t !== "select" && describeKey(`${BLOCK}.${f.k}`)?.kind === "number");
+  return [...numericKeys, ...blocks.flatMap((_, i) => own.map((f) => `${blockName(i)}.${f.k}`))];
+}
+
+/** The axes' key lists after the blocks changed, each axis keeping its key while it is offered. */
+function refreshAxisKeys() {
+  for (const i of [0, 1]) {
+    const select = $(`axis${i}-key`);
+    if (!select) continue;
+    const value = select.value;
+    const keys = axisKeys();
+    select.replaceChildren(...(i === 1 ? [new Option("(none)", "")] : []), ...keys.map((k) => new Option(k, k)));
+    select.value = keys.includes(value) || value === "" ? value : select.options[0].value;
+  }
+}
 function axisEditor(i, spec) {
   const box = document.createElement("div");
   box.className = "axis";
@@ -769,7 +792,7 @@ function axisEditor(i, spec) {
   key.id = `axis${i}-key`;
   key.setAttribute("aria-label", `axis ${i + 1}: the swept key`);
   if (i === 1) key.append(new Option("(none)", ""));
-  for (const k of numericKeys) key.append(new Option(k, k));
+  for (const k of axisKeys()) key.append(new Option(k, k));
   key.value = spec.key;
   const input = (name, value) => {
     const el = document.createElement("input");

@@ -142,3 +142,25 @@ def test_the_belfrys_animation_and_screenshot(browser, server):
     page.screenshot(path=str(OUT / "blocks-page.png"))
     assert page.errors == [], page.errors
     page.close()
+
+
+def test_a_sweep_over_the_belfrys_width(browser, server, tmp_path):
+    """`belfry.width` as an axis: the page's sweep.csv is the command's byte
+    for byte, and the sweep's controls offer the belfry's keys by its name."""
+    sweep_file = tmp_path / "belfry-width.toml"
+    sweep_file.write_text(EXAMPLE.read_text() + '\n[sweep]\n"belfry.width" = [2.8, 3.2, 3.6]\n')
+    subprocess.run([BIN, "sweep", str(sweep_file), "--out", str(tmp_path / "sweep")], check=True, capture_output=True)
+    expected = (tmp_path / "sweep" / "sweep.csv").read_text()
+    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(BELFRY)))
+    got = page.evaluate("([s, a]) => window.rocking.sweep(s, a).then(c => c.csv)", [BELFRY, {"belfry.width": [2.8, 3.2, 3.6]}])
+    assert got == expected
+    assert expected.splitlines()[0].startswith("belfry.width,") and "belfry_max_theta_over_alpha" in expected.splitlines()[0]
+    page.select_option("#axis0-key", "belfry.width")
+    for name, value in [("from", "2.8"), ("to", "3.6"), ("steps", "3")]:
+        page.fill(f"#axis0-{name}", value)
+    page.select_option("#axis1-key", "")
+    page.click("#sweep-run")
+    expect(page.locator("#sweep-label")).to_have_attribute("data-done", "true", timeout=60_000)
+    expect(page.locator("#sweep-label")).to_contain_text("3 cases")
+    assert page.errors == [], page.errors
+    page.close()
