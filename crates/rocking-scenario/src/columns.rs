@@ -582,7 +582,7 @@ pub const SUMMARY: &[Field] = &[
         name: "will_overturn",
         kind: Kind::Flag,
         unit: "",
-        meaning: "whether the tower's free motion from the end overturns it (closed form: its energy against the barrier at θ = ±α, its direction, the next impact's restitution); empty while ground motion remains after the end or the building slides",
+        meaning: "whether the tower's free motion from the end overturns it (closed form: its energy against the barrier at θ = ±α, its direction, the next impact's restitution); empty while ground motion remains after the end, the building slides, or blocks stand on the tower (the closed form is of one block)",
         present: always,
         read: |o| o.summary.will_overturn.map_or(Cell::Empty, Cell::Bool),
     },
