@@ -198,6 +198,11 @@ impl RecordSet {
                     psa_g,
                 })
             })
+            // Collected in order before the first failure is taken: a parallel
+            // collect into a `Result` stops at whichever failure a thread meets
+            // first, and the message would name a different record run to run.
+            .collect::<Vec<Result<SetRecord, Error>>>()
+            .into_iter()
             .collect::<Result<Vec<_>, Error>>()?;
         Ok(Self { periods, range, records })
     }

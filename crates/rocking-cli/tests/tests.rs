@@ -17,6 +17,7 @@ mod regression_concurrent_runs;
 mod regression_interrupted_sweep;
 mod regression_merge_bounds;
 mod regression_merge_into_a_used_folder;
+mod regression_record_set_error_order;
 mod run;
 mod shard;
 mod spectrum;
