@@ -5,7 +5,10 @@
 // site) and the assessment's parameters (FC, q, the capacity curve); the
 // engine (crates/rocking-assess, in a Web Worker) gives the capacity and the
 // kinematic checks, each with its capacity ag and ζ_E, and the governing one:
-// the numbers of the command's assessment.json, bit for bit. The non-linear
+// the numbers of the command's assessment.json, bit for bit. With blocks on
+// the tower (a belfry on its shaft) each block, with those above it, is a
+// mechanism of its own: its capacity, its checks, and the governing check
+// taken over every mechanism, as the command's `mechanisms`. The non-linear
 // dynamic checks run on demand in a Web Worker of their own, with a progress
 // bar, on the record files the user picks (given to the engine as text with
 // their names, read by the command's reader): the command's numbers too.
@@ -130,6 +133,7 @@ export class AssessView {
     this.dynamic = null; // the dynamic checks' result, the worker running them, the table they ran on
     this.dynamicWorker = null;
     this.texts = {}; // each check's name and formula (HTML), from the engine
+    this.chartMechanism = ""; // the mechanism the ADRS chart shows ("": the governing one)
     this.ready = window.rocking.keys().then((keys) => this.build(keys.assessment));
   }
 
@@ -149,7 +153,9 @@ export class AssessView {
       <h2>Assessment to the code</h2>
       <p class="note">The tower and the building of the form, assessed as <code>rocking assess</code> does (Circolare 2019 §C8.7.1.2.1):
       its capacity as one rigid block and the kinematic checks, each with the least ground acceleration at which it stops holding
-      and ζ_E = a<sub>g,capacity</sub> / a<sub>g</sub>; and, on the record files you pick, the non-linear dynamic checks (below the form).</p>
+      and ζ_E = a<sub>g,capacity</sub> / a<sub>g</sub>; and, on the record files you pick, the non-linear dynamic checks (below the form).
+      With blocks on the tower, each block with those above it is a mechanism of its own, turning on the block below; its kinematic
+      checks take the ground's spectra for the motion of the top of the block below (which moves with the ground while the tower stands).</p>
       <div class="row"><label>Example <select id="assess-example"><option value="">—</option></select></label></div>
       <div id="assess-error" role="alert" hidden></div>
       <div id="assess-results">
@@ -160,13 +166,16 @@ export class AssessView {
             <tbody></tbody></table>
         </div>
         <div class="tables">
-          <table id="assess-capacity"><caption>Capacity of the tower</caption><tbody></tbody></table>
+          <div class="scroll" role="region" aria-label="the capacity" tabindex="0">
+            <table id="assess-capacity"><caption>Capacity of the tower</caption><thead></thead><tbody></tbody></table>
+          </div>
           <div class="scroll" role="region" aria-label="the site's spectra" tabindex="0">
             <table id="assess-sites"><caption>The site's spectra (5%)</caption><thead></thead><tbody></tbody></table>
           </div>
         </div>
         <div class="row downloads">Download: <button type="button" id="assess-download">assessment.json</button>
           <button type="button" id="assess-download-csv">capacity.csv</button> <span id="assess-time"></span></div>
+        <div class="row" id="assess-adrs-pick" hidden><label>Mechanism in the chart <select id="assess-adrs-mechanism"></select></label></div>
         <div id="assess-adrs" class="chart" role="img" aria-label="the capacity curve in the ADRS plane with the ultimate displacements and the demands"></div>
       </div>
       <form id="assess-form" autocomplete="off">
@@ -211,7 +220,7 @@ export class AssessView {
         <div id="assess-dynamic-results" hidden>
           <div class="scroll" role="region" aria-label="the records' responses" tabindex="0">
             <table id="assess-records"><caption>Each record at its fitted scale (λ = 1)</caption>
-              <thead><tr><th>limit state</th><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th><th>max slip of the building (m)</th><th>error</th></tr></thead>
+              <thead></thead>
               <tbody></tbody></table>
           </div>
           <div class="row downloads">Download: <button type="button" id="assess-download-dynamic">assessment.json</button>
@@ -261,6 +270,10 @@ export class AssessView {
     $("assess-download-dynamic").addEventListener("click", () => this.downloadDynamic("assessment.json"));
     $("assess-download-records").addEventListener("click", () => this.downloadDynamic("records.csv"));
     $("assess-download-spectra").addEventListener("click", () => this.downloadDynamic("spectra.csv"));
+    $("assess-adrs-mechanism").addEventListener("change", (ev) => {
+      this.chartMechanism = ev.target.value;
+      this.drawChart();
+    });
     new ResizeObserver(() => this.resizeChart()).observe($("assess-adrs"));
     this.showCode();
   }
@@ -491,48 +504,69 @@ export class AssessView {
 
   render() {
     const r = this.result;
-    // The dynamic checks' rows, when they ran on the assessment shown.
-    const dynamic = this.dynamic?.result;
-    const checks = dynamic ? dynamic.checks : r.checks;
-    const governing = dynamic ? dynamic.governing : r.governing;
+    // The dynamic checks' result, when they ran on the assessment shown: the
+    // same capacities and sites, every check.
+    const shown = this.dynamic?.result ?? r;
+    const mechanisms = mechanismsOf(shown);
+    const stacked = mechanisms.length > 1;
+    const governing = shown.governing;
+    const governs = (m, c) =>
+      !!governing && governing.limit_state === c.limit_state && governing.method === c.method && (governing.mechanism ?? "tower") === m.name;
     const cell = (value, digits, bound = false) => `<td class="num" data-value="${value}">${bound ? "≥ " : ""}${sig(value, digits)}</td>`;
     const unit = (u) => u.replace("m/s2", "m/s²");
-    const body = checks.map((c) => {
-      const m = this.text(c.method);
+    const row = (m, c) => {
+      const t = this.text(c.method);
+      const data = `data-mechanism="${escapeHtml(m.name)}" data-limit-state="${c.limit_state}" data-method="${c.method}"`;
       if (c.completed === false) {
-        return `<tr data-limit-state="${c.limit_state}" data-method="${c.method}"><td>${c.limit_state}</td><td>${m.name}</td>` +
-          `<td colspan="6" class="fails">could not be completed: ${escapeHtml(c.error || "a record failed")}</td><td class="formula">${m.formula_html}</td></tr>`;
+        return `<tr ${data}><td>${c.limit_state}</td><td>${t.name}</td>` +
+          `<td colspan="6" class="fails">could not be completed: ${escapeHtml(c.error || "a record failed")}</td><td class="formula">${t.formula_html}</td></tr>`;
       }
-      const isGoverning = governing && governing.limit_state === c.limit_state && governing.method === c.method;
+      const isGoverning = governs(m, c);
       const bound = c.ag_capacity_is_lower_bound;
       return (
-        `<tr data-limit-state="${c.limit_state}" data-method="${c.method}"${isGoverning ? ' class="governing"' : ""}>` +
-        `<td>${c.limit_state}</td><td>${m.name}${isGoverning ? " (governing)" : ""}</td>` +
+        `<tr ${data}${isGoverning ? ' class="governing"' : ""}>` +
+        `<td>${c.limit_state}</td><td>${t.name}${isGoverning ? " (governing)" : ""}</td>` +
         cell(c.ag_g, 4) +
         cell(c.ag_capacity_g, 4, bound) +
         cell(c.zeta_E, 3, bound) +
         `<td class="${c.holds ? "holds" : "fails"}">${c.holds ? "holds" : "fails"}</td>` +
         `<td class="num" data-value="${c.demand}">${sig(c.demand, 4)} ${unit(c.unit)}</td>` +
         `<td class="num" data-value="${c.capacity}">${sig(c.capacity, 4)} ${unit(c.unit)}</td>` +
-        `<td class="formula">${m.formula_html}</td></tr>`
+        `<td class="formula">${t.formula_html}</td></tr>`
       );
-    });
+    };
+    // With blocks, each mechanism's checks under a row that says what turns on what.
+    const body = mechanisms.flatMap((m, i) => [
+      ...(stacked ? [`<tr class="mechanism" data-mechanism="${escapeHtml(m.name)}"><th colspan="9" scope="colgroup">${escapeHtml(describe(mechanisms, i))}</th></tr>`] : []),
+      ...m.checks.map((c) => row(m, c)),
+    ]);
     this.panel.querySelector("#assess-checks tbody").innerHTML = body.join("");
     const g = governing;
     const line = $("assess-governing");
     if (g) {
       const gm = this.text(g.method);
       const bound = g.ag_capacity_is_lower_bound ? "≥ " : "";
+      const of = stacked ? ` of the ${escapeHtml(g.mechanism ?? "tower")}` : "";
       line.innerHTML =
-        `Governing: ${g.limit_state} ${gm.name} (${gm.formula_html}): ag capacity ${bound}${sig(g.ag_capacity_g, 4)} g ` +
+        `Governing: ${g.limit_state} ${gm.name}${of} (${gm.formula_html}): ag capacity ${bound}${sig(g.ag_capacity_g, 4)} g ` +
         `against ag ${sig(g.ag_g, 4)} g, ζ_E = ${bound}${sig(g.zeta_E, 3)}: ${g.holds ? "it holds" : "it FAILS"}.`;
     } else line.textContent = "";
     line.classList.toggle("danger", !!g && !g.holds);
-    const c = r.capacity;
-    this.panel.querySelector("#assess-capacity tbody").innerHTML =
+    // The capacity: a column per mechanism.
+    const capacity = this.panel.querySelector("#assess-capacity");
+    capacity.querySelector("caption").textContent = stacked ? "Capacity of each mechanism" : "Capacity of the tower";
+    capacity.querySelector("thead").innerHTML = stacked
+      ? `<tr><th scope="col">quantity</th>${mechanisms.map((m) => `<th scope="col">${escapeHtml(m.name)}</th>`).join("")}<th scope="col">unit</th></tr>`
+      : "";
+    capacity.querySelector("tbody").innerHTML =
       this.quantities
-        .map((q) => `<tr><td class="label" title="${escapeHtml(q.meaning)}">${q.symbol_html}</td><td class="num" data-key="${q.key}" data-value="${c[q.key]}">${sig(c[q.key], 4)}</td><td>${q.unit}</td></tr>`)
-        .join("") + `<tr><td class="label">curve</td><td colspan="2">${c.curve}</td></tr>`;
+        .map(
+          (q) =>
+            `<tr><td class="label" title="${escapeHtml(q.meaning)}">${q.symbol_html}</td>` +
+            mechanisms.map((m) => `<td class="num" data-mechanism="${escapeHtml(m.name)}" data-key="${q.key}" data-value="${m.capacity[q.key]}">${sig(m.capacity[q.key], 4)}</td>`).join("") +
+            `<td>${q.unit}</td></tr>`,
+        )
+        .join("") + `<tr><td class="label">curve</td><td colspan="${mechanisms.length + 1}">${r.capacity.curve}</td></tr>`;
     // The sites' columns: every field assessment.json gives for a limit state, in its order.
     const states = Object.keys(r.sites);
     const fields = [...new Set(states.flatMap((s) => Object.keys(r.sites[s])))];
@@ -540,6 +574,15 @@ export class AssessView {
     this.panel.querySelector("#assess-sites tbody").innerHTML = states
       .map((s) => `<tr><td>${s}</td>${fields.map((k) => (r.sites[s][k] === undefined ? "<td></td>" : cell(r.sites[s][k], 4))).join("")}</tr>`)
       .join("");
+    // The chart's choice of mechanism, with blocks.
+    const pick = $("assess-adrs-mechanism");
+    const names = mechanisms.map((m) => m.name);
+    if ([...pick.options].map((o) => o.value).join("\n") !== ["", ...names].join("\n")) {
+      pick.replaceChildren(new Option("the governing one", ""), ...names.map((n) => new Option(n, n)));
+    }
+    if (!names.includes(this.chartMechanism)) this.chartMechanism = "";
+    pick.value = this.chartMechanism;
+    $("assess-adrs-pick").hidden = !stacked;
     this.drawChart();
   }
 
@@ -554,8 +597,14 @@ export class AssessView {
     const r = this.result;
     const box = $("assess-adrs");
     if (!r) return;
-    const c = r.capacity;
-    const curve = r.curve;
+    // The mechanism chosen, or the governing one (the tower's with none).
+    const shown = this.dynamic?.result ?? r;
+    const mechanisms = mechanismsOf(shown);
+    const name = this.chartMechanism || shown.governing?.mechanism || "tower";
+    const index = Math.max(0, mechanisms.findIndex((m) => m.name === name));
+    const m = mechanisms[index];
+    const c = m.capacity;
+    const curve = (shown.curves ?? [shown.curve])[index];
     const at = (d) => {
       // a* on the curve at d (linear between its points; 0 beyond d0).
       if (d >= curve[curve.length - 1][0]) return curve[curve.length - 1][1];
@@ -567,7 +616,7 @@ export class AssessView {
       { label: `d_SLV = 0.4 d0 = ${sig(c.d_SLV_m, 3)} m`, d: c.d_SLV_m, color: "#2a7a2a", fails: false },
       { label: `d_SLC = 0.6 d0 = ${sig(c.d_SLC_m, 3)} m`, d: c.d_SLC_m, color: "#7a4a9a", fails: false },
     ];
-    const checks = this.dynamic?.result?.checks ?? r.checks;
+    const checks = m.checks;
     const colors = { nonlinear_kinematic: ["#d07a10", "#b04a10"], nonlinear_dynamic: ["#1f77b4", "#0b3d91"] };
     for (const k of checks.filter((k) => k.method in colors && k.completed !== false)) {
       const i = k.limit_state === states(r)[1] ? 0 : 1;
@@ -599,7 +648,7 @@ export class AssessView {
       {
         width: this.chartWidth(),
         height: 300,
-        title: `Capacity curve in the ADRS plane (${c.curve} curve, FC = ${c.confidence_factor}, e* = ${c.e_star})`,
+        title: `Capacity curve in the ADRS plane${mechanisms.length > 1 ? `: ${m.name}` : ""} (${c.curve} curve, FC = ${c.confidence_factor}, e* = ${c.e_star})`,
         legend: { live: false },
         scales: { x: { time: false, range: (u, min, max) => [0, Math.max(max, c.d0_m)] }, y: { range: (u, min, max) => [0, max * 1.05] } },
         series,
@@ -608,6 +657,7 @@ export class AssessView {
       data,
       box,
     );
+    box.dataset.mechanism = m.name;
     box.dataset.points = JSON.stringify(points.map((p) => ({ label: p.label, d: p.d, a: at(p.d), fails: p.fails })));
   }
 
@@ -686,8 +736,7 @@ export class AssessView {
       this.render();
       this.renderRecords();
       $("assess-dynamic-results").hidden = false;
-      const runs = data.result.dynamic.reduce((n, d) => n + (d.scan.length + 1) * d.records.length, 0);
-      label.textContent = `Done: ${runs} runs of a record in ${(data.ms / 1000).toFixed(1)} s.`;
+      label.textContent = `Done: ${data.runs} runs of a record in ${(data.ms / 1000).toFixed(1)} s.`;
       section.dataset.state = "done";
     };
     worker.postMessage({ table });
@@ -696,10 +745,19 @@ export class AssessView {
   /** The table of each record's response at its fitted scale (records.csv). */
   renderRecords() {
     const num = (x) => (x === null || x === undefined ? "—" : `<span data-value="${x}">${sig(x, 4)}</span>`);
-    this.panel.querySelector("#assess-records tbody").innerHTML = this.dynamic.result.responses
+    const rows = this.dynamic.result.responses;
+    // Each block's columns after the building's slip, as records.csv's `<name>_…`.
+    const blocks = rows.length ? rows[0].blocks.map((b) => b.name) : [];
+    const head = ["limit state", "record", "scale", "max d* (m)", "overturned", "max slip of the building (m)"];
+    for (const b of blocks) head.push(`${b}: max d* (m)`, `${b}: overturned`);
+    head.push("error");
+    this.panel.querySelector("#assess-records thead").innerHTML = `<tr>${head.map((h) => `<th>${escapeHtml(h)}</th>`).join("")}</tr>`;
+    this.panel.querySelector("#assess-records tbody").innerHTML = rows
       .map((r) =>
         `<tr><td>${r.limit_state}</td><td>${escapeHtml(r.record)}</td><td class="num">${num(r.scale)}</td><td class="num">${num(r.max_control_displacement_m)}</td>` +
-        `<td>${r.error ? "" : r.overturned}</td><td class="num">${num(r.max_building_slip_m)}</td><td>${escapeHtml(r.error ?? "")}</td></tr>`)
+        `<td>${r.error ? "" : r.overturned}</td><td class="num">${num(r.max_building_slip_m)}</td>` +
+        r.blocks.map((b) => `<td class="num">${num(b.max_control_displacement_m)}</td><td>${r.error ? "" : b.overturned}</td>`).join("") +
+        `<td>${escapeHtml(r.error ?? "")}</td></tr>`)
       .join("");
   }
 
@@ -707,7 +765,7 @@ export class AssessView {
   downloadDynamic(name) {
     const r = this.dynamic?.result;
     if (!r) return;
-    const { curve, records_csv, spectra_csv, responses, ...json } = r;
+    const { curve, curves, records_csv, spectra_csv, responses, ...json } = r;
     const text = { "records.csv": records_csv, "spectra.csv": spectra_csv }[name] ?? JSON.stringify(json, null, 2) + "\n";
     save(name, text);
   }
@@ -715,7 +773,7 @@ export class AssessView {
   /** assessment.json (the command's, without a record set) or capacity.csv. */
   download(name) {
     if (!this.result) return;
-    const { curve, ms, ...json } = this.result;
+    const { curve, curves, ms, ...json } = this.result;
     const text = name === "capacity.csv" ? "d_star_m,a_star_m_s2\n" + curve.map(([d, a]) => `${d},${a}`).join("\n") + "\n" : JSON.stringify(json, null, 2) + "\n";
     save(name, text);
   }
@@ -733,4 +791,20 @@ function save(name, text) {
 /** The limit states of an assessment in order: damage, life safety, collapse. */
 function states(r) {
   return Object.keys(r.sites);
+}
+
+/**
+ * The mechanisms of an assessment, the tower's first: its `mechanisms` (with
+ * blocks on the tower), or the tower's alone.
+ */
+function mechanismsOf(r) {
+  return r.mechanisms ?? [{ name: "tower", block: 0, capacity: r.capacity, checks: r.checks, governing: r.governing, dynamic: r.dynamic }];
+}
+
+/** What turns on what in mechanism `i` of `mechanisms`: the tower with the whole stack, or a block with those above it on the one below. */
+function describe(mechanisms, i) {
+  const above = mechanisms.slice(i + 1).map((m) => m.name);
+  const carried = above.length ? ` carrying ${above.join(" and ")}` : "";
+  if (i === 0) return `tower${carried}, turning on its springing level`;
+  return `${mechanisms[i].name}${carried}, turning on the ${mechanisms[i - 1].name}`;
 }

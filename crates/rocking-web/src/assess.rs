@@ -3,7 +3,7 @@
 //! the site parameters of a hazard grid at a site (rocking-codes), so that a
 //! grid's site fills the page's fields with the numbers the command uses.
 
-use rocking_assess::{assessment_json, Assessment, AssessmentInput, Method, CAPACITY_POINTS};
+use rocking_assess::{Assessment, AssessmentInput, Method, CAPACITY_POINTS};
 use rocking_codes::{HazardGrid, LimitState};
 use rocking_scenario::RecordCache;
 use serde_json::{json, Value};
@@ -18,9 +18,12 @@ pub const ASSESS_ORIGIN: &str = "assess.toml";
 /// JSON text of its table (the scenario's sections without `[ground]`, plus
 /// `[site]` with each limit state's table and `[assessment]` without
 /// `records`): the JSON text of `assessment.json` as the command writes it
-/// without a record set (`capacity`, `sites`, `checks`, `governing`), plus
-/// `curve`, the capacity curve `[[d*, a*], …]` of `capacity.csv`. An error is
-/// the command's one line, the file named `assess.toml`.
+/// without a record set (`capacity`, `sites`, `checks`, `governing` and, with
+/// blocks on the tower, `mechanisms`: each block's own, the governing check
+/// taken over all and naming its `mechanism`), plus `curve`, the tower's
+/// capacity curve `[[d*, a*], …]` of `capacity.csv`, and `curves`, each
+/// mechanism's (the tower's first). An error is the command's one line, the
+/// file named `assess.toml`.
 pub fn assess_json(text: &str) -> Result<String, String> {
     let input = input(text)?;
     if !input.file.records.is_empty() {
@@ -28,13 +31,21 @@ pub fn assess_json(text: &str) -> Result<String, String> {
             "{ASSESS_ORIGIN}: assessment.records: the kinematic checks take no record set: the dynamic checks are assess_dynamic_json's"
         ));
     }
-    let capacity = input.capacity().map_err(|e| e.to_string())?;
-    let checks = input.kinematic_checks(&capacity).map_err(|e| e.to_string())?;
-    let mut out = assessment_json(input.name(), &capacity, &input.site, &checks, None);
-    if let Value::Object(map) = &mut out {
-        map.insert("curve".into(), json!(capacity.curve_points(CAPACITY_POINTS)));
-    }
+    // Without a record set the assessment is the kinematic part alone.
+    let done = Assessment::run(&input).map_err(|e| e.to_string())?;
+    let mut out = done.json(&input);
+    insert_curves(&mut out, &done);
     Ok(out.to_string())
+}
+
+/// `curve` (the tower's capacity curve, `[[d*, a*], …]`) and `curves` (each
+/// mechanism's, the tower's first), put into the page's `assessment.json`.
+fn insert_curves(out: &mut Value, done: &Assessment) {
+    if let Value::Object(map) = out {
+        map.insert("curve".into(), json!(done.capacity.curve_points(CAPACITY_POINTS)));
+        let curves: Vec<Value> = done.mechanisms().iter().map(|m| json!(m.capacity.curve_points(CAPACITY_POINTS))).collect();
+        map.insert("curves".into(), Value::Array(curves));
+    }
 }
 
 /// The NTC site parameters of SLD, SLV and SLC at a site of a hazard grid
@@ -63,8 +74,9 @@ pub fn grid_site_json(grid: &str, lon: f64, lat: f64, nominal_life: f64, use_coe
 /// of its table, the record set given as text: `assessment.records` is
 /// `[{ "name": "elcentro.AT2", "text": "…the file's content…" }, …]`, each
 /// record read by the reader of the command's files. The JSON text of
-/// `assessment.json` as the command writes it (with the dynamic checks), plus
-/// `curve` (the capacity curve, `[[d*, a*], …]`), `records_csv` and
+/// `assessment.json` as the command writes it (with the dynamic checks and,
+/// with blocks on the tower, each block's `mechanisms`), plus `curve` and
+/// `curves` (as [`assess_json`]'s), `records_csv` and
 /// `spectra_csv` (the texts of `records.csv` and `spectra.csv`) and
 /// `responses` (the rows of `records.csv` as objects).
 /// `progress(done, most)` is told after each record's run. An error is the
@@ -79,8 +91,8 @@ pub fn assess_dynamic_json(text: &str, progress: &(dyn Fn(usize, usize) + Sync))
     }
     let done = Assessment::run_observed(&input, &RecordCache::with_capacity(input.file.records.len()), progress).map_err(|e| e.to_string())?;
     let mut out = done.json(&input);
+    insert_curves(&mut out, &done);
     if let Value::Object(map) = &mut out {
-        map.insert("curve".into(), json!(done.capacity.curve_points(CAPACITY_POINTS)));
         if let Some((records, spectra)) = done.set_csvs() {
             map.insert("records_csv".into(), json!(records));
             map.insert("spectra_csv".into(), json!(spectra));
@@ -91,19 +103,34 @@ pub fn assess_dynamic_json(text: &str, progress: &(dyn Fn(usize, usize) + Sync))
 }
 
 /// The rows of `records.csv` as objects (the page's table of them): per
-/// dynamic check and record, its scale at λ = 1 and its response there.
+/// dynamic check and record, its scale at λ = 1 and the tower's response
+/// there, and `blocks`: each block's `name`, `max_control_displacement_m`
+/// (its own θ's d*) and `overturned` (it fell, or a block under it did), as
+/// records.csv's `<name>_…` columns.
 fn responses(done: &Assessment) -> Value {
     let Some((set, checks)) = done.dynamic_part() else { return json!([]) };
     let mut rows = Vec::new();
-    for c in checks {
-        for ((record, scale), response) in set.records.iter().zip(&c.fitted.scales).zip(&c.at_one.responses) {
+    for (c, check) in checks.iter().enumerate() {
+        for (i, ((record, scale), response)) in set.records.iter().zip(&check.fitted.scales).zip(&check.at_one.responses).enumerate() {
             let (d, overturned, slip, error) = match response {
                 Ok(r) => (r.max_displacement, Some(r.overturned), r.max_slip, None),
                 Err(e) => (None, None, None, Some(e.as_str())),
             };
+            let blocks: Vec<Value> = done
+                .blocks
+                .iter()
+                .map(|b| {
+                    let (d, overturned) = match &b.dynamic[c].at_one.responses[i] {
+                        Ok(r) => (r.max_displacement, Some(r.overturned)),
+                        Err(_) => (None, None),
+                    };
+                    json!({ "name": b.name, "max_control_displacement_m": d, "overturned": overturned })
+                })
+                .collect();
             rows.push(json!({
-                "limit_state": c.limit_state.as_str(), "record": record.path, "scale": scale,
+                "limit_state": check.limit_state.as_str(), "record": record.path, "scale": scale,
                 "max_control_displacement_m": d, "overturned": overturned, "max_building_slip_m": slip, "error": error,
+                "blocks": blocks,
             }));
         }
     }

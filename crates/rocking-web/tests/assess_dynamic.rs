@@ -54,6 +54,8 @@ fn records_given_as_text_give_the_commands_numbers() {
     assert_eq!(map.remove("records_csv"), Some(json!(records_csv)));
     assert_eq!(map.remove("spectra_csv"), Some(json!(spectra_csv)));
     assert!(map.remove("curve").is_some());
+    // One curve per mechanism: a tower alone has one.
+    assert_eq!(map.remove("curves").and_then(|c| c.as_array().map(Vec::len)), Some(1));
     // The rows of records.csv as objects: one per limit state and record.
     let responses = map.remove("responses").unwrap();
     assert_eq!(responses.as_array().map(Vec::len), Some(2 * RECORDS.len()));

@@ -1,0 +1,201 @@
+"""The assess tab with blocks on the tower: each block, with those above it,
+is a mechanism of its own turning on the block below (its capacity, its
+kinematic checks and, on a record set, its dynamic checks), and the
+governing check is taken over every mechanism, as `rocking assess` gives
+them. The stack is the assessment tests' tower (4 m × 12 m, 150 t, subsoil B:
+crates/rocking-assess/tests/data/tower_on_b.toml) carrying a slender belfry
+1.6 m × 8 m of 20 t and a lantern 0.8 m × 2 m of 2 t, the stack of
+crates/rocking-assess/tests/belfry_by_hand.rs, where the belfry governs.
+
+The page and the command run the same code on the same inputs with libm's
+functions on both targets, so the numbers are compared to the last bit; the
+governing check is also worked out by hand from the capacity's formulas."""
+
+import csv
+import io
+import json
+import math
+import re
+import subprocess
+import urllib.parse
+from pathlib import Path
+
+from conftest import BIN, OUT, ROOT, open_page
+from playwright.sync_api import expect
+
+TOWER_ON_B = ROOT / "crates" / "rocking-assess" / "tests" / "data" / "tower_on_b.toml"
+BLOCKS = [
+    {"name": "belfry", "width": 1.6, "height": 8.0, "mass": 2.0e4},
+    {"name": "lantern", "width": 0.8, "height": 2.0, "mass": 2.0e3},
+]
+BLOCKS_TOML = "".join(f'[[block]]\nname = "{b["name"]}"\nwidth = {b["width"]}\nheight = {b["height"]}\nmass = {b["mass"]}\n' for b in BLOCKS)
+# The page's scenario: the same tower and blocks, with a ground motion for the
+# simulate tab (an assessment takes none).
+SCENARIO = {
+    "name": "tower on B",
+    "tower": {"width": 4.0, "height": 12.0, "mass": 1.5e5},
+    "block": BLOCKS,
+    "ground": {"type": "harmonic", "amplitude": 0.3, "frequency": 2.0, "duration": 2.0},
+    "simulation": {"duration": 3.0},
+}
+# tower_on_b.toml's site, typed into the tab (its soil B, T1, FC 1.35, q 2 and
+# linear curve are those of the tab's first example too, and set again here).
+SITE = {
+    "SLD": {"ag": "0.062", "F0": "2.52", "Tc_star": "0.30"},
+    "SLV": {"ag": "0.155", "F0": "2.47", "Tc_star": "0.36"},
+    "SLC": {"ag": "0.196", "F0": "2.50", "Tc_star": "0.37"},
+}
+SYNTHETIC = [ROOT / "data" / "records" / "synthetic" / f"kt_0{k}.AT2" for k in (1, 2, 3)]
+# A short dynamic run: three records, λ 0.5 to 2 (a test's scan, not an engineer's).
+DYNAMIC = {"free_after": "2", "lambda.from": "0.5", "lambda.to": "2", "lambda.step": "0.5"}
+
+
+def command(tmp_path, records=False):
+    """`rocking assess` on tower_on_b.toml with the blocks on its tower
+    (and the short record set): assessment.json and records.csv."""
+    text = TOWER_ON_B.read_text()
+    assert "[site]\n" in text
+    text = text.replace("[site]\n", BLOCKS_TOML + "\n[site]\n", 1)
+    if records:
+        # [assessment] is the file's last table.
+        paths = ", ".join(f'"{p}"' for p in SYNTHETIC)
+        text += f"records = [{paths}]\nfree_after = 2.0\nlambda = {{ from = 0.5, to = 2.0, step = 0.5 }}\n"
+    path = tmp_path / "stack.toml"
+    path.write_text(text)
+    out = tmp_path / "assess"
+    subprocess.run([BIN, "assess", str(path), "--out", str(out)], check=True, capture_output=True, text=True)
+    records_csv = (out / "records.csv").read_text() if records else None
+    return json.loads((out / "assessment.json").read_text()), records_csv
+
+
+def open_stack(browser, server):
+    """The page with the stack from a link, the assess tab shown with tower_on_b's site typed in."""
+    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(SCENARIO)))
+    page.click("#tab-assess")
+    expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
+    page.select_option('[name="site.code"]', "ntc2018")
+    page.select_option('[name="site.soil"]', "B")
+    page.select_option('[name="site.topography"]', "T1")
+    for state, keys in SITE.items():
+        for key, value in keys.items():
+            page.fill(f'[name="site.{state}.{key}"]', value)
+    page.fill('[name="assessment.confidence_factor"]', "1.35")
+    page.fill('[name="assessment.q"]', "2")
+    page.select_option('[name="assessment.capacity"]', "linear")
+    page.wait_for_function("document.getElementById('assess').assessment?.sites?.SLC?.ag_g === 0.196")
+    expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
+    return page
+
+
+def page_assessment(page):
+    return page.evaluate("(() => { const { curve, curves, ms, ...r } = document.getElementById('assess').assessment; return r; })()")
+
+
+def test_every_mechanism_of_the_stack_is_the_commands(browser, server, tmp_path):
+    page = open_stack(browser, server)
+    expected, _ = command(tmp_path)
+    got = page_assessment(page)
+    # The whole of assessment.json: the tower's capacity and checks, each
+    # mechanism's, the governing check over all of them, naming its mechanism.
+    assert [m["name"] for m in expected["mechanisms"]] == ["tower", "belfry", "lantern"]
+    assert got == expected
+
+    # By hand (the capacity's formulas, as belfry_by_hand.rs works them out):
+    # the belfry with the lantern on it, b = 0.8 m, h = (20 t · 4 m + 2 t · 9 m)/22 t
+    # = 98/22 m, α0 = b/h; a0* = α0 g / FC. Its activation on subsoil B where
+    # SS is capped at 1.2 (ag < 0.198 g): ag = a0*/(1.2 g); the SLV linear
+    # kinematic check q = 2 times that against 0.155 g: it governs.
+    alpha0 = 0.8 * 22 / 98
+    activation = alpha0 / 1.35 / 1.2
+    governing = expected["governing"]
+    assert (governing["mechanism"], governing["limit_state"], governing["method"]) == ("belfry", "SLV", "linear_kinematic")
+    # The capacity: a few roundings (1e-14); the activation bisected to 1e-12 g (1e-9 relative).
+    assert math.isclose(got["mechanisms"][1]["capacity"]["alpha0"], alpha0, rel_tol=1e-14)
+    assert math.isclose(got["governing"]["zeta_E"], 2 * activation / 0.155, rel_tol=1e-9)
+
+    # The table: each mechanism under a row saying what turns on what, its four checks, one governing.
+    heads = page.locator("#assess-checks tr.mechanism").all_text_contents()
+    assert heads == [
+        "tower carrying belfry and lantern, turning on its springing level",
+        "belfry carrying lantern, turning on the tower",
+        "lantern, turning on the belfry",
+    ]
+    for m in expected["mechanisms"]:
+        rows = page.locator(f'#assess-checks tr[data-mechanism="{m["name"]}"][data-method]')
+        expect(rows).to_have_count(4)
+        zetas = [float(v) for v in rows.locator("td:nth-child(5)").evaluate_all("tds => tds.map(td => td.dataset.value)")]
+        assert zetas == [c["zeta_E"] for c in m["checks"]]
+    expect(page.locator("#assess-checks tr.governing")).to_have_count(1)
+    expect(page.locator('#assess-checks tr.governing[data-mechanism="belfry"][data-method="linear_kinematic"]')).to_have_count(1)
+    expect(page.locator("#assess-governing")).to_contain_text("Governing: SLV linear kinematic of the belfry")
+    # The capacity: a column per mechanism, each its capacity's numbers.
+    assert page.locator("#assess-capacity thead th").all_text_contents() == ["quantity", "tower", "belfry", "lantern", "unit"]
+    for m in expected["mechanisms"]:
+        cells = page.locator(f'#assess-capacity td[data-mechanism="{m["name"]}"]')
+        shown = cells.evaluate_all("tds => tds.map(td => [td.dataset.key, Number(td.dataset.value)])")
+        assert shown and all(m["capacity"][k] == v for k, v in shown), (m["name"], shown)
+
+    # The ADRS chart shows the governing mechanism's curve, then the one chosen:
+    # each point on a*(d) = a0* (1 − d/d0) of that mechanism (the curve's 201
+    # points interpolated, exact on a line up to rounding, 1e-12).
+    chart = page.locator("#assess-adrs")
+    for name in ["belfry", "lantern"]:
+        if name != "belfry":
+            page.select_option("#assess-adrs-mechanism", name)
+        expect(chart).to_have_attribute("data-mechanism", name)
+        expect(chart.locator(".u-title")).to_contain_text(f"Capacity curve in the ADRS plane: {name}")
+        cap = next(m["capacity"] for m in expected["mechanisms"] if m["name"] == name)
+        points = json.loads(chart.get_attribute("data-points"))
+        assert points[0]["d"] == cap["d_SLV_m"]
+        for p in points:
+            assert abs(p["a"] - cap["a0_star_m_s2"] * (1 - p["d"] / cap["d0_m"])) < 1e-12 * cap["a0_star_m_s2"], (name, p)
+    page.select_option("#assess-adrs-mechanism", "")
+    expect(chart).to_have_attribute("data-mechanism", "belfry")
+    OUT.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(OUT / "assess-blocks.png"), full_page=True)
+    assert page.errors == [], page.errors
+    page.close()
+
+
+def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server, tmp_path):
+    page = open_stack(browser, server)
+    expected, records_csv = command(tmp_path, records=True)
+    page.set_input_files("#assess-records-file", [str(p) for p in SYNTHETIC])
+    for key, value in DYNAMIC.items():
+        page.fill(f'[name="assessment.{key}"]', value)
+    page.click("#assess-dynamic-run")
+    expect(page.locator("#assess-dynamic")).to_have_attribute("data-state", "done", timeout=300_000)
+    got = page.evaluate("document.getElementById('assess-dynamic').assessment")
+    # The command names each record by its path, the page by its file's name.
+    for d in [*expected["dynamic"], *(d for m in expected["mechanisms"] for d in m["dynamic"])]:
+        d["records"] = [Path(p).name for p in d["records"]]
+    for p in SYNTHETIC:
+        records_csv = records_csv.replace(f",{p},", f",{p.name},")
+    for key in ["capacity", "sites", "checks", "governing", "dynamic", "mechanisms"]:
+        assert got[key] == expected[key], key
+    assert got["records_csv"] == records_csv
+    # Every mechanism has its two dynamic checks, each completed; the scan
+    # found a λ where one stops holding (the runs reached the bisection).
+    for m in got["mechanisms"]:
+        dynamic = [c for c in m["checks"] if c["method"] == "nonlinear_dynamic"]
+        assert [c["limit_state"] for c in dynamic] == ["SLV", "SLC"] and all(c.get("completed", True) for c in dynamic), m["name"]
+    assert any(d["lambda_fails"] is not None for m in got["mechanisms"] for d in m["dynamic"])
+    # The table shows every mechanism's rows, dynamic ones too (six per mechanism).
+    for m in expected["mechanisms"]:
+        expect(page.locator(f'#assess-checks tr[data-mechanism="{m["name"]}"][data-method]')).to_have_count(6)
+    # The records' table: each block's columns after the building's, as records.csv's.
+    head = page.locator("#assess-records thead th").all_text_contents()
+    assert head[-5:] == ["belfry: max d* (m)", "belfry: overturned", "lantern: max d* (m)", "lantern: overturned", "error"]
+    rows = list(csv.DictReader(io.StringIO(records_csv)))
+    cells = page.locator("#assess-records tbody tr").evaluate_all(
+        "rows => rows.map(r => [...r.cells].map(c => c.querySelector('[data-value]')?.dataset.value ?? c.textContent))"
+    )
+    number = lambda x: float(x) if x not in ("", "—") else None
+    assert [[c[1], number(c[6]), c[7], number(c[8]), c[9]] for c in cells] == [
+        [r["record"], number(r["belfry_max_control_displacement_m"]), r["belfry_overturned"], number(r["lantern_max_control_displacement_m"]), r["lantern_overturned"]]
+        for r in rows
+    ]
+    expect(page.locator("#assess-dynamic-label")).to_have_text(re.compile(r"Done: \d+ runs of a record in"))
+    page.locator("#assess-dynamic").screenshot(path=str(OUT / "assess-blocks-dynamic.png"))
+    assert page.errors == [], page.errors
+    page.close()
