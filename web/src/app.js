@@ -7,7 +7,7 @@ import { drawHeatmap } from "./heatmap.js";
 import { Animation } from "./animation.js";
 import { Charts } from "./charts.js";
 import { SpectrumView } from "./spectrum.js";
-import { AssessView } from "./assess.js";
+import { AssessView, keyOf } from "./assess.js";
 import { setupTabs } from "./tabs.js";
 import { TownView } from "./town.js";
 import examples, { records } from "../examples.js";
@@ -70,9 +70,9 @@ function formFields(keys) {
   return { fields, groundKeys, blockFields };
 }
 
-/** A key's field: its name, unit, placeholder, and choices if it has them. */
+/** A key's field: its name, unit, placeholder, choices if it has them, and whether its text is kept as text (`s`: a string key). */
 function fieldOf(k) {
-  const f = { k: k.name, u: shownUnit(k), d: k.placeholder };
+  const f = { k: k.name, u: shownUnit(k), d: k.placeholder, s: k.kind === "string" };
   if (k.choices.length) Object.assign(f, { t: "select", o: k.placeholder ? ["", ...k.choices] : k.choices, u: "" });
   return f;
 }
@@ -120,12 +120,6 @@ const animation = new Animation($("tower-canvas"), {
   slip: $("exaggerate-slip"),
   speed: $("speed"),
 });
-
-/** The dotted key an error line names (`scenario.toml: tower.width: must be …` → `tower.width`), or "". */
-function keyOf(message) {
-  const m = /^(?:[^:]*\.toml: )?([A-Za-z_][\w.]*): /.exec(message);
-  return m ? m[1] : "";
-}
 
 /**
  * Shows an error line (or clears it with ""): in the banner (kept in view),
@@ -296,7 +290,8 @@ function field(section, f, value, where = {}) {
   input.id = `field-${input.name}`;
   input.addEventListener(f.t === "select" ? "change" : "input", () => {
     const table = tableOfField();
-    const v = f.t === "select" ? input.value || undefined : parseValue(input.value);
+    // A string key's text stays text (a block named "3" is told why that is no name, not that 3 is a number).
+    const v = f.t === "select" ? input.value || undefined : f.s ? input.value.trim() || undefined : parseValue(input.value);
     if (v === undefined) delete table[f.k];
     else table[f.k] = v;
     if (isMotion(section) && f.k === "type") {

@@ -39,9 +39,13 @@ function fieldHeading(name) {
   return m ? `${m[1]} (${m[2]})` : name;
 }
 
-/** The dotted key an error line names (`assess.toml: site.SLV.ag: must be …` → `site.SLV.ag`), or "". */
-function keyOf(message) {
-  const m = /^(?:[^:]*\.toml: )?([A-Za-z_][\w.]*): /.exec(message);
+/**
+ * The dotted key an error line names (`assess.toml: site.SLV.ag: must be …`
+ * → `site.SLV.ag`; a block's by its place, `block[1].name`), or "". The
+ * page's form reads its errors with it too.
+ */
+export function keyOf(message) {
+  const m = /^(?:[^:]*\.toml: )?([A-Za-z_][\w.]*(?:\[\d+\][\w.]*)*): /.exec(message);
   return m ? m[1] : "";
 }
 

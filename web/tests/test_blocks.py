@@ -164,3 +164,57 @@ def test_a_sweep_over_the_belfrys_width(browser, server, tmp_path):
     expect(page.locator("#sweep-label")).to_contain_text("3 cases")
     assert page.errors == [], page.errors
     page.close()
+
+
+def test_a_blocks_error_is_shown_at_its_field(browser, server):
+    """An error on a block's key is marked at the block's field with the
+    line's words beside it, as a tower key's is: a name that is no plain name
+    (the engine names it by the block's place, `block[1].name`), a name of
+    digits (kept as text: the engine says why it is no name, not that it is a
+    number), and the width of an unnamed block (`block2.width`); on the assess
+    tab too, and cleared once mended. Screenshot: target/web-tests/block-error.png."""
+    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(BELFRY)))
+
+    def marked(name, words):
+        field = page.locator(f'[name="{name}"]')
+        expect(field).to_have_attribute("aria-invalid", "true")
+        expect(page.locator("#error")).to_contain_text(f"{name}: ")
+        note = page.locator(f'[id="{field.get_attribute("aria-describedby")}"]')
+        expect(note).to_contain_text(words)
+        # The note sits right after the field's label, in the block's fieldset.
+        assert note.evaluate("n => n.previousElementSibling.contains(document.querySelector(`[name='${n.id.slice(6)}']`))")
+        expect(page.locator("[aria-invalid]")).to_have_count(1)
+
+    name = page.locator('input[name="block[1].name"]')
+    name.fill("bell tower")
+    name.blur()
+    marked("block[1].name", '"bell tower" is not a plain name')
+    OUT.mkdir(parents=True, exist_ok=True)
+    page.locator("fieldset.block").screenshot(path=str(OUT / "block-error.png"))
+    page.locator('input[name="block[1].name"]').fill("3")
+    page.locator('input[name="block[1].name"]').blur()
+    marked("block[1].name", '"3" is not a plain name')
+    # Unnamed, the block is block2 (the tower is the first): its fields say so.
+    page.locator('input[name="block[1].name"]').fill("")
+    page.locator('input[name="block[1].name"]').blur()
+    computed(page)
+    width = page.locator('input[name="block2.width"]')
+    width.fill("-1")
+    width.blur()
+    marked("block2.width", "must be a finite number > 0, got -1")
+    page.locator('input[name="block2.width"]').fill("3.2")
+    page.locator('input[name="block2.width"]').blur()
+    computed(page)
+    expect(page.locator("[aria-invalid]")).to_have_count(0)
+    expect(page.locator(".field-error")).to_have_count(0)
+    # With the assess tab shown, the form beside it marks the block's field.
+    page.click("#tab-assess")
+    page.locator('input[name="block[1].name"]').fill("bell tower")
+    page.locator('input[name="block[1].name"]').blur()
+    marked("block[1].name", '"bell tower" is not a plain name')
+    expect(page.locator("#assess-error")).to_contain_text("block[1].name")
+    page.locator('input[name="block[1].name"]').fill("belfry")
+    page.locator('input[name="block[1].name"]').blur()
+    expect(page.locator("[aria-invalid]")).to_have_count(0)
+    assert page.errors == [], page.errors
+    page.close()
