@@ -11,7 +11,6 @@
 use crate::block::BlockNames;
 use crate::run::Outcome;
 use crate::sweep::Cell;
-use rocking::stack::run::BlockSummary;
 use rocking::{EndReason, Event, Motion, Sample};
 use std::borrow::Cow;
 
@@ -348,6 +347,159 @@ fn time_in(o: &Outcome, m: Motion) -> Cell {
     float(Some(o.summary.time_in(m)))
 }
 
+/// A quantity the summary reports of the tower and again of each block on
+/// it, written once: the tower's field (`impacts`, in [`SUMMARY`], through
+/// `tower_field!`) and each block's, named `{name}_{suffix}`
+/// (`belfry_impacts`), after the fields of [`SUMMARY`], in the order of
+/// [`SUMMARY_BLOCKS`].
+#[derive(Clone, Copy)]
+pub struct BodyField {
+    /// The tower's field.
+    pub tower: &'static str,
+    /// The part of a block's field name after `{name}_`.
+    pub suffix: &'static str,
+    /// What the values are.
+    pub kind: Kind,
+    /// SI unit, empty for a count, a ratio or a flag.
+    pub unit: &'static str,
+    /// What the tower's is, for the reference.
+    pub tower_meaning: &'static str,
+    /// What a block's is, for the reference.
+    pub meaning: &'static str,
+    /// How it is read for body `k`: the tower for 0, else the `k`-th block above it.
+    pub read: fn(&Outcome, usize) -> Cell,
+}
+
+impl std::fmt::Debug for BodyField {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BodyField").field("suffix", &self.suffix).finish_non_exhaustive()
+    }
+}
+
+/// What the run found of one body: the tower or a block on it.
+struct Body {
+    /// Its largest |θ| (a block's relative to the block below).
+    max_abs_theta: f64,
+    /// Its slenderness α.
+    alpha: f64,
+    /// Its impacts (a block's on the block below).
+    impacts: u64,
+    /// When it first lifted.
+    first_uplift_time: Option<f64>,
+    /// Its largest friction demand: the tower's at its pivot, a block's on the block below.
+    max_friction_demand: f64,
+}
+
+/// Body `k` of `o`: the tower for 0 (`None` without one), else the `k`-th block above it.
+fn body(o: &Outcome, k: usize) -> Option<Body> {
+    if k == 0 {
+        let s = &o.summary;
+        return o.derived.alpha.map(|alpha| Body {
+            max_abs_theta: s.max_abs_theta(),
+            alpha,
+            impacts: s.impacts,
+            first_uplift_time: s.first_uplift_time,
+            max_friction_demand: s.max_pivot_friction_demand,
+        });
+    }
+    let b = o.summary.stack.as_ref()?.blocks().get(k - 1)?;
+    Some(Body {
+        max_abs_theta: b.max_abs_theta,
+        alpha: o.blocks.get(k - 1)?.alpha(),
+        impacts: b.impacts as u64,
+        first_uplift_time: b.first_uplift_time,
+        max_friction_demand: b.max_friction_demand,
+    })
+}
+
+/// The largest |θ| of each body.
+const MAX_ABS_THETA: BodyField = BodyField {
+    tower: "max_abs_theta_rad",
+    suffix: "max_abs_theta_rad",
+    kind: Kind::Number,
+    unit: "rad",
+    tower_meaning: "largest rotation in absolute value",
+    meaning: "largest rotation in absolute value of the block relative to the block below",
+    read: |o, k| float(body(o, k).map(|b| b.max_abs_theta)),
+};
+
+/// That peak over the body's own α.
+const MAX_THETA_OVER_ALPHA: BodyField = BodyField {
+    tower: "max_theta_over_alpha",
+    suffix: "max_theta_over_alpha",
+    kind: Kind::Number,
+    unit: "",
+    tower_meaning: "largest rotation over α",
+    meaning: "that peak over the block's own slenderness α = atan(B/H)",
+    read: |o, k| float(body(o, k).map(|b| b.max_abs_theta / b.alpha)),
+};
+
+/// The impacts of each body.
+const IMPACTS: BodyField = BodyField {
+    tower: "impacts",
+    suffix: "impacts",
+    kind: Kind::Number,
+    unit: "",
+    tower_meaning: "number of impacts",
+    meaning: "impacts of the block on the block below",
+    read: |o, k| body(o, k).map_or(Cell::Empty, |b| count(b.impacts)),
+};
+
+/// Whether it overturned: the tower's field says whether any body did (it
+/// is there without a tower too).
+const OVERTURNED: BodyField = BodyField {
+    tower: "overturned",
+    suffix: "overturned",
+    kind: Kind::Flag,
+    unit: "",
+    tower_meaning: "whether the tower overturned",
+    meaning: "whether the block overturned (its rotation reached π/2; the run stops there)",
+    read: |o, k| match k {
+        0 => Cell::Bool(o.summary.overturned()),
+        k => Cell::Bool(o.summary.stack.is_some_and(|s| s.overturned_block == Some(k))),
+    },
+};
+
+/// When each body first lifted.
+const FIRST_UPLIFT_TIME: BodyField = BodyField {
+    tower: "first_uplift_time_s",
+    suffix: "first_uplift_time_s",
+    kind: Kind::Number,
+    unit: "s",
+    tower_meaning: "time of the first uplift",
+    meaning: "first time the block lifted off the block below",
+    read: |o, k| float(body(o, k).and_then(|b| b.first_uplift_time)),
+};
+
+/// The largest friction demand under each body.
+const FRICTION_DEMAND: BodyField = BodyField {
+    tower: "max_pivot_friction_demand",
+    suffix: "max_friction_demand",
+    kind: Kind::Number,
+    unit: "",
+    tower_meaning: "largest ratio |f_x| / f_y of friction force to normal force at the pivot (Shenton); null once f_y reached zero (tower_uplift_detected), where it grows without bound",
+    meaning: "largest ratio of the tangential to the normal force between the block and the block below (the friction the joint needs; the model lets it never slide); empty once the block above lost contact",
+    read: |o, k| float(body(o, k).map(|b| b.max_friction_demand)),
+};
+
+/// The tower's field of a quantity of every body ([`BodyField`]): an entry of [`SUMMARY`].
+macro_rules! tower_field {
+    ($body:ident) => {
+        Field {
+            name: $body.tower,
+            kind: $body.kind,
+            unit: $body.unit,
+            meaning: $body.tower_meaning,
+            present: always,
+            read: |o| ($body.read)(o, 0),
+        }
+    };
+}
+
+/// The fields of each block on the tower, in order: the quantities of every
+/// body, read for the block.
+pub const SUMMARY_BLOCKS: &[BodyField] = &[MAX_ABS_THETA, MAX_THETA_OVER_ALPHA, IMPACTS, FIRST_UPLIFT_TIME, OVERTURNED, FRICTION_DEMAND];
+
 /// The fields of `summary.json` but `wall_time_s` (last, not a result of the
 /// model), in order: also the result columns of `sweep.csv`.
 pub const SUMMARY: &[Field] = &[
@@ -407,22 +559,8 @@ pub const SUMMARY: &[Field] = &[
         present: always,
         read: |o| float(o.derived.slip_acceleration_g),
     },
-    Field {
-        name: "max_abs_theta_rad",
-        kind: Kind::Number,
-        unit: "rad",
-        meaning: "largest rotation in absolute value",
-        present: always,
-        read: |o| tower(o, o.summary.max_abs_theta()),
-    },
-    Field {
-        name: "max_theta_over_alpha",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "largest rotation over α",
-        present: always,
-        read: |o| float(o.derived.alpha.map(|a| o.summary.max_abs_theta() / a)),
-    },
+    tower_field!(MAX_ABS_THETA),
+    tower_field!(MAX_THETA_OVER_ALPHA),
     Field {
         name: "max_abs_slip_m",
         kind: Kind::Number,
@@ -439,22 +577,8 @@ pub const SUMMARY: &[Field] = &[
         present: always,
         read: |o| building(o, o.summary.final_slip),
     },
-    Field {
-        name: "impacts",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "number of impacts",
-        present: always,
-        read: |o| if o.derived.alpha.is_some() { count(o.summary.impacts) } else { Cell::Empty },
-    },
-    Field {
-        name: "overturned",
-        kind: Kind::Flag,
-        unit: "",
-        meaning: "whether the tower overturned",
-        present: always,
-        read: |o| Cell::Bool(o.summary.overturned()),
-    },
+    tower_field!(IMPACTS),
+    tower_field!(OVERTURNED),
     Field {
         name: "overturn_time_s",
         kind: Kind::Number,
@@ -463,14 +587,7 @@ pub const SUMMARY: &[Field] = &[
         present: always,
         read: |o| float(o.summary.overturn_time),
     },
-    Field {
-        name: "first_uplift_time_s",
-        kind: Kind::Number,
-        unit: "s",
-        meaning: "time of the first uplift",
-        present: always,
-        read: |o| float(o.summary.first_uplift_time),
-    },
+    tower_field!(FIRST_UPLIFT_TIME),
     Field {
         name: "first_slip_time_s",
         kind: Kind::Number,
@@ -495,14 +612,7 @@ pub const SUMMARY: &[Field] = &[
         present: always,
         read: |o| tower(o, o.summary.max_top_abs_acceleration),
     },
-    Field {
-        name: "max_pivot_friction_demand",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "largest ratio |f_x| / f_y of friction force to normal force at the pivot (Shenton); null once f_y reached zero (tower_uplift_detected), where it grows without bound",
-        present: always,
-        read: |o| tower(o, o.summary.max_pivot_friction_demand),
-    },
+    tower_field!(FRICTION_DEMAND),
     Field {
         name: "tower_uplift_detected",
         kind: Kind::Flag,
@@ -814,82 +924,6 @@ pub fn fields_of(fields: &[Field], layout: &Layout, outcome: &Outcome) -> Vec<(S
         .map(|f| (f.name.to_string(), (f.read)(outcome)))
         .collect()
 }
-
-/// A summary field repeated for each block on the tower: named `{name}_{suffix}`,
-/// after the fields of [`SUMMARY`].
-#[derive(Clone, Copy)]
-pub struct BlockField {
-    /// The part of the name after `{name}_`.
-    pub suffix: &'static str,
-    /// What the values are.
-    pub kind: Kind,
-    /// SI unit, empty for a count, a ratio or a flag.
-    pub unit: &'static str,
-    /// What it is, for the reference.
-    pub meaning: &'static str,
-    /// How it is read for the `k`-th block above the tower (from 1).
-    pub read: fn(&Outcome, usize) -> Cell,
-}
-
-impl std::fmt::Debug for BlockField {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("BlockField").field("suffix", &self.suffix).finish_non_exhaustive()
-    }
-}
-
-/// What the run found of the `k`-th block above the tower (from 1).
-fn block_of(o: &Outcome, k: usize) -> Option<&BlockSummary> {
-    o.summary.stack.as_ref().and_then(|s| s.blocks().get(k - 1))
-}
-
-/// The fields of each block on the tower.
-pub const SUMMARY_BLOCKS: &[BlockField] = &[
-    BlockField {
-        suffix: "max_abs_theta_rad",
-        kind: Kind::Number,
-        unit: "rad",
-        meaning: "largest rotation in absolute value of the block relative to the block below",
-        read: |o, k| float(block_of(o, k).map(|b| b.max_abs_theta)),
-    },
-    BlockField {
-        suffix: "max_theta_over_alpha",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "that peak over the block's own slenderness α = atan(B/H)",
-        read: |o, k| {
-            let alpha = o.blocks.get(k - 1).map(rocking::stack::Block::alpha);
-            float(block_of(o, k).zip(alpha).map(|(b, a)| b.max_abs_theta / a))
-        },
-    },
-    BlockField {
-        suffix: "impacts",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "impacts of the block on the block below",
-        read: |o, k| block_of(o, k).map_or(Cell::Empty, |b| count(b.impacts as u64)),
-    },
-    BlockField {
-        suffix: "first_uplift_time_s",
-        kind: Kind::Number,
-        unit: "s",
-        meaning: "first time the block lifted off the block below",
-        read: |o, k| float(block_of(o, k).and_then(|b| b.first_uplift_time)),
-    },
-    BlockField {
-        suffix: "overturned",
-        kind: Kind::Flag,
-        unit: "",
-        meaning: "whether the block overturned (its rotation reached π/2; the run stops there)",
-        read: |o, k| Cell::Bool(o.summary.stack.is_some_and(|s| s.overturned_block == Some(k))),
-    },
-    BlockField {
-        suffix: "max_friction_demand",
-        kind: Kind::Number,
-        unit: "",
-        meaning: "largest ratio of the tangential to the normal force between the block and the block below (the friction the joint needs; the model lets it never slide); empty once the block above lost contact",
-        read: |o, k| float(block_of(o, k).map(|b| b.max_friction_demand)),
-    },
-];
 
 /// The names of the summary fields of a run of `layout`, in order: those of
 /// [`SUMMARY`] present, then each block's ([`SUMMARY_BLOCKS`]).

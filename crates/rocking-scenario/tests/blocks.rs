@@ -88,6 +88,42 @@ fn a_belfrys_outputs_are_named_by_it() {
     assert!(summary["max_seat_impulse_ratio"].as_f64().is_some());
 }
 
+/// The quantities the summary reports of every body, for the tower and for
+/// the belfry, read back from the event log (not from the summary's
+/// tracker): the impacts and the first uplift are counted and found among
+/// each body's events, the peak over α divided by the slenderness by hand
+/// (atan(4/12) for the tower, atan(2/5) for the belfry), and the overturning
+/// flags are false with no `overturn` event.
+#[test]
+fn every_bodys_fields_agree_with_its_events() {
+    let case = scenario(&text(BELFRY)).and_then(|s| s.build().map_err(|e| e.to_string())).expect("the case");
+    let outcome = case.run(RunOptions::ALL).expect("the run");
+    let summary = summary_json(&outcome, 0.0);
+    let kinds: Vec<String> = outcome.events.iter().map(|e| event_kind(&outcome.layout, e).into_owned()).collect();
+    assert!(!kinds.iter().any(|k| k.ends_with("overturn")), "{kinds:?}");
+    for (prefix, alpha) in [("", (4.0f64 / 12.0).atan()), ("belfry_", (2.0f64 / 5.0).atan())] {
+        let field = |name: &str| summary[format!("{prefix}{name}")].clone();
+        let impacts = kinds.iter().filter(|k| **k == format!("{prefix}impact")).count();
+        assert!(impacts > 0, "{prefix}: no impact");
+        assert_eq!(field("impacts").as_u64(), Some(impacts as u64), "{prefix}impacts");
+        let uplift = kinds.iter().position(|k| *k == format!("{prefix}uplift")).map(|i| outcome.events[i].time);
+        assert_eq!(field("first_uplift_time_s").as_f64(), uplift, "{prefix}first_uplift_time_s");
+        let peak = field("max_abs_theta_rad").as_f64().expect("a peak");
+        let ratio = field("max_theta_over_alpha").as_f64().expect("a ratio");
+        // One division, and atan by hand against the library's: a few roundings.
+        assert!(
+            (ratio - peak / alpha).abs() <= 4.0 * f64::EPSILON * ratio,
+            "{prefix}: {ratio} against {}",
+            peak / alpha
+        );
+        assert_eq!(field("overturned"), serde_json::Value::Bool(false), "{prefix}overturned");
+    }
+    // The friction demands: the tower's at its pivot, the belfry's on the shaft, each a ratio > 0.
+    for name in ["max_pivot_friction_demand", "belfry_max_friction_demand"] {
+        assert!(summary[name].as_f64().is_some_and(|d| d > 0.0 && d.is_finite()), "{name}: {}", summary[name]);
+    }
+}
+
 /// A sweep over `belfry.width` sets the width of the block so named (its
 /// uplift threshold, and so its first uplift, moves with it), refuses a
 /// block's name and a name no block has, has the block's fields as columns,
