@@ -319,8 +319,12 @@ class Assessment:
         json: ``assessment.json`` as a dict: ``capacity``, ``sites``, ``checks``
             (each with ``limit_state``, ``method``, ``demand``, ``capacity``,
             ``unit``, ``holds``, ``ag_capacity_g``, ``zeta_E``), ``governing``, ``dynamic``.
-        checks: ``json["checks"]``.
-        governing: ``json["governing"]``, the check of least ζ_E.
+        checks: ``json["checks"]`` (the tower's).
+        governing: ``json["governing"]``, the check of least ζ_E (with blocks
+            on the tower, over every mechanism, its ``mechanism`` named).
+        mechanisms: ``json["mechanisms"]`` with blocks on the tower (each
+            mechanism's ``name``, ``block``, ``capacity``, ``checks``,
+            ``governing``, ``dynamic``, the tower's first), else empty.
         capacity: The columns of ``capacity.csv`` (``d_star_m``, ``a_star_m_s2``).
         records: The columns of ``records.csv`` (with a record set, else None).
         spectra: The columns of ``spectra.csv`` (with a record set, else None).
@@ -332,6 +336,7 @@ class Assessment:
         self.json: Dict[str, Any] = json.loads(raw["assessment"] or "{}")
         self.checks: List[Dict[str, Any]] = self.json["checks"]
         self.governing: Optional[Dict[str, Any]] = self.json["governing"]
+        self.mechanisms: List[Dict[str, Any]] = self.json.get("mechanisms", [])
         self.capacity = _csv_columns(raw["capacity"])
         self.records = _csv_columns(raw["records"])
         self.spectra = _csv_columns(raw["spectra"])
