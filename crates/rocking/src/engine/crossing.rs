@@ -27,16 +27,16 @@ const MAX_POINTS: usize = 2 * MAX_ROOTS + 2;
 /// can exist (one beyond would be dropped). On the stack and not zeroed when
 /// made: no allocation and no fill in the inner loop.
 #[derive(Default)]
-pub(super) struct Points(ArrayVec<(f64, f64), MAX_POINTS>);
+pub(crate) struct Points(ArrayVec<(f64, f64), MAX_POINTS>);
 
 impl Points {
     #[inline]
-    pub(super) fn push(&mut self, p: (f64, f64)) {
+    pub(crate) fn push(&mut self, p: (f64, f64)) {
         let _ = self.0.try_push(p);
     }
 
     #[inline]
-    pub(super) fn as_slice(&self) -> &[(f64, f64)] {
+    pub(crate) fn as_slice(&self) -> &[(f64, f64)] {
         &self.0
     }
 }
@@ -45,24 +45,47 @@ impl Points {
 /// isolated in the Bernstein form and narrowed by Newton, each with θ there.
 #[inline(always)]
 pub(super) fn theta_extremes<const N: usize>(d: &DenseOutput<N>, t0: f64, t1: f64) -> Points {
+    // θ and θ̇ are the state's components 0 and 1 (`State::from_components`).
+    extremes(d, t0, t1, 0, 1)
+}
+
+/// The extremes of the component `value` of the dense output inside a step
+/// whose rate is the component `rate` (θ_k and θ̇_k of the stack): the roots
+/// of `rate`, isolated in the Bernstein form and narrowed by Newton, each
+/// with `value` there.
+#[inline(always)]
+pub(crate) fn extremes<const N: usize>(d: &DenseOutput<N>, t0: f64, t1: f64, value: usize, rate: usize) -> Points {
     let h = t1 - t0;
     let mut points = Points::default();
-    bernstein::isolate(&bernstein::coefficients(d, 1, 0.0), &mut |xa, xb| {
+    bernstein::isolate(&bernstein::coefficients(d, rate, 0.0), &mut |xa, xb| {
         let (ta, tb) = (t0 + xa * h, (t0 + xb * h).min(t1));
-        let sign = if State::from_components(&d.state(ta)).theta_dot < 0.0 { 1.0 } else { -1.0 };
-        let rate = |t: f64| {
+        let sign = if d.state(ta)[rate] < 0.0 { 1.0 } else { -1.0 };
+        let rising = |t: f64| {
             let (y, dy) = d.state_and_rate(t);
-            (sign * State::from_components(&y).theta_dot, sign * State::from_components(&dy).theta_dot)
+            (sign * y[rate], sign * dy[rate])
         };
-        let (va, vb) = (rate(ta).0, rate(tb).0);
+        let (va, vb) = (rising(ta).0, rising(tb).0);
         let root = if va < 0.0 && vb >= 0.0 {
-            find_crossing_newton(rate, ta, va, tb, vb).tb
+            find_crossing_newton(rising, ta, va, tb, vb).tb
         } else {
             0.5 * (ta + tb)
         };
-        points.push((root, State::from_components(&d.state(root)).theta));
+        points.push((root, d.state(root)[value]));
     });
     points
+}
+
+/// A bracket `(ta, tb)` around the first root inside the step `[t0, t1]` of
+/// the component `j` of the dense output (`u̇` for the end of a slip),
+/// isolated in the Bernstein form; `None` if it has none.
+#[inline(always)]
+pub(crate) fn first_root<const N: usize>(d: &DenseOutput<N>, j: usize, t0: f64, t1: f64) -> Option<(f64, f64)> {
+    let h = t1 - t0;
+    let mut bracket = None;
+    bernstein::isolate(&bernstein::coefficients(d, j, 0.0), &mut |xa, xb| {
+        bracket.get_or_insert((t0 + xa * h, (t0 + xb * h).min(t1)));
+    });
+    bracket
 }
 
 /// The first transition in the step: its instant and condition. A step
@@ -129,7 +152,7 @@ fn theta_crossing<const N: usize>(e: &Ends, i: usize, d: &DenseOutput<N>, theta_
 #[inline(always)]
 fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &DenseOutput<N>, on_zero: OnZero) -> Option<f64> {
     let (c, kernel, regime, (piece, vpiece)) = (e.list[i], e.kernel, e.regime, e.pieces);
-    let (t0, t1, h) = (e.t0, e.t1, e.h);
+    let (t0, t1) = (e.t0, e.t1);
     let value = |t: f64| {
         let y = State::from_components(&d.state(t));
         let (a_g, g_e) = if c.uses_ground() {
@@ -142,11 +165,8 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
     let mut points = Points::default();
     points.push((t0, e.w0.conditions[i].v));
     if c == Condition::SlipStop && screen.slip_roots {
-        let mut bracket = None;
-        bernstein::isolate(&bernstein::coefficients(d, 3, 0.0), &mut |xa, xb| {
-            bracket.get_or_insert((t0 + xa * h, (t0 + xb * h).min(t1)));
-        });
-        if let Some((ta, tb)) = bracket {
+        // u̇ is the state's component 3 (`State::from_components`).
+        if let Some((ta, tb)) = first_root(d, 3, t0, t1) {
             points.push((ta, value(ta)));
             points.push((tb, value(tb)));
         }
@@ -168,7 +188,7 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
 /// How a condition read on zero at a step's start, and not seen to leave
 /// it, is taken.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum OnZero {
+pub(crate) enum OnZero {
     /// It grows from zero: a transition at once.
     Grows,
     /// It departs from zero ([`Condition::departs_from_zero`]): armed where
@@ -199,7 +219,7 @@ impl OnZero {
 /// narrows a bracket `va < 0 <= vb`; `leaving(ta, tb)` finds where a
 /// condition that starts on zero has become negative; `on_zero`: how a
 /// start on zero that the motion does not leave is taken.
-pub(super) fn first_crossing(
+pub(crate) fn first_crossing(
     points: &[(f64, f64)],
     on_zero: OnZero,
     mut locate: impl FnMut(f64, f64, f64, f64) -> f64,
@@ -243,7 +263,7 @@ pub(super) fn first_crossing(
 /// For a condition that is zero at `t0`: a point in `(t0, t1)` where it is
 /// negative, found by halving towards `t0` (the dense output's first two
 /// Taylor terms are exact there, so the motion's departure shows).
-pub(super) fn leaving_point(value: &impl Fn(f64) -> f64, t0: f64, t1: f64) -> Option<(f64, f64)> {
+pub(crate) fn leaving_point(value: &impl Fn(f64) -> f64, t0: f64, t1: f64) -> Option<(f64, f64)> {
     let mut dt = t1 - t0;
     for _ in 0..80 {
         dt *= 0.5;

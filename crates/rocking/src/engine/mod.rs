@@ -44,7 +44,7 @@
 //! `flight.rs` (the end of an impact cascade in closed form), `input.rs`
 //! (the inputs' segments and the effective gravity).
 
-mod crossing;
+pub(crate) mod crossing;
 mod flight;
 mod input;
 mod peaks;

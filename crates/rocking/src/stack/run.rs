@@ -20,17 +20,23 @@
 //! [`REST_ANGULAR_VELOCITY`] seats it (the end of an accumulation of ever
 //! smaller impacts), as the tower's.
 //!
-//! Crossings are found by the signs of each function at the ends of 16 equal
-//! parts of every step, then narrowed by regula falsi: a condition that holds
-//! only for a moment between two of those points is missed, except a return
-//! to the zero a step starts on (a small rebound after an impact), which is
-//! looked for by halving the first part. Every step ends at the next kink of
-//! the ground motion.
+//! Transitions are located by the engine's search ([`crate::engine::crossing`]):
+//! the conditions of `θ_k` (impact, overturning) are monotone between the
+//! extremes of `θ_k`, the roots of `θ̇_k` isolated on the dense output, and
+//! the end of a slip is bracketed by the first root of `u̇`; the uplift of a
+//! stuck interface and the slip of a sticking building, which need Kane's
+//! equations, are read at the ends of 16 equal parts of the step (one that
+//! holds only for a moment between two of those points is missed). The first
+//! bracket is narrowed by root finding; a condition on zero at the step's
+//! start (an impact, a stop of the slip) is armed where the motion has left
+//! it. The same extremes of `θ_k` give each block's peaks. Every step ends at
+//! the next kink of the ground motion.
 
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
+use crate::engine::crossing::{extremes, first_crossing, first_root, leaving_point, OnZero, Points};
 use crate::error::Error;
 use crate::ground::GroundMotion;
-use crate::integrator::{find_crossing, DenseOutput, Dop853, StepFailure};
+use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
 use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
 use crate::simulate::REST_ANGULAR_VELOCITY;
@@ -152,6 +158,15 @@ pub struct StackRun {
     pub evaluations: u64,
 }
 
+/// The end of the `j`-th of [`PARTS`] equal parts of `[t0, t1]`.
+fn part(t0: f64, t1: f64, j: usize) -> f64 {
+    if j == PARTS {
+        t1
+    } else {
+        t0 + (t1 - t0) * j as f64 / PARTS as f64
+    }
+}
+
 /// The regime the initial state puts the stack in: an interface leaning or
 /// turning rocks on the side it leans (or turns) to; a building moving slips.
 pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
@@ -214,7 +229,50 @@ enum Watch {
     Stop,
 }
 
-/// Parts of a step whose ends are checked for a crossing.
+impl Watch {
+    /// The condition as one of `θ_k` alone, if it is: the impact `−s_k θ_k`
+    /// of a rocking interface, the overturning `|θ_k| − π/2`.
+    fn of_theta(self, regime: &StackRegime) -> Option<(usize, OfTheta)> {
+        match self {
+            Watch::Impact(k) => Some((k, OfTheta::Impact(regime.interfaces[k].pivot().map_or(0.0, Pivot::sign)))),
+            Watch::Overturn(k) => Some((k, OfTheta::Overturn)),
+            _ => None,
+        }
+    }
+
+    /// How the condition is taken on zero at a step's start: the impact
+    /// (`θ_k = 0` after an uplift or an impact) and the end of a slip (`u̇ = 0`
+    /// when it starts) depart from zero, as the tower's
+    /// ([`crate::condition::Condition::departs_from_zero`]).
+    fn on_zero(self) -> OnZero {
+        match self {
+            Watch::Impact(_) | Watch::Stop => OnZero::Departs,
+            _ => OnZero::Grows,
+        }
+    }
+}
+
+/// A condition of `θ_k` alone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum OfTheta {
+    /// The impact of an interface rocking on the corner `s_k` (the sign).
+    Impact(f64),
+    /// The overturning of a block.
+    Overturn,
+}
+
+impl OfTheta {
+    /// The condition and its rate at `θ_k`, `θ̇_k`.
+    fn margin(self, theta: f64, theta_dot: f64) -> (f64, f64) {
+        match self {
+            OfTheta::Impact(s) => (-s * theta, -s * theta_dot),
+            OfTheta::Overturn => (theta.abs() - std::f64::consts::FRAC_PI_2, theta.signum() * theta_dot),
+        }
+    }
+}
+
+/// Parts of a step at whose ends the conditions that need Kane's equations
+/// are read.
 const PARTS: usize = 16;
 
 struct Runner<'a, const S: usize> {
@@ -288,8 +346,10 @@ impl<const S: usize> Runner<'_, S> {
     /// The value of a watched condition: negative while its transition is not due.
     fn value(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> f64 {
         match watch {
-            Watch::Impact(k) => -regime.interfaces[k].pivot().map_or(0.0, Pivot::sign) * state.theta[k],
-            Watch::Overturn(k) => state.theta[k].abs() - std::f64::consts::FRAC_PI_2,
+            Watch::Impact(k) | Watch::Overturn(k) => match watch.of_theta(regime) {
+                Some((_, c)) => c.margin(state.theta[k], state.theta_dot[k]).0,
+                None => -1.0,
+            },
             Watch::Uplift(k) => {
                 let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
                 self.stack.uplift_margin(&snap, k).0
@@ -384,44 +444,68 @@ impl<const S: usize> Runner<'_, S> {
         })
     }
 
-    /// The earliest crossing of a watched condition inside the step of `dense`.
-    fn first_crossing(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64) -> Option<(Watch, f64)> {
-        let at = |t: f64| self.unpack(&dense.state(t));
+    /// The extremes of every rocking `θ_k` inside the step of `dense` (none
+    /// for a stuck interface): the points between which `θ_k` is monotone,
+    /// shared by the search for impacts and overturning and by the peaks.
+    fn theta_extremes(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64) -> [Points; MAX_BLOCKS] {
+        let n = self.n();
+        std::array::from_fn(|k| {
+            if k < n && regime.interfaces[k] != Interface::Stuck {
+                extremes(dense, t0, t1, k, n + k)
+            } else {
+                Points::default()
+            }
+        })
+    }
+
+    /// The earliest crossing of a watched condition inside the step of
+    /// `dense`, `theta_points` the extremes of each `θ_k` there.
+    fn first_crossing(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, theta_points: &[Points; MAX_BLOCKS]) -> Option<(Watch, f64)> {
+        let n = self.n();
         let mut best: Option<(Watch, f64)> = None;
         for watch in self.watches(regime) {
-            let f = |t: f64| self.value(regime, watch, t, &at(t));
-            let mut ta = t0;
-            let mut fa = f(t0);
-            for j in 1..=PARTS {
-                let tb = if j == PARTS { t1 } else { t0 + (t1 - t0) * j as f64 / PARTS as f64 };
-                if best.is_some_and(|(_, t)| t <= ta) {
-                    break;
+            let value = |t: f64| self.value(regime, watch, t, &self.unpack(&dense.state(t)));
+            let regula_falsi = |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb;
+            let leaving = |ta, tb| leaving_point(&value, ta, tb);
+            let hit = if let Some((k, c)) = watch.of_theta(regime) {
+                // Monotone between the extremes of θ_k; narrowed by Newton on θ̇_k.
+                let at = |t: f64| {
+                    let y = dense.state(t);
+                    c.margin(y[k], y[n + k])
+                };
+                let mut points = Points::default();
+                points.push((t0, value(t0)));
+                for &(t, theta) in theta_points[k].as_slice() {
+                    points.push((t, c.margin(theta, 0.0).0));
                 }
-                let fb = f(tb);
-                if j == 1 && fa >= 0.0 && fb >= 0.0 {
-                    // The step starts on the condition's zero (an impact or a
-                    // slip has just reset θ_k or u̇): the function leaves it
-                    // negative and may come back inside this first part, as a
-                    // block's small rebound does. Look for the negative side
-                    // by halving towards the start.
-                    let mut t = tb;
-                    for _ in 0..60 {
-                        t = t0 + 0.5 * (t - t0);
-                        let ft = f(t);
-                        if ft < 0.0 {
-                            (ta, fa) = (t, ft);
-                            break;
-                        }
-                    }
+                points.push((t1, value(t1)));
+                first_crossing(
+                    points.as_slice(),
+                    watch.on_zero(),
+                    |ta, va, tb, vb| find_crossing_newton(at, ta, va, tb, vb).tb,
+                    leaving,
+                )
+            } else if watch == Watch::Stop {
+                // `−σ u̇`: of one sign up to the first root of u̇.
+                let mut points = Points::default();
+                points.push((t0, value(t0)));
+                if let Some((ta, tb)) = first_root(dense, 2 * n + 1, t0, t1) {
+                    points.push((ta, value(ta)));
+                    points.push((tb, value(tb)));
                 }
-                if fa < 0.0 && fb >= 0.0 {
-                    let bracket = find_crossing(f, ta, fa, tb, fb, 0.0);
-                    if best.is_none_or(|(_, t)| bracket.tb < t) {
-                        best = Some((watch, bracket.tb));
-                    }
-                    break;
+                points.push((t1, value(t1)));
+                first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
+            } else {
+                let points: [(f64, f64); PARTS + 1] = std::array::from_fn(|j| {
+                    let t = part(t0, t1, j);
+                    (t, value(t))
+                });
+                first_crossing(&points, watch.on_zero(), regula_falsi, leaving)
+            };
+            if let Some(te) = hit {
+                if best.is_none_or(|(_, tb)| te < tb) {
+                    best = Some((watch, te));
                 }
-                (ta, fa) = (tb, fb);
             }
         }
         best
@@ -484,9 +568,10 @@ impl<const S: usize> Runner<'_, S> {
                 })?;
                 let dense = stepper.dense(&mut rhs);
                 let (t0, t1) = (stepper.t_old, stepper.t);
-                let crossing = self.first_crossing(&regime, &dense, t0, t1);
+                let theta_points = self.theta_extremes(&regime, &dense, t0, t1);
+                let crossing = self.first_crossing(&regime, &dense, t0, t1, &theta_points);
                 let reached = crossing.map_or(t1, |(_, te)| te);
-                self.track_peaks(&mut out, &regime, &dense, t0, reached);
+                self.track_peaks(&mut out, &regime, &dense, t0, reached, &theta_points);
                 if let ControlFlow::Break(halt) = hook.step(&regime, &|t| self.unpack(&dense.state(t)), t0, reached) {
                     return Err(Error::halted(halt, t0));
                 }
@@ -522,34 +607,20 @@ impl<const S: usize> Runner<'_, S> {
     }
 
     /// Raises each rocking block's largest `|θ_k|` to the extremes of the
-    /// step `[t0, t1]`: its ends and every instant where `θ̇_k` changes sign
-    /// between the points that event location examines, found by root
-    /// finding.
-    fn track_peaks(&self, out: &mut StackRun, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64) {
-        let n = self.n();
-        for k in 0..n {
+    /// step `[t0, t1]`: its ends and the extremes of `θ_k` before `t1`.
+    fn track_peaks(&self, out: &mut StackRun, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, theta_points: &[Points; MAX_BLOCKS]) {
+        let (y0, y1) = (dense.state(t0), dense.state(t1));
+        for k in 0..self.n() {
             if regime.interfaces[k] == Interface::Stuck {
                 continue;
             }
-            let theta = |t: f64| dense.state(t)[k];
-            let rate = |t: f64| dense.state(t)[n + k];
-            let (mut low, mut high) = (theta(t0).min(theta(t1)), theta(t0).max(theta(t1)));
-            let (mut ta, mut fa) = (t0, rate(t0));
-            for j in 1..=PARTS {
-                let tb = if j == PARTS { t1 } else { t0 + (t1 - t0) * j as f64 / PARTS as f64 };
-                let fb = rate(tb);
-                if fa * fb < 0.0 {
-                    // Orient the bracket so that the function rises through 0.
-                    let sign = fb.signum();
-                    let at = find_crossing(|t| sign * rate(t), ta, sign * fa, tb, sign * fb, 0.0);
-                    for t in [at.ta, at.tb] {
-                        (low, high) = (low.min(theta(t)), high.max(theta(t)));
-                    }
+            out.blocks[k].reach(y0[k]);
+            out.blocks[k].reach(y1[k]);
+            for &(t, theta) in theta_points[k].as_slice() {
+                if t <= t1 {
+                    out.blocks[k].reach(theta);
                 }
-                (ta, fa) = (tb, fb);
             }
-            out.blocks[k].reach(low);
-            out.blocks[k].reach(high);
         }
     }
 
