@@ -3,7 +3,7 @@
 //! the stripes; the rows do not depend on the thread count; bad studies fail
 //! with one line.
 
-use crate::util::{arg, read, rocking, tempdir, write};
+use crate::util::{arg, assert_shards_merge_to_whole, read, rocking, tempdir, write};
 use serde_json::Value;
 use std::path::Path;
 
@@ -189,24 +189,15 @@ fn shards_merge_to_the_unsharded_stripes_and_fits() {
     let r = rocking(&["fragility", arg(&study_file), "--out", arg(&whole)]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
     // 2 records × 3 levels = 6 cases: 1, 3 and 4 shards (one of them of one case).
-    for n in [1, 3, 4] {
-        let shards: Vec<_> = (1..=n).map(|k| dir.path().join(format!("shards-{n}/{k}"))).collect();
-        for (k, out) in shards.iter().enumerate() {
-            let shard = format!("{}/{n}", k + 1);
-            let r = rocking(&["fragility", arg(&study_file), "--out", arg(out), "--shard", &shard]);
-            assert_eq!(r.code, Some(0), "{}", r.stderr);
-            assert!(!out.join("fragility.csv").exists(), "a shard fits nothing");
-        }
-        let merged = dir.path().join(format!("merged-{n}"));
-        let mut args = vec!["merge"];
-        args.extend(shards.iter().map(|s| arg(s)));
-        args.extend(["--out", arg(&merged)]);
-        let r = rocking(&args);
+    let shard = |k: usize, n: usize, parts: &Path| {
+        let out = parts.join(k.to_string());
+        let r = rocking(&["fragility", arg(&study_file), "--out", arg(&out), "--shard", &format!("{k}/{n}")]);
         assert_eq!(r.code, Some(0), "{}", r.stderr);
-        for file in ["stripes.csv", "fragility.csv", "fractions.csv"] {
-            assert_eq!(read(&merged.join(file)), read(&whole.join(file)), "{file} of {n} shards");
-        }
-    }
+        out
+    };
+    let fits_nothing = |_: usize, _: usize, out: &Path| assert!(!out.join("fragility.csv").exists(), "a shard fits nothing");
+    let files = ["stripes.csv", "fragility.csv", "fractions.csv"];
+    assert_shards_merge_to_whole(dir.path(), &whole, &files, &[1, 3, 4], shard, fits_nothing);
     // A study file changed after its shards ran: the stripes merge, the fits are refused.
     let shard = dir.path().join("changed/1");
     let r = rocking(&["fragility", arg(&study_file), "--out", arg(&shard), "--shard", "1/1"]);

@@ -4,7 +4,7 @@
 //! their own error while the others are still right; inventory.geojson read
 //! back by the `geojson` crate.
 
-use crate::util::{arg, read, rocking, root, staging_folder, tempdir, write};
+use crate::util::{arg, assert_shards_merge_to_whole, read, rocking, root, staging_folder, tempdir, write};
 use std::path::Path;
 
 /// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
@@ -217,31 +217,17 @@ fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
     let dir = tempdir();
     let whole = dir.path().join("whole");
     example_town(&whole, &[]);
-    let bytes = |p: &Path| std::fs::read(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
-    for n in [1, 3, 7] {
-        let mut shards = Vec::new();
-        // Given in reverse order: merge puts them back in row order.
-        for k in (1..=n).rev() {
-            let out = dir.path().join(format!("shards-{n}/{k}"));
-            example_town(&out, &["--shard", &format!("{k}/{n}")]);
-            // Shard k of n holds rows floor((k−1)·12/n) … floor(k·12/n) − 1.
-            let rows = read(&out.join("inventory.csv")).lines().count() - 1;
-            assert_eq!(rows, k * 12 / n - (k - 1) * 12 / n, "shard {k}/{n}");
-            shards.push(out);
-        }
-        let merged = dir.path().join(format!("merged-{n}"));
-        let mut args = vec!["merge"];
-        args.extend(shards.iter().map(|s| arg(s)));
-        args.extend(["--out", arg(&merged)]);
-        let r = rocking(&args);
-        assert_eq!(r.code, Some(0), "{}", r.stderr);
-        for file in ["inventory.csv", "inventory.geojson"] {
-            assert!(
-                bytes(&merged.join(file)) == bytes(&whole.join(file)),
-                "{file} of {n} shards differs from the unsharded one"
-            );
-        }
-    }
+    let shard = |k: usize, n: usize, parts: &Path| {
+        let out = parts.join(k.to_string());
+        example_town(&out, &["--shard", &format!("{k}/{n}")]);
+        out
+    };
+    let check_shard = |k: usize, n: usize, out: &Path| {
+        // Shard k of n holds rows floor((k−1)·12/n) … floor(k·12/n) − 1.
+        let rows = read(&out.join("inventory.csv")).lines().count() - 1;
+        assert_eq!(rows, k * 12 / n - (k - 1) * 12 / n, "shard {k}/{n}");
+    };
+    assert_shards_merge_to_whole(dir.path(), &whole, &["inventory.csv", "inventory.geojson"], &[1, 3, 7], shard, check_shard);
 }
 
 #[test]

@@ -92,5 +92,5 @@ fn a_device_in_place_of_a_shard_file_is_not_read() {
     ok(crate::util::rocking(&["sweep", arg(&file), "--out", arg(&one), "--shard", "1/2"]));
     std::fs::remove_file(&rows).unwrap_or_else(|e| panic!("{e}"));
     ok(crate::util::rocking(&["sweep", arg(&file), "--out", arg(&two), "--shard", "2/2"]));
-    ok(crate::shard::merge(&[&one, &two], &out));
+    ok(crate::util::merge(&[&one, &two], &out));
 }

@@ -2,8 +2,8 @@
 //! another run's files (a summary.json, a stale shard.json), where they read
 //! as one result. A merge now writes into a new or empty folder only.
 
-use crate::shard::{merge, ok, shard, sweep_file};
-use crate::util::{arg, read, rocking, tempdir, write, SCENARIO};
+use crate::shard::{ok, shard, sweep_file};
+use crate::util::{arg, merge, read, rocking, tempdir, write, SCENARIO};
 
 #[test]
 fn a_merge_into_a_folder_holding_other_files_is_refused() {

@@ -5,7 +5,7 @@
 //! line and exit 1, leaving no merged file behind; the Slurm example with a
 //! stand-in for `sbatch`.
 
-use crate::util::{arg, read, rocking, tempdir, write, Output, SCENARIO};
+use crate::util::{arg, assert_shards_merge_to_whole, merge, read, rocking, tempdir, write, Output, SCENARIO};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -44,13 +44,6 @@ fn shards(file: &Path, dir: &Path, n: usize) -> Vec<PathBuf> {
     (1..=n).map(|k| shard(file, dir, k, n)).collect()
 }
 
-pub fn merge(dirs: &[&Path], out: &Path) -> Output {
-    let mut args = vec!["merge"];
-    args.extend(dirs.iter().map(|d| arg(d)));
-    args.extend(["--out", arg(out)]);
-    rocking(&args)
-}
-
 /// A refused merge: exit 1, one line on stderr holding every one of `needles`, no merged file.
 pub fn refused(r: &Output, out: &Path, needles: &[&str]) {
     assert_eq!(r.code, Some(1), "{r:?}");
@@ -74,37 +67,37 @@ fn merging_1_3_and_7_shards_gives_the_unsharded_file_byte_for_byte() {
     let file = sweep_file(dir.path(), "s.toml", "");
     let whole_dir = dir.path().join("whole");
     ok(rocking(&["sweep", arg(&file), "--out", arg(&whole_dir)]));
-    let whole = std::fs::read(whole_dir.join("sweep.csv")).unwrap_or_else(|e| panic!("{e}"));
-    let text = String::from_utf8_lossy(&whole).into_owned();
+    let text = read(&whole_dir.join("sweep.csv"));
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 1 + CASES);
     assert!(!whole_dir.join("shard.json").exists(), "an unsharded sweep writes no manifest");
-    for n in [1, 3, 7] {
-        let parts = dir.path().join(format!("n{n}"));
-        let dirs = shards(&file, &parts, n);
-        for (k, d) in (1..=n).zip(&dirs) {
-            // The block of README, "Studies beyond one machine", computed here from its formula.
-            let (first, end) = ((k - 1) * CASES / n, k * CASES / n);
-            let m = manifest(d);
-            assert_eq!((m["k"].as_u64(), m["n_shards"].as_u64()), (Some(k as u64), Some(n as u64)));
-            assert_eq!(
-                (m["first_case"].as_u64(), m["cases"].as_u64()),
-                (Some(first as u64), Some((end - first) as u64))
-            );
-            assert_eq!(m["total_cases"].as_u64(), Some(CASES as u64));
-            assert_eq!(m["kind"], "sweep");
-            // The shard's rows are the unsharded file's rows of its block, with the same header.
-            let own = read(&d.join("sweep.csv"));
-            let expected: Vec<&str> = std::iter::once(lines[0]).chain(lines[1 + first..1 + end].iter().copied()).collect();
-            assert_eq!(own.lines().collect::<Vec<_>>(), expected, "shard {k}/{n}");
-        }
-        // In reverse order on the command line: the merge orders by K.
-        let refs: Vec<&Path> = dirs.iter().rev().map(PathBuf::as_path).collect();
-        let out = dir.path().join(format!("merged{n}"));
-        let r = ok(merge(&refs, &out));
+    let counts = [1, 3, 7];
+    let check_shard = |k: usize, n: usize, d: &Path| {
+        // The block of README, "Studies beyond one machine", computed here from its formula.
+        let (first, end) = ((k - 1) * CASES / n, k * CASES / n);
+        let m = manifest(d);
+        assert_eq!((m["k"].as_u64(), m["n_shards"].as_u64()), (Some(k as u64), Some(n as u64)));
+        assert_eq!(
+            (m["first_case"].as_u64(), m["cases"].as_u64()),
+            (Some(first as u64), Some((end - first) as u64))
+        );
+        assert_eq!(m["total_cases"].as_u64(), Some(CASES as u64));
+        assert_eq!(m["kind"], "sweep");
+        // The shard's rows are the unsharded file's rows of its block, with the same header.
+        let own = read(&d.join("sweep.csv"));
+        let expected: Vec<&str> = std::iter::once(lines[0]).chain(lines[1 + first..1 + end].iter().copied()).collect();
+        assert_eq!(own.lines().collect::<Vec<_>>(), expected, "shard {k}/{n}");
+    };
+    let merges = assert_shards_merge_to_whole(
+        dir.path(),
+        &whole_dir,
+        &["sweep.csv"],
+        &counts,
+        |k, n, parts| shard(&file, parts, k, n),
+        check_shard,
+    );
+    for (n, r) in counts.iter().zip(merges) {
         assert!(r.stdout.contains(&format!("merged {n} shards ({CASES} cases)")), "{}", r.stdout);
-        let merged = std::fs::read(out.join("sweep.csv")).unwrap_or_else(|e| panic!("{e}"));
-        assert!(merged == whole, "the merge of {n} shards differs from the unsharded sweep.csv");
     }
 }
 

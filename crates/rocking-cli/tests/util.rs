@@ -103,3 +103,49 @@ pub fn scenario_with(from: &str, to: &str) -> String {
     assert!(SCENARIO.contains(from), "{from:?} is not in the scenario");
     SCENARIO.replacen(from, to, 1)
 }
+
+/// `rocking merge DIRS… --out OUT`.
+pub fn merge(dirs: &[&Path], out: &Path) -> Output {
+    let mut args = vec!["merge"];
+    args.extend(dirs.iter().map(|d| arg(d)));
+    args.extend(["--out", arg(out)]);
+    rocking(&args)
+}
+
+/// The check of a sharded command against its unsharded run in `whole`: for
+/// each N of `counts`, runs shard K/N for K = 1 … N with `shard(k, n, parts)`
+/// (which writes it into a folder under `parts`, `dir/shards-N`, and returns
+/// that folder), hands each to `check_shard(k, n, folder)`, merges them given
+/// in reverse order (the merge puts them back in the order of K), and asserts
+/// that each of `files` of the merge is the same file of `whole`, byte for
+/// byte. Returns each merge's output, in the order of `counts`.
+pub fn assert_shards_merge_to_whole(
+    dir: &Path,
+    whole: &Path,
+    files: &[&str],
+    counts: &[usize],
+    shard: impl Fn(usize, usize, &Path) -> PathBuf,
+    mut check_shard: impl FnMut(usize, usize, &Path),
+) -> Vec<Output> {
+    let bytes = |p: &Path| std::fs::read(p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()));
+    let mut merges = Vec::new();
+    for &n in counts {
+        let parts = dir.join(format!("shards-{n}"));
+        let folders: Vec<PathBuf> = (1..=n).map(|k| shard(k, n, &parts)).collect();
+        for (k, folder) in (1..=n).zip(&folders) {
+            check_shard(k, n, folder);
+        }
+        let reversed: Vec<&Path> = folders.iter().rev().map(PathBuf::as_path).collect();
+        let merged = dir.join(format!("merged-{n}"));
+        let r = merge(&reversed, &merged);
+        assert_eq!(r.code, Some(0), "the merge of {n} shards: {r:?}");
+        for file in files {
+            assert!(
+                bytes(&merged.join(file)) == bytes(&whole.join(file)),
+                "{file} of {n} shards differs from the unsharded one"
+            );
+        }
+        merges.push(r);
+    }
+    merges
+}
