@@ -39,14 +39,20 @@ def as_dict() -> dict:
     return table
 
 
-def test_assess_equals_the_command(cli: Path, tmp_path: Path) -> None:
+def command(cli: Path, tmp_path: Path, text: str) -> "tuple[Path, dict]":
+    """The assessment file `text` written beside the three synthetic records it
+    names, and the command's assessment.json of it (its outputs in tmp_path/out)."""
     for k in (1, 2, 3):
         (tmp_path / f"kt_0{k}.AT2").write_bytes((ROOT / "data" / "records" / "synthetic" / f"kt_0{k}.AT2").read_bytes())
     path = tmp_path / "assess.toml"
-    path.write_text(FILE)
+    path.write_text(text)
     done = run_cli(cli, "assess", path, "--out", tmp_path / "out")
     assert done.returncode == 0, done.stderr
-    expected = json.loads((tmp_path / "out" / "assessment.json").read_text())
+    return path, json.loads((tmp_path / "out" / "assessment.json").read_text())
+
+
+def test_assess_equals_the_command(cli: Path, tmp_path: Path) -> None:
+    path, expected = command(cli, tmp_path, FILE)
     got = rocking.assess(path, threads=1)
     assert got.json == expected
     # SLD activation by hand: 1.008 ag² − 1.4 ag + a0*/g = 0, the lesser root (a0*/g = 1/(3·1.35)).
@@ -78,15 +84,9 @@ def test_assess_with_blocks_on_the_tower(cli: Path, tmp_path: Path) -> None:
     """Each block with those above it is a mechanism of its own: the
     assessment equals the command's assessment.json and records.csv bit for
     bit, and the governing check is the belfry's, worked out by hand."""
-    for k in (1, 2, 3):
-        (tmp_path / f"kt_0{k}.AT2").write_bytes((ROOT / "data" / "records" / "synthetic" / f"kt_0{k}.AT2").read_bytes())
     text = FILE.replace("[site]\n", BLOCKS + "\n[site]\n", 1)
     assert text != FILE
-    path = tmp_path / "stack.toml"
-    path.write_text(text)
-    done = run_cli(cli, "assess", path, "--out", tmp_path / "out")
-    assert done.returncode == 0, done.stderr
-    expected = json.loads((tmp_path / "out" / "assessment.json").read_text())
+    path, expected = command(cli, tmp_path, text)
     got = rocking.assess(path, threads=2)
     assert got.json == expected
     assert [m["name"] for m in got.mechanisms] == ["tower", "belfry", "lantern"]
