@@ -10,6 +10,7 @@
 use crate::ground::GroundKind;
 use crate::sweep::SWEEPABLE_KEYS;
 use std::fmt::Write;
+use std::sync::LazyLock;
 
 /// What a key takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -145,8 +146,18 @@ use rocking::Parameter as P;
 use KeyKind::{Number, Points, Table, Text};
 
 /// Every key of a scenario, section by section, in the order the parser lists
-/// them in its errors.
-pub const SCENARIO_KEYS: &[KeyDoc] = &[
+/// them in its errors: the top level's and the tower's ([`TOWER_KEYS`]),
+/// those of `[[block]]` (most described by the tower's, [`block_keys`]), then
+/// [`OTHER_KEYS`]. Built once, on first use.
+pub static SCENARIO_KEYS: LazyLock<Vec<KeyDoc>> = LazyLock::new(|| {
+    let mut keys = TOWER_KEYS.to_vec();
+    keys.extend(block_keys());
+    keys.extend_from_slice(OTHER_KEYS);
+    keys
+});
+
+/// The top-level key and those of `[tower]`, in the parser's order.
+const TOWER_KEYS: &[KeyDoc] = &[
     key(
         "name",
         Text,
@@ -155,7 +166,9 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "any string",
         "A name for the scenario, repeated in the outputs.",
         "\"tower on church\"",
-    ).shown("name", "scenario name").off_form(),
+    )
+    .shown("name", "scenario name")
+    .off_form(),
     // [tower]
     key(
         "tower.width",
@@ -165,7 +178,9 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Width B of the tower in the plane of rocking.",
         "4.0",
-    ).shown("B", "tower width B").sets(P::TowerWidth),
+    )
+    .shown("B", "tower width B")
+    .sets(P::TowerWidth),
     key(
         "tower.height",
         Number,
@@ -174,8 +189,12 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0",
         "Height H of the tower above the springing level.",
         "12.0",
-    ).shown("H", "tower height H").sets(P::TowerHeight),
-    key("tower.mass", Number, "kg", "required (or density)", "> 0", "Mass m2 of the tower.", "1.5e5").shown("m2", "tower mass m2").sets(P::TowerMass),
+    )
+    .shown("H", "tower height H")
+    .sets(P::TowerHeight),
+    key("tower.mass", Number, "kg", "required (or density)", "> 0", "Mass m2 of the tower.", "1.5e5")
+        .shown("m2", "tower mass m2")
+        .sets(P::TowerMass),
     key(
         "tower.density",
         Number,
@@ -184,8 +203,13 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; not with mass",
         "Density of the masonry: the mass is density × volume of the section.",
         "1800.0",
-    ).shown("ρ", "tower density").sets(P::TowerDensity),
-    key("tower.depth", Number, "m", "= width", "> 0", "Depth D out of the plane of rocking.", "4.0").shown("depth", "tower depth").placeholder("= width").sets(P::TowerDepth),
+    )
+    .shown("ρ", "tower density")
+    .sets(P::TowerDensity),
+    key("tower.depth", Number, "m", "= width", "> 0", "Depth D out of the plane of rocking.", "4.0")
+        .shown("depth", "tower depth")
+        .placeholder("= width")
+        .sets(P::TowerDepth),
     key(
         "tower.section",
         Text,
@@ -194,7 +218,9 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "\"solid\" or \"hollow\"",
         "A uniform prism, or a tube open at both ends (outer B × D, wall thickness t).",
         "\"hollow\"",
-    ).shown("section", "tower section").choices(&["solid", "hollow"]),
+    )
+    .shown("section", "tower section")
+    .choices(&["solid", "hollow"]),
     key(
         "tower.wall_thickness",
         Number,
@@ -203,7 +229,9 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0 and 2t < min(width, depth)",
         "Wall thickness t of a hollow section.",
         "0.8",
-    ).shown("t", "tower wall thickness").sets(P::TowerWallThickness),
+    )
+    .shown("t", "tower wall thickness")
+    .sets(P::TowerWallThickness),
     key(
         "tower.inertia_pivot",
         Number,
@@ -212,7 +240,10 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> m2 R²; required with radius and alpha",
         "Moment of inertia I_O about a base corner; overrides the section's value.",
         "1.2e7",
-    ).shown("I_O", "moment of inertia I_O").placeholder("the section's").sets(P::TowerInertiaPivot),
+    )
+    .shown("I_O", "moment of inertia I_O")
+    .placeholder("the section's")
+    .sets(P::TowerInertiaPivot),
     key(
         "tower.restitution",
         Number,
@@ -221,7 +252,10 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "0 ≤ r ≤ 1",
         "Ratio r of the angular velocities after and before an impact (not the energy ratio r²).",
         "0.85",
-    ).shown("r", "restitution r").placeholder("Housner's").sets(P::TowerRestitution),
+    )
+    .shown("r", "restitution r")
+    .placeholder("Housner's")
+    .sets(P::TowerRestitution),
     key(
         "tower.points",
         Points,
@@ -230,7 +264,8 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "finite coordinates",
         "Extra points (x, y) in tower coordinates (origin at the base centre) whose motion is reported.",
         "[[0.0, 12.0], [2.0, 6.0]]",
-    ).shown("points", "extra tower points"),
+    )
+    .shown("points", "extra tower points"),
     key(
         "tower.radius",
         Number,
@@ -239,7 +274,10 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "> 0; with mass, inertia_pivot and alpha",
         "R, the distance from a base corner to the centre of mass.",
         "6.32",
-    ).shown("R", "tower radius R").sets(P::TowerRadius).off_form(),
+    )
+    .shown("R", "tower radius R")
+    .sets(P::TowerRadius)
+    .off_form(),
     key(
         "tower.alpha",
         Number,
@@ -248,65 +286,15 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
         "0 < α < π/2; with mass, inertia_pivot and radius",
         "Slenderness angle α = atan(b/h).",
         "0.3217",
-    ).shown("α", "slenderness angle α").sets(P::TowerAlpha).off_form(),
-    // [[block]]
-    key(
-        "block.name",
-        Text,
-        "",
-        "block2, block3, … in order (the tower is block 1)",
-        "letters, digits and _ (not first a digit), at most 32 characters; unique; not a section's name nor \"tower\"",
-        "The block's name: it prefixes the block's outputs (`belfry_max_abs_theta_rad`) and its sweep keys (`belfry.width`).",
-        "\"belfry\"",
-    ).shown("name", "block name").off_form(),
-    key(
-        "block.width",
-        Number,
-        "m",
-        "required",
-        "> 0; at most the width of the block below (the tower's for the first)",
-        "Width of the block in the plane of rocking; it stands centred on the block below.",
-        "2.4",
-    ).shown("B", "block width").off_form(),
-    key("block.height", Number, "m", "required", "> 0", "Height of the block.", "6.0").shown("H", "block height").off_form(),
-    key("block.mass", Number, "kg", "required (or density)", "> 0", "Mass of the block.", "6.0e4").shown("m", "block mass").off_form(),
-    key(
-        "block.density",
-        Number,
-        "kg/m³",
-        "instead of mass",
-        "> 0; not with mass",
-        "Density of the block's masonry: the mass is density × volume of its section.",
-        "1800.0",
-    ).shown("ρ", "block density").off_form(),
-    key("block.depth", Number, "m", "= width", "> 0", "Depth of the block out of the plane of rocking.", "2.4").shown("depth", "block depth").off_form(),
-    key(
-        "block.section",
-        Text,
-        "",
-        "\"solid\"",
-        "\"solid\" or \"hollow\"",
-        "A uniform prism, or a tube open at both ends (a belfry's walls), as the tower's.",
-        "\"hollow\"",
-    ).shown("section", "block section").choices(&["solid", "hollow"]).off_form(),
-    key(
-        "block.wall_thickness",
-        Number,
-        "m",
-        "required for \"hollow\"; refused for \"solid\"",
-        "> 0 and 2t < min(width, depth)",
-        "Wall thickness of a hollow block.",
-        "0.6",
-    ).shown("t", "block wall thickness").off_form(),
-    key(
-        "block.inertia_centre",
-        Number,
-        "kg·m²",
-        "the section's: solid m (B² + H²)/12; hollow by parallel axes",
-        "> 0",
-        "Moment of inertia of the block about its own centre of mass; overrides the section's value.",
-        "2.1e5",
-    ).shown("J", "block moment of inertia").placeholder("the section's").off_form(),
+    )
+    .shown("α", "slenderness angle α")
+    .sets(P::TowerAlpha)
+    .off_form(),
+];
+
+/// The keys of a scenario after `[[block]]`: `[building]`, `[ground]`,
+/// `[initial]` and `[simulation]`, in the parser's order.
+const OTHER_KEYS: &[KeyDoc] = &[
     // [building]
     key(
         "building.mass",
@@ -556,6 +544,142 @@ pub const SCENARIO_KEYS: &[KeyDoc] = &[
     ).shown("atol", "absolute tolerance").placeholder("1e-10").sets(P::AbsoluteTolerance),
 ];
 
+/// The name of a block, and its moment of inertia about its own centre of
+/// mass: the keys of `[[block]]` the tower has not.
+const BLOCK_NAME: KeyDoc = key(
+    "block.name",
+    Text,
+    "",
+    "block2, block3, … in order (the tower is block 1)",
+    "letters, digits and _ (not first a digit), at most 32 characters; unique; not a section's name nor \"tower\"",
+    "The block's name: it prefixes the block's outputs (`belfry_max_abs_theta_rad`) and its sweep keys (`belfry.width`).",
+    "\"belfry\"",
+)
+.shown("name", "block name")
+.off_form();
+
+/// See [`BLOCK_NAME`].
+const BLOCK_INERTIA_CENTRE: KeyDoc = key(
+    "block.inertia_centre",
+    Number,
+    "kg·m²",
+    "the section's: solid m (B² + H²)/12; hollow by parallel axes",
+    "> 0",
+    "Moment of inertia of the block about its own centre of mass; overrides the section's value.",
+    "2.1e5",
+)
+.shown("J", "block moment of inertia")
+.placeholder("the section's")
+.off_form();
+
+/// A key of `[[block]]` described by the tower's key of the same name: a
+/// block is given as the tower is, by its outer dimensions.
+struct AsTower {
+    /// The key's name in both sections (`width`).
+    name: &'static str,
+    /// A value for a block, as written in a scenario file.
+    example: &'static str,
+    /// A bound of a block's alone, added to the tower's (empty if none).
+    also: &'static str,
+}
+
+/// The keys of `[[block]]` described by the tower's, in the tower's order.
+const AS_TOWER: &[AsTower] = &[
+    AsTower {
+        name: "width",
+        example: "2.4",
+        also: "at most the width of the block below (the tower's for the first)",
+    },
+    AsTower {
+        name: "height",
+        example: "6.0",
+        also: "",
+    },
+    AsTower {
+        name: "mass",
+        example: "6.0e4",
+        also: "",
+    },
+    AsTower {
+        name: "density",
+        example: "1800.0",
+        also: "",
+    },
+    AsTower {
+        name: "depth",
+        example: "2.4",
+        also: "",
+    },
+    AsTower {
+        name: "section",
+        example: "\"hollow\"",
+        also: "",
+    },
+    AsTower {
+        name: "wall_thickness",
+        example: "0.6",
+        also: "",
+    },
+];
+
+/// The tower's words in the texts of its keys, each with a block's in its
+/// place, in the order they are exchanged: a block stands on the block below
+/// (not on the springing level), has no alternative description by R and α,
+/// and its mass is `m` (the tower's, in the model, `m2`).
+const BLOCK_WORDS: &[(&str, &str)] = &[
+    ("required (or radius and alpha)", "required"),
+    ("the springing level", "the top of the block below"),
+    ("the tower", "the block"),
+    ("tower ", "block "),
+    ("m2", "m"),
+];
+
+/// A text of a tower's key as a block's: [`BLOCK_WORDS`] exchanged. Kept for
+/// the life of the program, as [`SCENARIO_KEYS`] is, so leaking the few
+/// texts (built once) costs nothing.
+fn for_block(text: &'static str) -> &'static str {
+    let exchanged = BLOCK_WORDS.iter().fold(text.to_string(), |t, (tower, block)| t.replace(tower, block));
+    if exchanged == text {
+        return text;
+    }
+    Box::leak(exchanged.into_boxed_str())
+}
+
+/// The keys of `[[block]]`, in the parser's order: the name, the tower's keys
+/// of [`AS_TOWER`] in a block's words (unit, kind, choices and bounds the
+/// tower's), and the moment of inertia about the centre of mass.
+fn block_keys() -> Vec<KeyDoc> {
+    let as_block = |tower: &KeyDoc, a: &AsTower| {
+        let range = for_block(tower.range);
+        KeyDoc {
+            key: Box::leak(format!("{}.{}", crate::block::BLOCK, a.name).into_boxed_str()),
+            default: for_block(tower.default),
+            range: if a.also.is_empty() {
+                range
+            } else {
+                Box::leak(format!("{range}; {}", a.also).into_boxed_str())
+            },
+            meaning: for_block(tower.meaning),
+            example: a.example,
+            symbol: for_block(tower.symbol),
+            label: for_block(tower.label),
+            // An error of the library about a block's parameter is named by
+            // the block's key where the block is read (block.rs).
+            parameter: None,
+            // The page's form has fields of its own for each block.
+            on_form: false,
+            ..*tower
+        }
+    };
+    let described = TOWER_KEYS.iter().filter_map(|tower| {
+        AS_TOWER
+            .iter()
+            .find(|a| tower.key.strip_prefix("tower.") == Some(a.name))
+            .map(|a| as_block(tower, a))
+    });
+    std::iter::once(BLOCK_NAME).chain(described).chain([BLOCK_INERTIA_CENTRE]).collect()
+}
+
 /// The keys of the vertical motion start so (`ground.vertical.amplitude`):
 /// each is the key of `[ground]` after it, for the vertical motion.
 pub const VERTICAL_PREFIX: &str = "ground.vertical.";
@@ -612,7 +736,7 @@ pub(crate) fn block_axis_key(key: &str, names: &crate::block::BlockNames) -> Opt
 /// the table `ground.vertical` stands.
 pub(crate) fn sweepable_keys() -> Vec<&'static str> {
     let mut keys = Vec::new();
-    for doc in SCENARIO_KEYS {
+    for doc in SCENARIO_KEYS.iter() {
         if doc.section() == Some(crate::block::BLOCK) {
             // Swept by the block's name (`belfry.width`): see [`block_axis_key`].
             continue;
@@ -716,7 +840,7 @@ pub fn keys_markdown() -> String {
          rocks on a fixed base; a building without a tower is a sliding block."
     );
     let mut current: Option<Option<&str>> = None;
-    for doc in SCENARIO_KEYS {
+    for doc in SCENARIO_KEYS.iter() {
         if current != Some(doc.section()) {
             current = Some(doc.section());
             let _ = writeln!(out);
@@ -894,11 +1018,76 @@ mod tests {
         }
     }
 
+    /// The keys of `[[block]]` are the name, the tower's seven keys of a
+    /// body's dimensions, mass and section in a block's words, and the
+    /// moment of inertia about the centre of mass (listed here by hand).
+    /// Each of the seven has the tower's kind, unit, choices and bounds, and
+    /// no word of the tower's; every exchanged word is met; a sample of the
+    /// texts is written out by hand.
+    #[test]
+    fn a_blocks_keys_are_described_by_the_towers() {
+        let names = section_keys(crate::block::BLOCK);
+        assert_eq!(
+            names,
+            [
+                "name",
+                "width",
+                "height",
+                "mass",
+                "density",
+                "depth",
+                "section",
+                "wall_thickness",
+                "inertia_centre"
+            ]
+        );
+        let doc = |key: &str| describe_key(key).map(|k| *k.doc).unwrap_or_else(|| panic!("{key} is not described"));
+        let texts = |d: &KeyDoc| [d.default, d.range, d.meaning, d.symbol, d.label];
+        for name in &names[1..8] {
+            let (tower, block) = (doc(&format!("tower.{name}")), doc(&format!("block.{name}")));
+            assert_eq!((block.kind, block.unit, block.choices), (tower.kind, tower.unit, tower.choices), "{name}");
+            assert!(block.range.starts_with(tower.range), "{name}: {} against {}", block.range, tower.range);
+            for text in [block.default, block.meaning, block.symbol, block.label] {
+                assert!(
+                    !text.contains("tower") && !text.contains("m2") && !text.contains("springing"),
+                    "block.{name}: {text}"
+                );
+            }
+        }
+        for (word, _) in BLOCK_WORDS {
+            let met = names[1..8]
+                .iter()
+                .any(|name| texts(&doc(&format!("tower.{name}"))).iter().any(|t| t.contains(word)));
+            assert!(met, "no key of the tower says {word:?}");
+        }
+        let width = doc("block.width");
+        assert_eq!(
+            (width.default, width.range, width.meaning, width.label),
+            (
+                "required",
+                "> 0; at most the width of the block below (the tower's for the first)",
+                "Width B of the block in the plane of rocking.",
+                "block width B"
+            )
+        );
+        assert_eq!(doc("block.height").meaning, "Height H of the block above the top of the block below.");
+        let mass = doc("block.mass");
+        assert_eq!(
+            (mass.default, mass.meaning, mass.symbol),
+            ("required (or density)", "Mass m of the block.", "m")
+        );
+        assert_eq!(doc("block.depth").placeholder, "= width");
+        assert_eq!(
+            for_block("Mass m2 of the tower on the springing level."),
+            "Mass m of the block on the top of the block below."
+        );
+    }
+
     /// Every scenario key has its symbol and its words, no two keys the
     /// same words; a hand-checked sample against the reference's units.
     #[test]
     fn every_key_has_a_symbol_and_a_label() {
-        for doc in SCENARIO_KEYS {
+        for doc in SCENARIO_KEYS.iter() {
             assert!(!doc.symbol.is_empty() && !doc.label.is_empty(), "{}", doc.key);
             assert_eq!(SCENARIO_KEYS.iter().filter(|k| k.label == doc.label).count(), 1, "{}", doc.label);
         }
@@ -951,7 +1140,7 @@ mod tests {
         let properties = "[tower]\nmass = 1.5e5\ninertia_pivot = 1.2e7\nradius = 6.32\nalpha = 0.3217\n";
         let building = "[building]\nmass = 2.0e6\nmu_static = 1.25\n";
         let harmonic = "[ground]\ntype = \"harmonic\"\namplitude = 0.5\nfrequency = 5.0\n";
-        for doc in SCENARIO_KEYS {
+        for doc in SCENARIO_KEYS.iter() {
             let line = format!("{} = {}\n", doc.name(), doc.example);
             let (tower, ground) = match doc.key {
                 "tower.radius" | "tower.alpha" | "tower.inertia_pivot" => (properties.replace(&format!("{} = ", doc.name()), "#"), harmonic.to_string()),
