@@ -52,18 +52,24 @@ impl Frame {
     /// The frame of `pose` in `coords`.
     #[inline]
     pub fn new(coords: Coordinates, pose: Pose) -> Self {
-        let mut jac = [[[0.0; 2]; MAX_COORDINATES]; MAX_BLOCKS];
-        let mut rot = [[0.0; MAX_COORDINATES]; MAX_BLOCKS];
-        let mut quad = [[0.0; 2]; MAX_BLOCKS];
+        // Filled in place: a frame is large, and one is made at every evaluation.
+        let mut frame = Self {
+            coords,
+            pose,
+            jac: [[[0.0; 2]; MAX_COORDINATES]; MAX_BLOCKS],
+            rot: [[0.0; MAX_COORDINATES]; MAX_BLOCKS],
+            quad: [[0.0; 2]; MAX_BLOCKS],
+        };
+        let (coords, pose) = (&frame.coords, &frame.pose);
         for i in 0..pose.len() {
             let g = pose.centre(i);
             for (a, &c) in coords.list().iter().enumerate() {
-                jac[i][a] = pose.point_jacobian(i, g, c);
-                rot[i][a] = pose.rotation_jacobian(i, c);
+                frame.jac[i][a] = pose.point_jacobian(i, g, c);
+                frame.rot[i][a] = pose.rotation_jacobian(i, c);
             }
-            quad[i] = pose.point_quadratic(i, g);
+            frame.quad[i] = pose.point_quadratic(i, g);
         }
-        Self { coords, pose, jac, rot, quad }
+        frame
     }
 }
 
@@ -71,8 +77,8 @@ impl Frame {
 /// coordinates and of every body.
 #[derive(Debug, Clone)]
 pub struct Snapshot {
-    /// The kinematics.
-    pub frame: Frame,
+    /// Where the blocks are.
+    pub pose: Pose,
     /// `θ̈_k` (rad/s², 0 for a stuck interface) at index `k − 1`.
     pub theta_ddot: [f64; MAX_BLOCKS],
     /// `ü` (m/s², 0 while the building sticks).
@@ -231,7 +237,7 @@ impl Stack {
             centre_acc[i] = acc;
         }
         Snapshot {
-            frame,
+            pose: frame.pose,
             theta_ddot,
             slip_acc,
             centre_acc,
@@ -265,7 +271,7 @@ impl Stack {
     /// `M_k = Σ_{i≥k} (G_i − C_k) × m_i (G̈_i + g_e e_y) − Σ_{i≥k} J_i φ̈_i`
     /// (`φ` is clockwise positive, hence the minus).
     pub fn interface_load(&self, snap: &Snapshot, k: usize) -> InterfaceLoad {
-        let pose = &snap.frame.pose;
+        let pose = &snap.pose;
         let mut force = [0.0, 0.0];
         let mut moment = 0.0;
         for i in k..self.len() {

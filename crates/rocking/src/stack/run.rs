@@ -32,6 +32,7 @@
 //! it. The same extremes of `θ_k` give each block's peaks. Every step ends at
 //! the next kink of the ground motion.
 
+use super::dynamics::Snapshot;
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::engine::crossing::{extremes, first_crossing, first_root, leaving_point, OnZero, Points};
 use crate::error::Error;
@@ -40,6 +41,7 @@ use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853
 use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
 use crate::simulate::REST_ANGULAR_VELOCITY;
+use std::borrow::Cow;
 use std::ops::ControlFlow;
 
 /// How a stack is run.
@@ -159,7 +161,7 @@ pub struct StackRun {
 }
 
 /// The end of the `j`-th of [`PARTS`] equal parts of `[t0, t1]`.
-fn part(t0: f64, t1: f64, j: usize) -> f64 {
+pub(crate) fn part(t0: f64, t1: f64, j: usize) -> f64 {
     if j == PARTS {
         t1
     } else {
@@ -183,6 +185,20 @@ pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
     regime
 }
 
+/// One instant of a step: its time, the state there and Kane's equations
+/// solved at it. The search for the transitions that need Kane's equations
+/// reads them at the ends of the parts of a step, and hands them on to the
+/// [`Hook`], which reads the summary's peaks at the same instants: one solve
+/// for both.
+pub(crate) struct Instant {
+    /// Time (s).
+    pub(crate) t: f64,
+    /// The state.
+    pub(crate) state: StackState,
+    /// The motion there.
+    pub(crate) snap: Snapshot,
+}
+
 /// Runs `stack` under the horizontal `ground` motion from `initial`.
 pub fn run(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings) -> Result<StackRun, Error> {
     run_with(stack, ground, initial, settings, &mut ())
@@ -192,8 +208,10 @@ pub fn run(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings:
 /// stretch of smooth motion and each regime change. Either may end the run
 /// (an observer's `ControlFlow::Break`).
 pub(crate) trait Hook {
-    /// The motion of `regime` over `[t0, t1]`, `at(t)` the state there.
-    fn step(&mut self, _regime: &StackRegime, _at: &dyn Fn(f64) -> StackState, _t0: f64, _t1: f64) -> Flow {
+    /// The motion of `regime` over `[t0, t1]`, `at(t)` the state there;
+    /// `instants`: the ends of the [`PARTS`] equal parts of `[t0, t1]`
+    /// ([`part`]), when the search for transitions has read them there.
+    fn step(&mut self, _regime: &StackRegime, _at: &dyn Fn(f64) -> StackState, _t0: f64, _t1: f64, _instants: Option<&[Instant]>) -> Flow {
         Flow::Continue(())
     }
     /// A regime change.
@@ -240,6 +258,12 @@ impl Watch {
         }
     }
 
+    /// Whether the condition needs Kane's equations (it is read at the ends
+    /// of the parts of a step).
+    fn sampled(self) -> bool {
+        matches!(self, Watch::Uplift(_) | Watch::Slip)
+    }
+
     /// How the condition is taken on zero at a step's start: the impact
     /// (`θ_k = 0` after an uplift or an impact) and the end of a slip (`u̇ = 0`
     /// when it starts) depart from zero, as the tower's
@@ -273,7 +297,7 @@ impl OfTheta {
 
 /// Parts of a step at whose ends the conditions that need Kane's equations
 /// are read.
-const PARTS: usize = 16;
+pub(crate) const PARTS: usize = 16;
 
 struct Runner<'a, const S: usize> {
     stack: &'a Stack,
@@ -345,17 +369,25 @@ impl<const S: usize> Runner<'_, S> {
 
     /// The value of a watched condition: negative while its transition is not due.
     fn value(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> f64 {
+        self.value_with(regime, watch, state, || Cow::Owned(self.snapshot(regime, t, state)))
+    }
+
+    /// Kane's equations of `regime` solved at `t` in `state`.
+    fn snapshot(&self, regime: &StackRegime, t: f64, state: &StackState) -> Snapshot {
+        self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity)
+    }
+
+    /// [`Runner::value`], `snap` giving Kane's equations solved at the instant
+    /// for the conditions that need them.
+    fn value_with<'s>(&self, regime: &StackRegime, watch: Watch, state: &StackState, snap: impl FnOnce() -> Cow<'s, Snapshot>) -> f64 {
         match watch {
             Watch::Impact(k) | Watch::Overturn(k) => match watch.of_theta(regime) {
                 Some((_, c)) => c.margin(state.theta[k], state.theta_dot[k]).0,
                 None => -1.0,
             },
-            Watch::Uplift(k) => {
-                let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
-                self.stack.uplift_margin(&snap, k).0
-            }
+            Watch::Uplift(k) => self.stack.uplift_margin(&snap(), k).0,
             Watch::Slip => {
-                let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
+                let snap = snap();
                 let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
                 self.stack.friction_force(&snap).abs() - mu_s * self.stack.normal_force(&snap)
             }
@@ -458,9 +490,32 @@ impl<const S: usize> Runner<'_, S> {
         })
     }
 
+    /// Fills `instants` with those at the ends of the [`PARTS`] parts of the
+    /// step of `dense` ([`part`]).
+    fn instants(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, instants: &mut Vec<Instant>) {
+        instants.clear();
+        for j in 1..=PARTS {
+            let t = part(t0, t1, j);
+            let state = self.unpack(&dense.state(t));
+            instants.push(Instant {
+                t,
+                state,
+                snap: self.snapshot(regime, t, &state),
+            });
+        }
+    }
+
     /// The earliest crossing of a watched condition inside the step of
-    /// `dense`, `theta_points` the extremes of each `θ_k` there.
-    fn first_crossing(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, theta_points: &[Points; MAX_BLOCKS]) -> Option<(Watch, f64)> {
+    /// `dense`, `theta_points` the extremes of each `θ_k` there, `instants`
+    /// those of [`Runner::instants`] (needed if a condition is sampled).
+    fn first_crossing(
+        &self,
+        regime: &StackRegime,
+        dense: &DenseOutput<S>,
+        (t0, t1): (f64, f64),
+        theta_points: &[Points; MAX_BLOCKS],
+        instants: Option<&[Instant]>,
+    ) -> Option<(Watch, f64)> {
         let n = self.n();
         let mut best: Option<(Watch, f64)> = None;
         for watch in self.watches(regime) {
@@ -496,10 +551,16 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t1, value(t1)));
                 first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
             } else {
-                let points: [(f64, f64); PARTS + 1] = std::array::from_fn(|j| {
-                    let t = part(t0, t1, j);
-                    (t, value(t))
-                });
+                let mut points = [(t0, value(t0)); PARTS + 1];
+                for (j, point) in points.iter_mut().enumerate().skip(1) {
+                    *point = match instants {
+                        Some(i) => (i[j - 1].t, self.value_with(regime, watch, &i[j - 1].state, || Cow::Borrowed(&i[j - 1].snap))),
+                        None => {
+                            let t = part(t0, t1, j);
+                            (t, value(t))
+                        }
+                    };
+                }
                 first_crossing(&points, watch.on_zero(), regula_falsi, leaving)
             };
             if let Some(te) = hit {
@@ -535,6 +596,7 @@ impl<const S: usize> Runner<'_, S> {
         let mut t = 0.0;
         let mut next_sample = 0usize;
         let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
+        let mut instants = Vec::with_capacity(PARTS);
         'run: loop {
             // Switch at once while a condition already holds.
             let mut switches = 0;
@@ -569,10 +631,18 @@ impl<const S: usize> Runner<'_, S> {
                 let dense = stepper.dense(&mut rhs);
                 let (t0, t1) = (stepper.t_old, stepper.t);
                 let theta_points = self.theta_extremes(&regime, &dense, t0, t1);
-                let crossing = self.first_crossing(&regime, &dense, t0, t1, &theta_points);
+                // Kane's equations at the parts' ends, once for the sampled
+                // conditions and the hook's peaks.
+                let sampled = self.watches(&regime).iter().any(|w| w.sampled());
+                if sampled {
+                    self.instants(&regime, &dense, t0, t1, &mut instants);
+                }
+                let instants = sampled.then_some(&instants[..]);
+                let crossing = self.first_crossing(&regime, &dense, (t0, t1), &theta_points, instants);
                 let reached = crossing.map_or(t1, |(_, te)| te);
                 self.track_peaks(&mut out, &regime, &dense, t0, reached, &theta_points);
-                if let ControlFlow::Break(halt) = hook.step(&regime, &|t| self.unpack(&dense.state(t)), t0, reached) {
+                let whole_step = instants.filter(|_| crossing.is_none());
+                if let ControlFlow::Break(halt) = hook.step(&regime, &|t| self.unpack(&dense.state(t)), t0, reached, whole_step) {
                     return Err(Error::halted(halt, t0));
                 }
                 while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {

@@ -14,7 +14,8 @@
 //! at every event (a peak between two of those points is read lower by the
 //! curvature over a sixteenth of a step).
 
-use super::run::{run_with, BlockSummary, Hook, RunSettings, StackEvent, StackEventKind};
+use super::dynamics::Snapshot;
+use super::run::{part, run_with, BlockSummary, Hook, Instant, RunSettings, StackEvent, StackEventKind, PARTS};
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::equations::Kernel;
 use crate::error::{Error, Parameter};
@@ -150,9 +151,6 @@ pub(crate) fn simulate(
     Ok(summary)
 }
 
-/// Parts of a step at whose ends the peaks are read.
-const PARTS: u32 = 16;
-
 /// The hook of a stacked run: keeps the tower's summary and tells the observer.
 struct Reporter<'a, O: Observer> {
     stack: &'a Stack,
@@ -200,6 +198,11 @@ impl<O: Observer> Reporter<'_, O> {
     /// the slip, and every interface's friction demand.
     fn instant(&mut self, regime: &StackRegime, state: &StackState, t: f64) {
         let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity());
+        self.instant_of(regime, state, &snap);
+    }
+
+    /// [`Reporter::instant`] with Kane's equations solved there.
+    fn instant_of(&mut self, regime: &StackRegime, state: &StackState, snap: &Snapshot) {
         self.tracker.displacement(state.theta[0], state.slip);
         let (_, top) = self.kernel.point_kinematics(
             regime.interfaces[0].pivot().map(Pivot::sign),
@@ -211,7 +214,7 @@ impl<O: Observer> Reporter<'_, O> {
         );
         self.tracker.top(top);
         for k in 0..self.stack.len() {
-            let load = self.stack.interface_load(&snap, k);
+            let load = self.stack.interface_load(snap, k);
             if k == 0 {
                 self.tracker.pivot(load.tangential, load.normal);
             }
@@ -231,11 +234,20 @@ impl<O: Observer> Reporter<'_, O> {
 }
 
 impl<O: Observer> Hook for Reporter<'_, O> {
-    fn step(&mut self, regime: &StackRegime, at: &dyn Fn(f64) -> StackState, t0: f64, t1: f64) -> Flow {
+    fn step(&mut self, regime: &StackRegime, at: &dyn Fn(f64) -> StackState, t0: f64, t1: f64, instants: Option<&[Instant]>) -> Flow {
         self.tracker.time(project(regime).motion(), t1 - t0);
-        for j in 1..=PARTS {
-            let t = if j == PARTS { t1 } else { t0 + (t1 - t0) * f64::from(j) / f64::from(PARTS) };
-            self.instant(regime, &at(t), t);
+        match instants {
+            Some(instants) => {
+                for i in instants {
+                    self.instant_of(regime, &i.state, &i.snap);
+                }
+            }
+            None => {
+                for j in 1..=PARTS {
+                    let t = part(t0, t1, j);
+                    self.instant(regime, &at(t), t);
+                }
+            }
         }
         self.last = (t1, *regime, at(t1));
         if self.observer.wants_steps() {
