@@ -9,28 +9,37 @@ joint with dry friction mu (m0 + m1 + m2) g (or fixed), the shaft on
 slide-x, slide-z and hinge joints above it, touching the building at two
 spheres of 1 mm radius at its base corners, and the belfry on slide-x,
 slide-z and hinge joints relative to the shaft, touching a thin plate at the
-shaft's top at two such spheres. Contacts are stiff and critically damped
-(time constant tc), friction high enough that no block slides on another.
-The ground's acceleration is gravity tilted by it.
+shaft's top at two such spheres. Contacts are stiff (time constant tc),
+friction high enough that no block slides on another. The ground's
+acceleration is gravity tilted by it.
 
 Compared, on four stacks (a belfry rocking on a rocking shaft on a fixed
 base, the same on a sliding church, a slender belfry that overturns while
 the shaft survives, and a belfry on a church where the two differ): each
 interface's first uplift, each block's largest
 theta/alpha, the building's largest and final slip, which block overturns
-and when. Each stack runs in MuJoCo at three contact time constants (4, 2,
-1 ms, steps tc/20), to show it converging as the contacts stiffen; the table
-compares the stiffest. Two more cases check what the model says of a seated
-belfry when its shaft lands: the impulse the model asks of the seat, and
-what MuJoCo's belfry does instead.
+and when. Each stack runs in MuJoCo at the settings of LEVELS, from
+critically damped contacts (tc = 1 ms, corner spheres of 1 mm), whose
+blocks bounce off the corners they land on, to damped contacts (damping
+ratio 8, which throws a landing corner back at 0.4% of its speed) with
+corners of 0.1 mm at tc = 0.5 ms; the table compares the last.
+`mujoco_stack.py --sequence` takes the stack where they differed most
+through a sequence of MuJoCo's settings, one parameter at a time (about 5
+minutes; its table, mujoco-stack-sequence, is committed). Two more cases
+check what the model says of a seated belfry when its shaft lands: the
+impulse the model asks of the seat, and what MuJoCo's belfry does instead.
 
-Other implementations of the stack join the comparison as one function each:
-a function of a scenario (a dict of SCENARIOS) returning the dict that
-`reference_result` returns, added to IMPLEMENTATIONS (the engine's, once it
-runs stacks: `rocking run` on the scenario's [[block]] tables).
+The engine (`rocking run` on the scenario's [tower] and [[block]] tables)
+is compared with the second implementation on the same four stacks, to the
+integration's tolerance. Other implementations of the stack join the
+MuJoCo comparison as one function each: a function of a scenario (a dict of
+SCENARIOS) returning the dict that `reference_result` returns, added to
+IMPLEMENTATIONS.
 """
 
 import math
+import sys
+from collections import namedtuple
 
 import matplotlib
 
@@ -38,14 +47,34 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import mujoco
 import numpy as np
+from scipy.optimize import brentq
 
 import mjcf
-from common import check, finish, save_figure, write_table
+from common import check, finish, run, save_figure, write_table
 from stack.reference import Stack
 
 G = 9.81
 RHO = mjcf.RHO
-LEVELS = ((4e-3, 2e-4), (2e-3, 1e-4), (1e-3, 5e-5))  # (contact time constant, step) in s
+# A setting of MuJoCo's contacts: the time constant tc (s: the contact is a spring of
+# natural frequency 1/tc), the step dt (s), the damping ratio of the blocks' contacts
+# and the radius rho (m) of their corner spheres.
+Setting = namedtuple("Setting", "tc dt damping rho")
+
+
+def critical(tc):
+    """Critically damped contacts of time constant tc, steps of tc/20, corners of RHO."""
+    return Setting(tc, tc / 20, 1.0, RHO)
+
+
+# The stacks run at each of LEVELS, from MuJoCo's critically damped contacts to the
+# setting the table compares (the last); contact_sequence() takes one parameter at a
+# time further, on the stack where they differ most. A critically damped contact
+# throws a point back at e^-2 = 0.135 of its speed whatever tc (MuJoCo's dropped
+# sphere, contact_restitution()): its blocks bounce off the corners they land on,
+# which the model's plastic landing excludes, and the bounce does not shrink with
+# tc. At a damping ratio of 8 it throws back 0.4%; corner spheres of 0.1 mm move
+# each pivot 0.1 mm in from the corner, against 1 mm.
+LEVELS = (critical(1e-3), Setting(1e-3, 5e-5, 4.0, RHO), Setting(1e-3, 5e-5, 4.0, 1e-4), Setting(5e-4, 2.5e-5, 8.0, 1e-4))
 SETTLE = 0.5  # s of MuJoCo before t = 0, for the contacts to settle under gravity
 SHAFT = (4.0, 12.0, 1.5e5)  # m, m, kg: the tower of examples/tower-on-church.toml
 BELFRY = (2.4, 6.0, 6.0e4)
@@ -64,16 +93,11 @@ SCENARIOS = (
     {"name": "belfry on a rocking shaft on a sliding church (μ 0.4), 0.6 g 1.5 Hz", "blocks": (SHAFT, BELFRY), "mu": 0.4, "amplitude": 0.6, "frequency": 1.5, "shaking": 3.0, "duration": 6.0},
     {"name": "slender belfry overturns, the shaft survives, 0.5 g 2 Hz", "blocks": (SHAFT, SLENDER), "mu": None, "amplitude": 0.5, "frequency": 2.0, "shaking": 3.0, "duration": 6.0},
     # The belfry's largest rotation here comes after the shaking, in free rocking on
-    # the church: MuJoCo's is 5.8% below the reference without friction impulses and
-    # moves away as tc shrinks (1.4%, 3.8%, 5.8% at 4, 2, 1 ms). restart_tables() finds
-    # why: restarted from the model's state after the shaking, MuJoCo agrees to 0.1%;
-    # run one impact at a time, every impact agrees within 1.6%; the difference builds
-    # up over the 24 impacts of the shaking (MuJoCo's belfry bounces off its new corner
-    # for up to 26 ms after each landing, which the model's plastic landing excludes;
-    # alone on a fixed base it still loses Housner's energy). Its tolerance, 8%, is that
-    # accumulation (5.8% at tc = 1 ms, heading for 7%), not a validation; the restart
-    # after the shaking and the single impacts validate the parts at 3%.
-    {"name": "belfry on a rocking shaft on a sliding church (μ 0.3), 0.5 g 2 Hz", "blocks": (SHAFT, BELFRY), "mu": 0.3, "amplitude": 0.5, "frequency": 2.0, "shaking": 3.0, "duration": 6.0, "belfry_peak_tolerance": 0.08},
+    # the church: with critically damped contacts MuJoCo's is 5.8% below the model
+    # without friction impulses at tc = 1 ms, and moves away as tc shrinks: its belfry
+    # bounces off the corner it lands on (restart_tables(), one impact at a time, and
+    # contact_sequence()). With damped contacts and sharp corners (LEVELS) it agrees.
+    {"name": "belfry on a rocking shaft on a sliding church (μ 0.3), 0.5 g 2 Hz", "blocks": (SHAFT, BELFRY), "mu": 0.3, "amplitude": 0.5, "frequency": 2.0, "shaking": 3.0, "duration": 6.0},
 )
 
 # Tolerances, as for the single tower (mujoco_tower.py), whose sizes they keep:
@@ -89,6 +113,18 @@ TOL_UPLIFT_TC = 3.0
 #   from the first uplift;
 TOL_PEAK = 0.03
 TOL_THETA_ABS = 1e-3
+# - the blocks' largest theta/alpha at the last of LEVELS: 0.5%. From the trend of
+#   contact_sequence() on the stack that differed most (the table
+#   mujoco-stack-sequence): the difference falls from -5.8% (critically damped) to
+#   +0.7% as the damping ratio goes to 8 (the bounce gone), then to -0.04% as the
+#   corners sharpen to 0.1 mm, and the steps beyond the last setting move it by at
+#   most 0.11% (damping ratio 8 to 16; corners 0.1 to 0.03 mm: 0.012%; tc 0.5 to
+#   0.25 ms: 0.003%; MuJoCo's step, impratio, noslip at the last: 0.02%): five times
+#   the largest of those; plus 1e-4 alpha for a block that barely lifts (MuJoCo's
+#   corners sink by g tc^2 = 2.5e-6 m at tc = 0.5 ms, a tilt of 1e-6 alpha of these
+#   blocks). Slips and overturning keep the 3% above.
+TOL_PEAK_STACK = 0.005
+TOL_THETA_ABS_STACK = 1e-4
 TOL_SLIP_ABS = 1e-3
 # - one impact run from the model's state 5 ms before it to the next event, the
 #   landing block's largest theta on the way: as every peak (TOL_PEAK);
@@ -138,20 +174,21 @@ def reference_result(scenario, impulsive_friction=True, seat="vertical"):
 # --- MuJoCo ---------------------------------------------------------------------------
 
 
-def xml(blocks, mu, tc, dt):
+def xml(blocks, mu, setting):
     (B1, H1, m1), (B2, H2, m2) = blocks
-    belfry = mjcf.block("belfry", "2", B2, H2, m2, pos=H1, collision=' contype="2" conaffinity="2"')
-    shaft = mjcf.block("shaft", "1", B1, H1, m1, above=mjcf.plate(B1, H1) + belfry)
-    return mjcf.model(tc, dt, CHURCH, mu, CHURCH + m1 + m2, shaft)
+    belfry = mjcf.block("belfry", "2", B2, H2, m2, pos=H1, collision=' contype="2" conaffinity="2"', rho=setting.rho)
+    shaft = mjcf.block("shaft", "1", B1, H1, m1, above=mjcf.plate(B1, H1) + belfry, rho=setting.rho)
+    return mjcf.model(setting.tc, setting.dt, CHURCH, mu, CHURCH + m1 + m2, shaft, damping=setting.damping)
 
 
 class Mujoco:
-    def __init__(self, blocks, mu, tc, dt, edit=lambda text: text):
+    def __init__(self, blocks, mu, setting, edit=lambda text: text):
         """`edit` changes the MJCF text (a setting of MuJoCo's solver)."""
         self.blocks = blocks
-        self.model = mujoco.MjModel.from_xml_string(edit(xml(blocks, mu, tc, dt)))
+        self.model = mujoco.MjModel.from_xml_string(edit(xml(blocks, mu, setting)))
         self.data = mujoco.MjData(self.model)
-        self.dt = dt
+        self.dt = setting.dt
+        self.rho = setting.rho
         adr = lambda name: self.model.joint(name).qposadr[0]
         self.q = {name: adr(name) for name in ("x1", "z1", "theta1", "x2", "z2", "theta2")}
         self.v = {name: self.model.joint(name).dofadr[0] for name in self.q}
@@ -188,7 +225,7 @@ class Mujoco:
             data.qvel[self.model.joint("u").dofadr[0]] = y[3]
         for k in range(2):
             b = self.blocks[k][0] / 2
-            cx, cz = (s[k] if s[k] != 0 else 1) * (b - RHO), RHO
+            cx, cz = (s[k] if s[k] != 0 else 1) * (b - self.rho), self.rho
             th, w = y[1 + k], y[4 + k]
             c, si = math.cos(th), math.sin(th)
             # origin = c - Rot(theta) c, Rot(theta) (x, z) = (x cos + z sin, -x sin + z cos)
@@ -202,8 +239,9 @@ class Mujoco:
         mujoco.mj_forward(self.model, data)
 
 
-def mujoco_result(scenario, tc=LEVELS[-1][0], dt=LEVELS[-1][1], edit=lambda text: text):
-    sim = Mujoco(scenario["blocks"], scenario["mu"], tc, dt, edit)
+def mujoco_result(scenario, setting=LEVELS[-1], edit=lambda text: text):
+    sim = Mujoco(scenario["blocks"], scenario["mu"], setting, edit)
+    tc, dt = setting.tc, setting.dt
     sim.settle()
     data, model = sim.data, sim.model
     start = data.time
@@ -246,6 +284,37 @@ def mujoco_result(scenario, tc=LEVELS[-1][0], dt=LEVELS[-1][1], edit=lambda text
     }
 
 
+# --- the engine ----------------------------------------------------------------------------
+
+
+def scenario_toml(scenario, output_dt=0.001):
+    """The scenario as the engine reads it: the shaft as [tower], the belfry as a [[block]]."""
+    (B1, H1, m1), (B2, H2, m2) = scenario["blocks"]
+    text = f'name = "{scenario["name"]}"\n[tower]\nwidth = {B1!r}\nheight = {H1!r}\nmass = {m1!r}\n'
+    text += f'[[block]]\nname = "belfry"\nwidth = {B2!r}\nheight = {H2!r}\nmass = {m2!r}\n'
+    if scenario["mu"] is not None:
+        text += f'[building]\nmass = {CHURCH!r}\nmu_static = {scenario["mu"]!r}\nmu_kinetic = {scenario["mu"]!r}\nnormal_force = "constant"\n'
+    text += f'[ground]\ntype = "harmonic"\namplitude = {scenario["amplitude"]!r}\nfrequency = {scenario["frequency"]!r}\nduration = {scenario["shaking"]!r}\n'
+    text += f"[simulation]\nduration = {scenario['duration']!r}\ng = {G!r}\noutput_dt = {output_dt!r}\n"
+    return text
+
+
+def engine_result(scenario):
+    """The engine: `rocking run` on the scenario's [tower] and [[block]] tables."""
+    summary, history = run(scenario_toml(scenario), history=True)
+    overturned = (1 if summary["overturned_block"] == "belfry" else 0) if summary["overturned"] else None
+    return {
+        "first_uplift": [summary["first_uplift_time_s"], summary["belfry_first_uplift_time_s"]],
+        "peak_over_alpha": [summary["max_theta_over_alpha"], summary["belfry_max_theta_over_alpha"]],
+        "overturned": overturned,
+        "overturn_time": summary["overturn_time_s"],
+        "max_slip": summary["max_abs_slip_m"],
+        "final_slip": summary["final_slip_m"],
+        "seat_ratio": summary["max_seat_impulse_ratio"],
+        "history": np.array([(r["t"], r["slip"], r["theta"], r["belfry_theta"]) for r in history]),
+    }
+
+
 IMPLEMENTATIONS = {"MuJoCo": mujoco_result}
 
 
@@ -257,7 +326,7 @@ IMPLEMENTATIONS = {"MuJoCo": mujoco_result}
 RESTARTED = 3  # index in SCENARIOS
 RESTARTS = (0.5, 1.0, 1.5, 2.0, 2.5, 2.65, 2.676, 2.7, 2.9, 3.02)  # s
 BEFORE, AFTER = 5e-3, 10e-3  # s: an impact's window, from the model's state before it
-IMPACT_LEVELS = ((2e-3, 1e-4), (1e-3, 5e-5), (5e-4, 2.5e-5))
+IMPACT_LEVELS = ((2e-3, 1e-4), (1e-3, 5e-5), (5e-4, 2.5e-5))  # critically damped (tc, dt), as the restarts
 WINDOW = 0.4  # s: an impact's run ends at the next impact or uplift, or this long after it
 
 
@@ -277,7 +346,7 @@ def mujoco_from(scenario, t0, state, t_end, tc, dt, sample=None):
     t_end), each block's largest |theta| on the way, and the longest time during which
     the belfry touches the shaft at neither corner, (from, to) (None if it always does;
     a corner pressed in its stiff contact loses it now and then for a step)."""
-    sim = Mujoco(scenario["blocks"], scenario["mu"], tc, dt)
+    sim = Mujoco(scenario["blocks"], scenario["mu"], Setting(tc, dt, 1.0, RHO))
     sim.settle()
     sim.set_state(state[0], state[1][1])
     data, omega, start = sim.data, 2.0 * math.pi * scenario["frequency"], sim.data.time
@@ -302,11 +371,11 @@ def mujoco_from(scenario, t0, state, t_end, tc, dt, sample=None):
 
 
 def restarts(scenario):
-    """The belfry's largest theta/alpha, MuJoCo (tc = 1 ms) restarted from the model's state at RESTARTS."""
+    """The belfry's largest theta/alpha, MuJoCo (critically damped, tc = 1 ms) restarted from the model's state at RESTARTS."""
     a = alphas(scenario["blocks"])
     model = reference_result(scenario, impulsive_friction=False)["peak_over_alpha"][1]
     rows = []
-    tc, dt = LEVELS[-1]
+    tc, dt = 1e-3, 5e-5
     for t0, state in zip(RESTARTS, model_states(scenario, RESTARTS)):
         peak = mujoco_from(scenario, t0, state, scenario["duration"], tc, dt)[1][1] / a[1]
         rows.append({"t0": t0, "model": model, "mujoco": peak, "difference": peak / model - 1.0})
@@ -357,7 +426,7 @@ def bounce(block, tc, release=0.5, duration=6.0):
     move): MuJoCo's effective r, from the energy of five successive peaks as in
     mujoco_tower.py, and the time its base touches at neither corner."""
     # the shaft welded to the church: its three joints removed
-    text = xml((SHAFT, block), None, tc, tc / 20)
+    text = xml((SHAFT, block), None, critical(tc))
     for joint in ('<joint name="x1" type="slide" axis="1 0 0"/>', '<joint name="z1" type="slide" axis="0 0 1"/>', '<joint name="theta1" type="hinge" axis="0 1 0"/>'):
         text = text.replace(joint, "")
     model = mujoco.MjModel.from_xml_string(text)
@@ -400,8 +469,7 @@ def seated_landing(blocks, w=-0.05, later=0.01, theta0=1e-5):
     y_plus, regime, ratios = stack.impact(0.0, y, ("fixed", [1, 0]), 0)
     _, _, summary = stack.run(later, y0=y_plus, s0=regime[1])
     model_rate = float(summary["state"][5])
-    tc, dt = LEVELS[-1]
-    sim = Mujoco(blocks, None, tc, dt)
+    sim = Mujoco(blocks, None, critical(1e-3))
     sim.settle()
     b = blocks[0][0] / 2
     data = sim.data
@@ -463,7 +531,7 @@ def compare(name, scenario, model, ref, other, tc):
     for k in range(2):
         if ref["overturned"] == k:
             continue
-        tolerance = (scenario.get("belfry_peak_tolerance", TOL_PEAK) if k == 1 else TOL_PEAK) + TOL_THETA_ABS / max(ref["peak_over_alpha"][k], 1e-12)
+        tolerance = TOL_PEAK_STACK + TOL_THETA_ABS_STACK / max(ref["peak_over_alpha"][k], 1e-12)
         compared(f"{label(k)}: largest θ/α", other["peak_over_alpha"][k], ref["peak_over_alpha"][k], tolerance, True, model["peak_over_alpha"][k])
     if ref["overturned"] is not None or other["overturned"] is not None:
         which = lambda r: "none" if r["overturned"] is None else label(r["overturned"])
@@ -480,24 +548,89 @@ def compare(name, scenario, model, ref, other, tc):
     return rows
 
 
+def described(setting):
+    """A setting in words, for the tables and legends."""
+    return f"tc {1e3 * setting.tc:g} ms, ζ {setting.damping:g}, ρ {1e3 * setting.rho:g} mm"
+
+
+# The engine against the second implementation, both of the same model (the seat's
+# normal force, the foundation's friction impulses): both integrate at rtol 1e-10 and
+# locate every event by root finding; the second implementation reads its peaks from its
+# dense output every 2e-4 s, below the true peak by at most theta_dd dt^2 / 8 (6e-7 of
+# the shaft's 0.022 alpha under 0.5 g, the smallest peak here); the differences grow
+# through the 30 to 60 impacts of a run. Peaks and slips: 2e-6 of themselves (three
+# times that bound); instants: 1e-6 s; the seat impulse ratio, a closed form of the
+# state at an impact: 1e-9 of itself.
+TOL_ENGINE = 2e-6
+TOL_ENGINE_TIME = 1e-6
+TOL_ENGINE_RATIO = 1e-9
+
+
+def compare_engine(scenario, ref, engine):
+    """Rows of the table of the engine against the second implementation."""
+    rows = []
+
+    def compared(quantity, value, reference, tolerance, relative):
+        if value is None or reference is None:
+            same = value is None and reference is None
+            check(f"{scenario['name']}: {quantity} (engine)", 0.0 if same else math.inf, 0.0, 0.0, relative=False)
+            diff, ok = (0.0, True) if same else (math.inf, False)
+        else:
+            diff, ok = check(f"{scenario['name']}: {quantity} (engine)", value, reference, tolerance, relative)
+        plain = lambda v: "—" if v is None else float(v)
+        rows.append({"scenario": scenario["name"], "quantity": quantity, "engine": plain(value), "reference": plain(reference), "difference": diff, "tolerance": tolerance, "within": "yes" if ok else "NO"})
+
+    for k, block in enumerate(("shaft", "belfry")):
+        compared(f"{block}: first uplift (s)", engine["first_uplift"][k], ref["first_uplift"][k], TOL_ENGINE_TIME, False)
+    for k, block in enumerate(("shaft", "belfry")):
+        if ref["overturned"] != k:
+            compared(f"{block}: largest θ/α", engine["peak_over_alpha"][k], ref["peak_over_alpha"][k], TOL_ENGINE, True)
+    if ref["overturned"] is not None or engine["overturned"] is not None:
+        same = engine["overturned"] == ref["overturned"]
+        check(f"{scenario['name']}: the block that overturns (engine)", 0.0 if same else 1.0, 0.0, 0.0, relative=False)
+        which = lambda r: "none" if r["overturned"] is None else ("shaft", "belfry")[r["overturned"]]
+        rows.append({"scenario": scenario["name"], "quantity": "overturns", "engine": which(engine), "reference": which(ref), "difference": 0.0 if same else 1.0, "tolerance": 0.0, "within": "yes" if same else "NO"})
+        compared("overturning time (s)", engine["overturn_time"], ref["overturn_time"], TOL_ENGINE_TIME, False)
+    if scenario["mu"] is not None:
+        compared("largest slip (m)", engine["max_slip"], ref["max_slip"], TOL_ENGINE * ref["max_slip"], False)
+        compared("final slip (m)", engine["final_slip"], ref["final_slip"], TOL_ENGINE * ref["max_slip"], False)
+    compared("max_seat_impulse_ratio", engine["seat_ratio"], ref["seat_ratio"], TOL_ENGINE_RATIO, True)
+    return rows
+
+
 def main():
-    results, convergence, rows = {}, [], []
+    if sys.argv[1:] == ["--sequence"]:
+        contact_sequence(SCENARIOS[RESTARTED])
+        finish("mujoco_stack --sequence")
+        return
+    if sys.argv[1:]:
+        sys.exit(f"usage: mujoco_stack.py [--sequence], not {' '.join(sys.argv[1:])}")
+    results, convergence, rows, verticals, engine_rows = {}, [], [], {}, []
+    contact_restitution()
     for scenario in SCENARIOS:
-        model = reference_result(scenario)
+        # The engine bounds a seat's moment by the force normal to the top of the block
+        # below, V cos(phi) + T sin(phi) (V and T the vertical and horizontal forces of
+        # the blocks above, phi its tilt), as MuJoCo's contacts do; the model's chapter
+        # writes V: the second implementation does either (seat = "normal" or "vertical")
+        model = reference_result(scenario, seat="normal")
+        verticals[scenario["name"]] = reference_result(scenario)
+        engine_rows += compare_engine(scenario, model, engine_result(scenario))
         # MuJoCo's joint friction bounds forces, not impulses: on a sliding church it is
         # compared with the model without the foundation's friction impulses at impacts
-        ref = model if scenario["mu"] is None else reference_result(scenario, impulsive_friction=False)
+        ref = model if scenario["mu"] is None else reference_result(scenario, impulsive_friction=False, seat="normal")
         results[scenario["name"]] = {"model": model, "no friction impulse": ref}
         for name, implementation in IMPLEMENTATIONS.items():
             if name == "MuJoCo":
-                for tc, dt in LEVELS:
-                    out = mujoco_result(scenario, tc, dt)
-                    results[scenario["name"]][f"MuJoCo, tc = {1e3 * tc:g} ms"] = out
+                for setting in LEVELS:
+                    out = mujoco_result(scenario, setting)
+                    results[scenario["name"]][f"MuJoCo, {described(setting)}"] = out
                     rel = lambda a, b: abs(a / b - 1) if b else float("nan")
                     convergence.append(
                         {
                             "scenario": scenario["name"],
-                            "tc_ms": 1e3 * tc,
+                            "tc_ms": 1e3 * setting.tc,
+                            "damping": setting.damping,
+                            "rho_mm": 1e3 * setting.rho,
                             "shaft_peak_rel": rel(out["peak_over_alpha"][0], ref["peak_over_alpha"][0]),
                             "belfry_peak_rel": rel(out["peak_over_alpha"][1], ref["peak_over_alpha"][1]) if ref["overturned"] != 1 else float("nan"),
                             "shaft_uplift_ms": 1e3 * abs(out["first_uplift"][0] - ref["first_uplift"][0]),
@@ -509,14 +642,12 @@ def main():
             else:
                 out = implementation(scenario)
             results[scenario["name"]][name] = out
-            rows += compare(name, scenario, model, ref, out, LEVELS[-1][0])
+            rows += compare(name, scenario, model, ref, out, LEVELS[-1].tc)
         print(f"{scenario['name']}: peaks θ/α, model {model['peak_over_alpha']}, MuJoCo {results[scenario['name']]['MuJoCo']['peak_over_alpha']}")
-    # The model bounds a seat's moment by the vertical force V of the blocks above; on a
-    # tilted shaft the force normal to its top is V cos(phi) + T sin(phi)
     tilted = []
     for scenario in SCENARIOS:
-        normal = reference_result(scenario, seat="normal")
-        model = results[scenario["name"]]["model"]
+        normal = results[scenario["name"]]["model"]
+        model = verticals[scenario["name"]]
         tilted.append(
             {
                 "scenario": scenario["name"],
@@ -531,11 +662,11 @@ def main():
         "mujoco-stack-seat-normal",
         [
             ("scenario", "stack", ""),
-            ("uplift_vertical", "belfry's first uplift, model: V (s)", ".5f"),
-            ("uplift_normal", "with the seat's normal force (s)", ".5f"),
-            ("uplift_mujoco", "MuJoCo, tc = 1 ms (s)", ".5f"),
-            ("peak_vertical", "belfry's largest θ/α, model", ".5f"),
-            ("peak_normal", "with the seat's normal force", ".5f"),
+            ("uplift_vertical", "belfry's first uplift, the seat's moment bounded by V (s)", ".5f"),
+            ("uplift_normal", "by the normal force, as the engine (s)", ".5f"),
+            ("uplift_mujoco", f"MuJoCo, {described(LEVELS[-1])} (s)", ".5f"),
+            ("peak_vertical", "belfry's largest θ/α, V", ".5f"),
+            ("peak_normal", "the normal force", ".5f"),
         ],
         tilted,
     )
@@ -549,9 +680,9 @@ def main():
         [
             ("scenario", "stack", ""),
             ("quantity", "quantity", ""),
-            ("model", "model (second implementation)", ".4g"),
+            ("model", "the engine's model (second implementation)", ".4g"),
             ("reference", "compared with (on a church: no friction impulse)", ".4g"),
-            ("MuJoCo", "MuJoCo (tc = 1 ms)", ".4g"),
+            ("MuJoCo", f"MuJoCo ({described(LEVELS[-1])})", ".4g"),
             ("difference", "difference", ".2e"),
             ("tolerance", "tolerance", ".2e"),
             ("within", "within", ""),
@@ -559,10 +690,25 @@ def main():
         [{k: plain(v) if k in ("model", "reference", "MuJoCo") else v for k, v in r.items()} for r in rows],
     )
     write_table(
+        "mujoco-stack-engine",
+        [
+            ("scenario", "stack", ""),
+            ("quantity", "quantity", ""),
+            ("engine", "engine (rocking run)", ".10g"),
+            ("reference", "second implementation", ".10g"),
+            ("difference", "difference", ".1e"),
+            ("tolerance", "tolerance", ".0e"),
+            ("within", "within", ""),
+        ],
+        engine_rows,
+    )
+    write_table(
         "mujoco-stack-convergence",
         [
             ("scenario", "stack", ""),
             ("tc_ms", "tc (ms)", "g"),
+            ("damping", "ζ", "g"),
+            ("rho_mm", "ρ (mm)", "g"),
             ("shaft_peak_rel", "shaft θ/α", ".2%"),
             ("belfry_peak_rel", "belfry θ/α", ".2%"),
             ("shaft_uplift_ms", "shaft uplift (ms)", ".2f"),
@@ -579,45 +725,231 @@ def main():
             ("seat_ratio", "seat impulse ratio M_imp / (V_imp B2/2)", ".4f"),
             ("shaft_after", "shaft θ̇1⁺ (rad/s)", ".5f"),
             ("model_rate", "belfry θ̇2 10 ms after the landing, model (rad/s)", ".5f"),
-            ("mujoco_rate", "MuJoCo, tc = 1 ms (rad/s)", ".5f"),
+            ("mujoco_rate", "MuJoCo, tc = 1 ms, ζ 1 (rad/s)", ".5f"),
         ],
         seated,
     )
-    settings(SCENARIOS[RESTARTED])
     restarted, landings = restart_tables(SCENARIOS[RESTARTED])
     figure(results)
     restart_figure(SCENARIOS[RESTARTED], restarted, landings)
     finish("mujoco_stack")
 
 
-# MuJoCo's settings other than the contacts' time constant, at tc = 1 ms
+# --- MuJoCo's contacts: their restitution, and the sequence of settings ----------------------
+
+
+def restitution(damping):
+    """The speed ratio at which a linear spring-dashpot contact of damping ratio `damping`,
+    which can push but not pull, throws back a point mass: x'' + 2 z w x' + w^2 x = 0
+    from x = 0, x' = 1 (w = 1: the ratio does not depend on w, so not on MuJoCo's tc),
+    until the force w^2 x + 2 z w x' comes to zero. With the roots s1, s2 of
+    s^2 + 2 z s + 1, x = (e^(s1 t) - e^(s2 t))/(s1 - s2); at z = 1, e^-2."""
+    z = damping
+    if z == 1.0:
+        return math.exp(-2.0)
+    root = np.sqrt(complex(z * z - 1.0))
+    s1, s2 = -z + root, -z - root
+    x = lambda t: ((np.exp(s1 * t) - np.exp(s2 * t)) / (s1 - s2)).real
+    v = lambda t: ((s1 * np.exp(s1 * t) - s2 * np.exp(s2 * t)) / (s1 - s2)).real
+    force = lambda t: x(t) + 2.0 * z * v(t)
+    # the force falls from 2 z at t = 0 and crosses zero once, before t = 2 pi
+    # (underdamped) or where the slow root's term overtakes the fast one's (overdamped)
+    grid = np.linspace(1e-12, 4.0 * math.pi, 40001)
+    first = next(i for i, t in enumerate(grid) if force(t) < 0.0)
+    return -v(brentq(force, grid[first - 1], grid[first], xtol=1e-15))
+
+
+DAMPINGS = (1.0, 2.0, 4.0, 8.0, 16.0)
+DROP_STEPS = (80, 320, 1280)  # steps per tc
+# MuJoCo's restitution against the closed form, at dt = tc/1280: the discrete step's error
+# falls about 16-fold from tc/320 to tc/1280 (second order); at tc/320 it is 0.5-10%
+# (largest at z = 16, whose dashpot acts in tc/32), so at tc/1280 it is below 1%
+TOL_DROP = 0.01
+
+
+def dropped_sphere(damping, steps, tc=1e-3, speed=0.1):
+    """MuJoCo's speed ratio for a sphere of 1 mm on a slide joint landing at `speed` on a
+    plane, contacts as the blocks' (no gravity: the contact alone)."""
+    contact = f'solref="{mjcf.solref(tc, damping)}" solimp="0.99 0.99 0.001"'
+    text = f"""<mujoco><option timestep="{tc / steps!r}" gravity="0 0 0" cone="elliptic" integrator="implicitfast"/>
+<worldbody><geom type="plane" size="1 1 1" {contact}/>
+<body pos="0 0 0.0011"><joint type="slide" axis="0 0 1"/><geom type="sphere" size="0.001" mass="100" {contact}/></body>
+</worldbody></mujoco>"""
+    model = mujoco.MjModel.from_xml_string(text)
+    data = mujoco.MjData(model)
+    data.qvel[0] = -speed
+    touched = False
+    while not (touched and data.ncon == 0):
+        mujoco.mj_step(model, data)
+        touched = touched or data.ncon > 0
+    return float(data.qvel[0]) / speed
+
+
+def contact_restitution():
+    rows = []
+    for z in DAMPINGS:
+        row = {"damping": z, "closed_form": restitution(z)}
+        for n in DROP_STEPS:
+            row[f"mujoco_{n}"] = dropped_sphere(z, n)
+        d, ok = check(f"MuJoCo's dropped sphere, damping ratio {z:g}: restitution", row[f"mujoco_{DROP_STEPS[-1]}"], row["closed_form"], TOL_DROP)
+        row["difference"], row["within"] = d, "yes" if ok else "NO"
+        rows.append(row)
+    write_table(
+        "mujoco-contact-restitution",
+        [("damping", "damping ratio ζ of MuJoCo's contact", "g"), ("closed_form", "speed ratio after a landing, closed form", ".5f")]
+        + [(f"mujoco_{n}", f"MuJoCo, dt = tc/{n}", ".5f") for n in DROP_STEPS]
+        + [("difference", f"difference at tc/{DROP_STEPS[-1]}", ".2%"), ("within", f"within {TOL_DROP:.0%}", "")],
+        rows,
+    )
+    return rows
+
+
 ELLIPTIC = 'cone="elliptic"'
-SETTINGS = (
-    ("as in the tables (elliptic cones, implicitfast, dt = tc/20)", 5e-5, lambda x: x),
-    ("step tc/10", 1e-4, lambda x: x),
-    ("step tc/40", 2.5e-5, lambda x: x),
-    ("RK4 integrator", 5e-5, lambda x: x.replace('integrator="implicitfast"', 'integrator="RK4"')),
-    ("impratio 10", 5e-5, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' impratio="10"')),
-    ("noslip iterations 20", 5e-5, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' noslip_iterations="20"')),
-    ("solver tolerance 1e-12, 200 iterations", 5e-5, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' tolerance="1e-12" iterations="200"')),
-    ("solimp 0.9 0.95 (softer)", 5e-5, lambda x: x.replace('solimp="0.99 0.99 0.001"', 'solimp="0.9 0.95 0.001"')),
-    ("contact friction 1 (not 10)", 5e-5, lambda x: x.replace('friction="10 ', 'friction="1 ')),
-    ("pyramidal cones", 5e-5, lambda x: x.replace(ELLIPTIC, 'cone="pyramidal"')),
+SOLVER = (
+    ("step tc/10", lambda s: s._replace(dt=s.tc / 10), None),
+    ("step tc/40", lambda s: s._replace(dt=s.tc / 40), None),
+    ("RK4 integrator", None, lambda x: x.replace('integrator="implicitfast"', 'integrator="RK4"')),
+    ("impratio 10", None, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' impratio="10"')),
+    ("impratio 100", None, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' impratio="100"')),
+    ("noslip iterations 20", None, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' noslip_iterations="20"')),
+    ("solver tolerance 1e-12, 200 iterations", None, lambda x: x.replace(ELLIPTIC, ELLIPTIC + ' tolerance="1e-12" iterations="200"')),
+    ("solimp 0.9 0.95 (softer)", None, lambda x: x.replace('solimp="0.99 0.99 0.001"', 'solimp="0.9 0.95 0.001"')),
+    ("contact friction 1 (not 10)", None, lambda x: x.replace('friction="10 ', 'friction="1 ')),
+    ("pyramidal cones", None, lambda x: x.replace(ELLIPTIC, 'cone="pyramidal"')),
+    ("pyramidal cones, contact friction 1", None, lambda x: x.replace(ELLIPTIC, 'cone="pyramidal"').replace('friction="10 ', 'friction="1 ')),
 )
 
 
-def settings(scenario):
-    """The belfry's largest theta/alpha with each of MuJoCo's SETTINGS (tc = 1 ms)."""
-    model = reference_result(scenario, impulsive_friction=False)["peak_over_alpha"][1]
+def sequence_settings():
+    """(group, what changes, setting, edit of the MJCF text), one parameter at a time."""
+    rows = [("stiffer, critically damped", f"tc {1e3 * tc:g} ms", critical(tc), None) for tc in (4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4)]
+    for name, change, edit in SOLVER[:-1]:
+        rows.append(("MuJoCo's solver, tc 1 ms, critically damped", name, (change or (lambda s: s))(critical(1e-3)), edit))
+    base = critical(1e-3)
+    rows += [("damping ratio, tc 1 ms, ρ 1 mm", f"ζ {z:g}", base._replace(damping=z), None) for z in DAMPINGS]
+    damped = base._replace(damping=4.0)
+    rows += [("corner radius, tc 1 ms, ζ 4", f"ρ {1e3 * rho:g} mm", damped._replace(rho=rho), None) for rho in (1e-3, 3e-4, 1e-4, 3e-5)]
+    sharp = Setting(1e-3, 5e-5, 8.0, 1e-4)
+    rows += [("stiffer, ζ 8, ρ 0.1 mm", f"tc {1e3 * tc:g} ms", sharp._replace(tc=tc, dt=tc / 20), None) for tc in (1e-3, 5e-4, 2.5e-4)]
+    last = sharp._replace(tc=2.5e-4, dt=1.25e-5)
+    for name, change, edit in SOLVER:
+        if name in ("step tc/40", "impratio 100", "noslip iterations 20", "contact friction 1 (not 10)", "pyramidal cones", "pyramidal cones, contact friction 1"):
+            rows.append(("MuJoCo's solver, tc 0.25 ms, ζ 8, ρ 0.1 mm", name, (change or (lambda s: s))(last), edit))
+    return rows
+
+
+def contact_sequence(scenario):
+    """The stack where MuJoCo differed most, run at a sequence of MuJoCo's settings, one
+    parameter at a time: its table (mujoco-stack-sequence) and figure. About 5 minutes,
+    hence `mujoco_stack.py --sequence`, not part of the whole run."""
+    ref = reference_result(scenario, impulsive_friction=False, seat="normal")
     rows = []
-    for name, dt, edit in SETTINGS:
-        peak = mujoco_result(scenario, LEVELS[-1][0], dt, edit)["peak_over_alpha"][1]
-        rows.append({"setting": name, "mujoco": peak, "model": model, "difference": peak / model - 1.0})
+    for group, what, setting, edit in sequence_settings():
+        out = mujoco_result(scenario, setting, edit or (lambda x: x))
+        rel = [o / r - 1.0 for o, r in zip(out["peak_over_alpha"], ref["peak_over_alpha"])]
+        rows.append(
+            {
+                "group": group,
+                "setting": what,
+                "tc_ms": 1e3 * setting.tc,
+                "dt_us": 1e6 * setting.dt,
+                "damping": setting.damping,
+                "rho_mm": 1e3 * setting.rho,
+                "restitution": restitution(setting.damping),
+                "belfry_peak": out["peak_over_alpha"][1],
+                "belfry_rel": rel[1],
+                "shaft_rel": rel[0],
+                "slip_diff_mm": 1e3 * (out["max_slip"] - ref["max_slip"]),
+                "final_diff_mm": 1e3 * (out["final_slip"] - ref["final_slip"]),
+            }
+        )
+        print(f"{group}: {what}: belfry {rel[1]:+.3%}, shaft {rel[0]:+.3%}", flush=True)
     write_table(
-        "mujoco-stack-settings",
-        [("setting", "MuJoCo's setting (tc = 1 ms)", ""), ("mujoco", "belfry's largest θ/α, MuJoCo", ".5f"), ("model", "model (no friction impulse)", ".5f"), ("difference", "difference", "+.2%")],
+        "mujoco-stack-sequence",
+        [
+            ("group", "what changes", ""),
+            ("setting", "setting", ""),
+            ("tc_ms", "tc (ms)", "g"),
+            ("dt_us", "step (µs)", "g"),
+            ("damping", "ζ", "g"),
+            ("rho_mm", "ρ (mm)", "g"),
+            ("restitution", "contact's restitution e(ζ)", ".4f"),
+            ("belfry_peak", "belfry's largest θ/α, MuJoCo", ".5f"),
+            ("belfry_rel", f"vs the model ({ref['peak_over_alpha'][1]:.5f})", "+.2%"),
+            ("shaft_rel", "shaft's largest θ/α vs the model", "+.2%"),
+            ("slip_diff_mm", "largest slip − model's (mm)", "+.3f"),
+            ("final_diff_mm", "final slip − model's (mm)", "+.3f"),
+        ],
         rows,
     )
+    sequence_figure(scenario, rows)
+
+
+def sequence_figure(scenario, rows):
+    fig = plt.figure(figsize=(14, 14))
+    stiff, damp, corner, solver = (fig.add_subplot(3, 2, k) for k in (1, 2, 3, 4))
+    slips = fig.add_subplot(3, 1, 3)
+    group = lambda name: [r for r in rows if r["group"] == name]
+    for name, style, label in (("stiffer, critically damped", "o-", "critically damped (ζ 1), corners ρ 1 mm"), ("stiffer, ζ 8, ρ 0.1 mm", "s-", "damped (ζ 8), corners ρ 0.1 mm")):
+        rs = group(name)
+        stiff.plot([r["tc_ms"] for r in rs], [100 * r["belfry_rel"] for r in rs], style, mfc="none", label=label)
+    stiff.set_xscale("log")
+    stiff.set_xticks([4, 2, 1, 0.5, 0.25], ["4", "2", "1", "0.5", "0.25"])
+    stiff.minorticks_off()
+    stiff.invert_xaxis()
+    stiff.set_xlabel("contact time constant tc (ms), stiffer to the right")
+    stiff.set_title("Stiffer contacts: the difference grows while the contact bounces", fontsize=9)
+    rs = group("damping ratio, tc 1 ms, ρ 1 mm")
+    damp.plot([r["damping"] for r in rs], [100 * r["belfry_rel"] for r in rs], "o-", color="tab:red", mfc="none", label="belfry's largest θ/α: MuJoCo − model (tc 1 ms, ρ 1 mm)")
+    twin = damp.twinx()
+    zs = np.geomspace(1.0, 16.0, 60)
+    twin.plot(zs, [100 * restitution(z) for z in zs], "-", color="0.5", lw=1, label="the contact's restitution e(ζ), closed form (right axis)")
+    twin.set_ylabel("contact's restitution e(ζ) (%)")
+    twin.set_ylim(bottom=0.0)
+    damp.set_xscale("log", base=2)
+    damp.set_xlabel("damping ratio ζ of the contacts (stiffness kept: 1/tc²)")
+    damp.set_title("Damped contacts: the bounce goes, the difference falls", fontsize=9)
+    lines = damp.get_legend_handles_labels()
+    more = twin.get_legend_handles_labels()
+    damp.legend(lines[0] + more[0], lines[1] + more[1], fontsize=8, loc="center right")
+    rs = group("corner radius, tc 1 ms, ζ 4")
+    corner.plot([r["rho_mm"] for r in rs], [100 * r["belfry_rel"] for r in rs], "o-", color="tab:green", mfc="none", label="tc 1 ms, ζ 4")
+    corner.set_xscale("log")
+    corner.set_xticks([1, 0.3, 0.1, 0.03], ["1", "0.3", "0.1", "0.03"])
+    corner.minorticks_off()
+    corner.invert_xaxis()
+    corner.set_xlabel("radius ρ of the corner spheres (mm), sharper to the right")
+    corner.set_title("Sharper corners: the pivot moves to the block's edge", fontsize=9)
+    for k, (name, color) in enumerate((("MuJoCo's solver, tc 1 ms, critically damped", "tab:blue"), ("MuJoCo's solver, tc 0.25 ms, ζ 8, ρ 0.1 mm", "tab:purple"))):
+        rs = group(name)
+        base = [r for r in rows if r["group"].startswith("stiffer") and r["tc_ms"] == rs[0]["tc_ms"] and r["damping"] == rs[0]["damping"] and r["rho_mm"] == rs[0]["rho_mm"]][0]
+        labels = ["as the sequence"] + [r["setting"] for r in rs]
+        values = [100 * r["belfry_rel"] for r in [base] + rs]
+        solver.barh([f"{label} ({'ζ 1' if k == 0 else 'ζ 8'})" for label in labels], values, color=color, alpha=0.7, label=name)
+    solver.axvline(0.0, color="k", lw=0.8)
+    solver.invert_yaxis()
+    solver.tick_params(axis="y", labelsize=7)
+    solver.set_xlabel("belfry's largest θ/α: MuJoCo − model (%)")
+    solver.set_title("MuJoCo's solver settings, at the first and the last setting", fontsize=9)
+    solver.legend(fontsize=8, loc="upper right")
+    for ax in (stiff, damp, corner):
+        ax.axhline(0.0, color="k", lw=0.8)
+        ax.set_ylabel("belfry's largest θ/α: MuJoCo − model (%)")
+        ax.grid(True, alpha=0.3)
+        if ax is not damp:
+            ax.legend(fontsize=8)
+    order = [r for r in rows if not r["group"].startswith("MuJoCo's solver")]
+    slips.plot(range(len(order)), [100 * r["belfry_rel"] for r in order], "o-", color="tab:red", mfc="none", label="belfry's largest θ/α (%)")
+    slips.plot(range(len(order)), [100 * r["shaft_rel"] for r in order], "s-", color="0.4", mfc="none", label="shaft's largest θ/α (%)")
+    slips.set_xticks(range(len(order)), [f"{r['setting']} ({r['group'].split(',')[0]})" for r in order], rotation=70, fontsize=7, ha="right")
+    slips.axhline(0.0, color="k", lw=0.8)
+    slips.set_ylabel("MuJoCo − model (%)")
+    slips.set_title("The whole sequence, in order", fontsize=9)
+    slips.grid(True, alpha=0.3)
+    slips.legend(fontsize=8)
+    fig.suptitle(f"{scenario['name']}: MuJoCo against the model without friction impulses, as MuJoCo's contacts approach rigid, plastic and sharp", fontsize=10)
+    fig.tight_layout()
+    save_figure(fig, "mujoco-stack-sequence")
 
 
 def restart_tables(scenario):
@@ -631,7 +963,7 @@ def restart_tables(scenario):
             _, ok = check(f"{scenario['name']}: belfry's largest θ/α, MuJoCo restarted at {row['t0']} s", row["mujoco"], row["model"], TOL_PEAK)
             row["within"] = "yes" if ok else "NO"
     landings = impacts(scenario)
-    tc = LEVELS[-1][0]
+    tc = 1e-3
     for row in landings:
         # one impact and the motion after it, as every peak (TOL_PEAK)
         _, ok = check(f"{scenario['name']}: after the {row['block']}'s landing at {row['t']:.4f} s", row[f"landing_{tc}"], 0.0, TOL_PEAK, relative=False)
@@ -666,7 +998,7 @@ def restart_tables(scenario):
     write_table("mujoco-stack-landings", columns, landings)
     bounces = []
     for name, block in BOUNCING.items():
-        for level_tc, _ in LEVELS[1:]:
+        for level_tc in (2e-3, 1e-3):
             r, housner, airborne, n = bounce(block, level_tc)
             d, ok = check(f"{name} alone on a fixed base, tc = {level_tc}: MuJoCo's restitution", r, housner, TOL_RESTITUTION)
             bounces.append({"block": name, "tc_ms": 1e3 * level_tc, "mujoco_r": r, "housner_r": housner, "difference": r / housner - 1.0, "airborne_ms": airborne, "impacts": n, "within": "yes" if ok else "NO"})
@@ -721,7 +1053,8 @@ def restart_figure(scenario, restarted, landings):
 
 def figure(results):
     fig, axes = plt.subplots(len(SCENARIOS), 2, figsize=(15, 3.6 * len(SCENARIOS)), squeeze=False)
-    styles = {"model": ("k", "-", 1.6), "no friction impulse": ("0.55", "-", 1.0), "MuJoCo": ("tab:red", "--", 1.2), "MuJoCo, tc = 4 ms": ("tab:orange", ":", 1.0)}
+    critically = f"MuJoCo, {described(LEVELS[0])}"
+    styles = {"model": ("k", "-", 1.6), "no friction impulse": ("0.55", "-", 1.0), "MuJoCo": ("tab:red", "--", 1.2), critically: ("tab:orange", ":", 1.0)}
     for row, scenario in zip(axes, SCENARIOS):
         a = alphas(scenario["blocks"])
         for name, out in results[scenario["name"]].items():
@@ -730,7 +1063,7 @@ def figure(results):
             color, ls, lw = styles[name]
             h = out["history"]
             for k, ax in enumerate(row):
-                ax.plot(h[:, 0], h[:, 2 + k] / a[k], ls, color=color, lw=lw, label={"model": "model (second implementation)", "no friction impulse": "model without friction impulses at impacts", "MuJoCo": "MuJoCo, tc = 1 ms"}.get(name, name))
+                ax.plot(h[:, 0], h[:, 2 + k] / a[k], ls, color=color, lw=lw, label={"model": "model (second implementation)", "no friction impulse": "model without friction impulses at impacts", "MuJoCo": f"MuJoCo, {described(LEVELS[-1])}", critically: critically + " (critically damped)"}.get(name, name))
         for k, ax in enumerate(row):
             ax.set_title(f"{scenario['name']}: {('shaft θ1 on the ' + ('church' if scenario['mu'] is not None else 'fixed base'), 'belfry θ2 on the shaft')[k]}", fontsize=9)
             ax.set_xlabel("time (s)")
