@@ -609,8 +609,11 @@ export class AssessView {
     const m = mechanisms[index];
     const c = m.capacity;
     const curve = (shown.curves ?? [shown.curve])[index];
+    // a* at the chart's points as the engine gives them (the curve's own a*(d)).
+    const exact = new Map((shown.adrs?.[index] ?? []).map(([d, a]) => [d, a]));
     const at = (d) => {
-      // a* on the curve at d (linear between its points; 0 beyond d0).
+      if (exact.has(d)) return exact.get(d);
+      // Elsewhere, a* on the curve at d (linear between its points; 0 beyond d0).
       if (d >= curve[curve.length - 1][0]) return curve[curve.length - 1][1];
       const i = Math.max(1, curve.findIndex(([x]) => x >= d));
       const [[x0, y0], [x1, y1]] = [curve[i - 1], curve[i]];
@@ -769,7 +772,7 @@ export class AssessView {
   downloadDynamic(name) {
     const r = this.dynamic?.result;
     if (!r) return;
-    const { curve, curves, records_csv, spectra_csv, responses, ...json } = r;
+    const { curve, curves, adrs, records_csv, spectra_csv, responses, ...json } = r;
     const text = { "records.csv": records_csv, "spectra.csv": spectra_csv }[name] ?? JSON.stringify(json, null, 2) + "\n";
     save(name, text);
   }
@@ -777,7 +780,7 @@ export class AssessView {
   /** assessment.json (the command's, without a record set) or capacity.csv. */
   download(name) {
     if (!this.result) return;
-    const { curve, curves, ms, ...json } = this.result;
+    const { curve, curves, adrs, ms, ...json } = this.result;
     const text = name === "capacity.csv" ? "d_star_m,a_star_m_s2\n" + curve.map(([d, a]) => `${d},${a}`).join("\n") + "\n" : JSON.stringify(json, null, 2) + "\n";
     save(name, text);
   }

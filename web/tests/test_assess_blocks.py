@@ -88,7 +88,7 @@ def open_stack(browser, server):
 
 
 def page_assessment(page):
-    return page.evaluate("(() => { const { curve, curves, ms, ...r } = document.getElementById('assess').assessment; return r; })()")
+    return page.evaluate("(() => { const { curve, curves, adrs, ms, ...r } = document.getElementById('assess').assessment; return r; })()")
 
 
 def test_every_mechanism_of_the_stack_is_the_commands(browser, server, tmp_path):
@@ -198,5 +198,32 @@ def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server,
     ]
     expect(page.locator("#assess-dynamic-label")).to_have_text(re.compile(r"Done: \d+ runs of a record in"))
     page.locator("#assess-dynamic").screenshot(path=str(OUT / "assess-blocks-dynamic.png"))
+    assert page.errors == [], page.errors
+    page.close()
+
+
+def test_on_the_exact_curve_each_mechanisms_points_sit_on_it(browser, server):
+    """With the exact capacity curve, the ADRS chart's points of every
+    mechanism (d_SLV, d_SLC and the non-linear kinematic demands) are on the
+    curve of the rotated block, a*(d) = g tan(asin(sin α − d/R)) / FC
+    (the equilibrium at θ = α − asin(sin α − d/R)), worked out here from the
+    mechanism's α and R: to a few roundings (1e-12), where a line between two
+    of the curve's 201 points is off by up to 2e-7 of a* (measured)."""
+    page = open_stack(browser, server)
+    page.select_option('[name="assessment.capacity"]', "exact")
+    page.wait_for_function("document.getElementById('assess').assessment?.capacity?.curve === 'exact'")
+    expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
+    mechanisms = page.evaluate("document.getElementById('assess').assessment.mechanisms")
+    chart = page.locator("#assess-adrs")
+    for m in mechanisms:
+        page.select_option("#assess-adrs-mechanism", m["name"])
+        expect(chart).to_have_attribute("data-mechanism", m["name"])
+        cap = m["capacity"]
+        alpha, radius = cap["alpha_rad"], cap["radius_m"]
+        points = json.loads(chart.get_attribute("data-points"))
+        assert len(points) == 4, points
+        for p in points:
+            a = 9.81 * math.tan(math.asin(math.sin(alpha) - p["d"] / radius)) / 1.35
+            assert abs(p["a"] - a) < 1e-12 * cap["a0_star_m_s2"], (m["name"], p, a)
     assert page.errors == [], page.errors
     page.close()

@@ -21,9 +21,10 @@ pub const ASSESS_ORIGIN: &str = "assess.toml";
 /// without a record set (`capacity`, `sites`, `checks`, `governing` and, with
 /// blocks on the tower, `mechanisms`: each block's own, the governing check
 /// taken over all and naming its `mechanism`), plus `curve`, the tower's
-/// capacity curve `[[d*, a*], …]` of `capacity.csv`, and `curves`, each
-/// mechanism's (the tower's first). An error is the command's one line, the
-/// file named `assess.toml`.
+/// capacity curve `[[d*, a*], …]` of `capacity.csv`, `curves`, each
+/// mechanism's (the tower's first), and `adrs`, each mechanism's points of the
+/// ADRS chart on its curve. An error is the command's one line, the file
+/// named `assess.toml`.
 pub fn assess_json(text: &str) -> Result<String, String> {
     let input = input(text)?;
     if !input.file.records.is_empty() {
@@ -38,13 +39,32 @@ pub fn assess_json(text: &str) -> Result<String, String> {
     Ok(out.to_string())
 }
 
-/// `curve` (the tower's capacity curve, `[[d*, a*], …]`) and `curves` (each
-/// mechanism's, the tower's first), put into the page's `assessment.json`.
+/// `curve` (the tower's capacity curve, `[[d*, a*], …]`), `curves` (each
+/// mechanism's, the tower's first) and `adrs` (each mechanism's points of the
+/// ADRS chart on its curve, `[[d*, a*(d*)], …]`, as report.html places them:
+/// d_SLV, d_SLC and each non-linear check's demand, at most d0), put into the
+/// page's `assessment.json`: the chart's markers sit on the curve's own
+/// a*(d), not on a line between two of its points.
 fn insert_curves(out: &mut Value, done: &Assessment) {
     if let Value::Object(map) = out {
         map.insert("curve".into(), json!(done.capacity.curve_points(CAPACITY_POINTS)));
-        let curves: Vec<Value> = done.mechanisms().iter().map(|m| json!(m.capacity.curve_points(CAPACITY_POINTS))).collect();
+        let mechanisms = done.mechanisms();
+        let curves: Vec<Value> = mechanisms.iter().map(|m| json!(m.capacity.curve_points(CAPACITY_POINTS))).collect();
         map.insert("curves".into(), Value::Array(curves));
+        let adrs: Vec<Value> = mechanisms
+            .iter()
+            .map(|m| {
+                let c = m.capacity;
+                let demands = m
+                    .completed()
+                    .into_iter()
+                    .filter(|k| matches!(k.method, Method::NonlinearKinematic | Method::NonlinearDynamic))
+                    .map(|k| k.demand.min(c.d0));
+                let points: Vec<(f64, f64)> = [c.d_slv, c.d_slc].into_iter().chain(demands).map(|d| (d, c.acceleration_at(d))).collect();
+                json!(points)
+            })
+            .collect();
+        map.insert("adrs".into(), Value::Array(adrs));
     }
 }
 
@@ -75,8 +95,8 @@ pub fn grid_site_json(grid: &str, lon: f64, lat: f64, nominal_life: f64, use_coe
 /// `[{ "name": "elcentro.AT2", "text": "…the file's content…" }, …]`, each
 /// record read by the reader of the command's files. The JSON text of
 /// `assessment.json` as the command writes it (with the dynamic checks and,
-/// with blocks on the tower, each block's `mechanisms`), plus `curve` and
-/// `curves` (as [`assess_json`]'s), `records_csv` and
+/// with blocks on the tower, each block's `mechanisms`), plus `curve`,
+/// `curves` and `adrs` (as [`assess_json`]'s), `records_csv` and
 /// `spectra_csv` (the texts of `records.csv` and `spectra.csv`) and
 /// `responses` (the rows of `records.csv` as objects).
 /// `progress(done, most)` is told after each record's run. An error is the

@@ -56,6 +56,9 @@ fn records_given_as_text_give_the_commands_numbers() {
     assert!(map.remove("curve").is_some());
     // One curve per mechanism: a tower alone has one.
     assert_eq!(map.remove("curves").and_then(|c| c.as_array().map(Vec::len)), Some(1));
+    // The chart's points of the one mechanism: d_SLV, d_SLC and the demands of
+    // the two non-linear kinematic and the two dynamic checks.
+    assert_eq!(map.remove("adrs").and_then(|c| c[0].as_array().map(Vec::len)), Some(6));
     // The rows of records.csv as objects: one per limit state and record.
     let responses = map.remove("responses").unwrap();
     assert_eq!(responses.as_array().map(Vec::len), Some(2 * RECORDS.len()));
