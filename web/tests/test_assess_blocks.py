@@ -154,6 +154,11 @@ def test_every_mechanism_of_the_stack_is_the_commands(browser, server, tmp_path)
     OUT.mkdir(parents=True, exist_ok=True)
     # The docs' figure (docs/src/guide/page-assess-blocks.png): the results, the form aside.
     page.locator("#assess-results").screenshot(path=str(OUT / "assess-blocks.png"))
+    # On a phone the wider tables scroll in their regions; the page does not.
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.wait_for_timeout(300)
+    width = page.evaluate("[document.documentElement.scrollWidth, document.documentElement.clientWidth]")
+    assert width[0] <= width[1], width
     assert page.errors == [], page.errors
     page.close()
 
