@@ -3,7 +3,7 @@
 //! the stripes; the rows do not depend on the thread count; bad studies fail
 //! with one line.
 
-use crate::util::{arg, assert_shards_merge_to_whole, read, rocking, tempdir, write};
+use crate::util::{arg, assert_shards_merge_to_whole, csv_table, read, rocking, tempdir, write};
 use serde_json::Value;
 use std::path::Path;
 
@@ -31,21 +31,6 @@ fn study(measure: &str) -> String {
     )
 }
 
-/// The rows of a CSV file as (header, rows of fields), quoted fields unquoted.
-fn csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut reader = csv_reader(path);
-    let header = reader.headers().unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
-    let rows = reader
-        .records()
-        .map(|r| r.unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect())
-        .collect();
-    (header, rows)
-}
-
-fn csv_reader(path: &Path) -> csv::Reader<std::fs::File> {
-    csv::Reader::from_path(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
-}
-
 #[test]
 fn every_stripe_equals_run_of_the_scaled_record_bit_for_bit() {
     for measure in ["pga", "pgv", "pga_ratio"] {
@@ -55,7 +40,7 @@ fn every_stripe_equals_run_of_the_scaled_record_bit_for_bit() {
         let out = dir.path().join("out");
         let r = rocking(&["fragility", arg(&study_file), "--out", arg(&out)]);
         assert_eq!(r.code, Some(0), "{}", r.stderr);
-        let (header, rows) = csv(&out.join("stripes.csv"));
+        let (header, rows) = csv_table(&out.join("stripes.csv"));
         assert_eq!(&header[..3], ["record", "level", "scale"]);
         assert_eq!(header.last().map(String::as_str), Some("error"));
         assert_eq!(rows.len(), 6, "2 records × 3 levels");
@@ -114,7 +99,7 @@ fn scales_are_levels_over_the_measures_of_the_records() {
         let out = dir.path().join("out");
         let r = rocking(&["fragility", arg(&study_file), "--out", arg(&out)]);
         assert_eq!(r.code, Some(0), "{}", r.stderr);
-        let (_, rows) = csv(&out.join("stripes.csv"));
+        let (_, rows) = csv_table(&out.join("stripes.csv"));
         for row in &rows[3..] {
             let (level, scale): (f64, f64) = (row[1].parse().unwrap_or(f64::NAN), row[2].parse().unwrap_or(f64::NAN));
             // A few roundings in the sums and the unit conversion.
@@ -132,10 +117,10 @@ fn fractions_and_fragility_count_the_stripes() {
     let out = dir.path().join("out");
     let r = rocking(&["fragility", arg(&study_file), "--out", arg(&out), "--plot"]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
-    let (header, rows) = csv(&out.join("stripes.csv"));
+    let (header, rows) = csv_table(&out.join("stripes.csv"));
     let column = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
     let (theta, uplift) = (column("max_theta_over_alpha"), column("tower_uplift_detected"));
-    let (fh, fractions) = csv(&out.join("fractions.csv"));
+    let (fh, fractions) = csv_table(&out.join("fractions.csv"));
     assert_eq!(fh, ["limit_state", "level", "cases", "exceeded"]);
     assert_eq!(fractions.len(), 2 * 3);
     for f in &fractions {
@@ -147,7 +132,7 @@ fn fractions_and_fragility_count_the_stripes() {
         };
         assert_eq!((f[2].as_str(), f[3].parse::<usize>().ok()), ("2", Some(exceeded)), "{f:?}");
     }
-    let (gh, fits) = csv(&out.join("fragility.csv"));
+    let (gh, fits) = csv_table(&out.join("fragility.csv"));
     assert_eq!(gh, ["limit_state", "median", "beta", "cases", "exceeded", "method"]);
     assert_eq!(fits.len(), 2);
     for fit in &fits {
@@ -267,7 +252,7 @@ fn the_example_study_runs() {
     let dir = tempdir();
     let r = rocking(&["fragility", "examples/fragility/tower-on-church.toml", "--out", arg(dir.path()), "--plot"]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
-    let (_, rows) = csv(&dir.path().join("stripes.csv"));
+    let (_, rows) = csv_table(&dir.path().join("stripes.csv"));
     assert_eq!(rows.len(), 12 * 20);
     let mut records: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
     records.dedup();
@@ -277,7 +262,7 @@ fn the_example_study_runs() {
         (1..=11).map(|k| format!("../../data/records/synthetic/kt_{k:02}.AT2")).collect::<Vec<_>>()
     );
     assert!(rows.iter().all(|r| r.last().is_some_and(String::is_empty)), "no case fails");
-    let (_, fits) = csv(&dir.path().join("fragility.csv"));
+    let (_, fits) = csv_table(&dir.path().join("fragility.csv"));
     let names: Vec<&str> = fits.iter().map(|f| f[0].as_str()).collect();
     assert_eq!(names, ["half-alpha", "slide-2cm", "collapse"]);
     for f in ["ida.svg", "fragility.svg"] {
@@ -306,7 +291,7 @@ fn a_second_run_replaces_the_first_runs_files() {
     }
     assert_eq!(read(&out.join("notes.txt")), "mine");
     // Two records at one level: two stripes.
-    assert_eq!(csv(&out.join("stripes.csv")).1.len(), 2);
+    assert_eq!(csv_table(&out.join("stripes.csv")).1.len(), 2);
     let leftovers: Vec<_> = std::fs::read_dir(&out)
         .unwrap_or_else(|e| panic!("{e}"))
         .filter_map(Result::ok)

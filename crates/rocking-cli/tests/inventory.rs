@@ -4,7 +4,7 @@
 //! their own error while the others are still right; inventory.geojson read
 //! back by the `geojson` crate.
 
-use crate::util::{arg, assert_shards_merge_to_whole, read, rocking, root, staging_folder, tempdir, write};
+use crate::util::{arg, assert_shards_merge_to_whole, csv_table, read, rocking, root, staging_folder, tempdir, write};
 use std::path::Path;
 
 /// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
@@ -45,15 +45,9 @@ fn assess(dir: &Path, name: &str, text: &str) -> (Vec<(String, f64, f64)>, f64, 
     (checks, num(&g["zeta_E"]), governing)
 }
 
-/// inventory.csv as (header, rows).
+/// inventory.csv of `out` as (header, rows).
 fn inventory_csv(out: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut reader = csv::Reader::from_path(out.join("inventory.csv")).unwrap_or_else(|e| panic!("{e}"));
-    let header = reader.headers().unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
-    let rows = reader
-        .records()
-        .map(|r| r.unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect())
-        .collect();
-    (header, rows)
+    csv_table(&out.join("inventory.csv"))
 }
 
 fn cell<'a>(header: &[String], row: &'a [String], name: &str) -> &'a str {

@@ -2,24 +2,13 @@
 //! not depend on `--threads`, a failing case does not stop the others,
 //! dimensionless axes, range expansion, bad sweep files, Ctrl-C, `--plot`.
 
-use crate::util::{arg, example, read, rocking, rocking_in, scenario_with, tempdir, write, SCENARIO};
+use crate::util::{arg, csv_table, example, read, rocking, rocking_in, scenario_with, tempdir, write, SCENARIO};
 use serde_json::Value;
 use std::path::Path;
 
 /// `SCENARIO` (the tower on its church, 1 s at 0.6 g, 5 Hz) with a `[sweep]` table.
 fn sweep_file(dir: &Path, name: &str, axes: &str) -> std::path::PathBuf {
     write(dir, name, &format!("{SCENARIO}\n[sweep]\n{axes}\n"))
-}
-
-/// The header and rows of a `sweep.csv`.
-fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut reader = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let header = reader.headers().unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect();
-    let rows = reader
-        .records()
-        .map(|r| r.unwrap_or_else(|e| panic!("{e}")).iter().map(String::from).collect())
-        .collect();
-    (header, rows)
 }
 
 /// Runs `rocking sweep file --out dir/name extra…`, which must succeed; returns the CSV path.
@@ -47,7 +36,7 @@ fn number(text: &str) -> f64 {
 fn every_row_equals_rocking_run_of_its_case() {
     let dir = tempdir();
     let file = sweep_file(dir.path(), "s.toml", "\"ground.amplitude\" = [0.4, 1.5]\n\"ground.frequency\" = [2.0, 5.0]");
-    let (header, rows) = table(&sweep_ok(&file, &dir.path().join("o"), &[]));
+    let (header, rows) = csv_table(&sweep_ok(&file, &dir.path().join("o"), &[]));
     assert_eq!(&header[..2], ["ground.amplitude", "ground.frequency"]);
     assert_eq!(header.last().map(String::as_str), Some("error"));
     assert!(!header.iter().any(|h| h == "wall_time_s"));
@@ -115,7 +104,7 @@ fn a_failing_case_does_not_stop_the_others() {
     let r = rocking_in(dir.path(), &["sweep", "friction.toml"]);
     assert_eq!(r.code, Some(0), "{r:?}");
     assert!(r.stdout.contains("3 cases") && r.stdout.contains("1 failed"), "{}", r.stdout);
-    let (header, rows) = table(&dir.path().join("out/friction/sweep.csv"));
+    let (header, rows) = csv_table(&dir.path().join("out/friction/sweep.csv"));
     let (error, peak) = (col(&header, "error"), col(&header, "max_theta_over_alpha"));
     assert_eq!(rows[1][0], "1.5");
     assert_eq!(
@@ -139,7 +128,7 @@ fn dimensionless_axes_replace_the_dimensional_keys_of_the_base() {
         "r.toml",
         "\"ground.amplitude_ratio\" = [1.5, 3.0]\n\"ground.frequency_ratio\" = [2.0, 6.0]",
     );
-    let (h, r) = table(&sweep_ok(&ratios, &dir.path().join("r"), &[]));
+    let (h, r) = csv_table(&sweep_ok(&ratios, &dir.path().join("r"), &[]));
     let (alpha, p) = (number(&r[0][col(&h, "alpha_rad")]), number(&r[0][col(&h, "p_rad_s")]));
     let amplitudes = [1.5, 3.0].map(|x| (x * alpha.tan()).to_string()).join(", ");
     let frequencies = [2.0, 6.0].map(|x| (x * p / (2.0 * std::f64::consts::PI)).to_string()).join(", ");
@@ -148,7 +137,7 @@ fn dimensionless_axes_replace_the_dimensional_keys_of_the_base() {
         "v.toml",
         &format!("\"ground.amplitude\" = [{amplitudes}]\n\"ground.frequency\" = [{frequencies}]"),
     );
-    let (hv, v) = table(&sweep_ok(&values, &dir.path().join("v"), &[]));
+    let (hv, v) = csv_table(&sweep_ok(&values, &dir.path().join("v"), &[]));
     let (kr, kv) = (col(&h, "max_theta_over_alpha"), col(&hv, "max_theta_over_alpha"));
     assert_eq!(r.len(), 4);
     for (a, b) in r.iter().zip(&v) {
@@ -169,7 +158,7 @@ fn ranges_expand_to_the_expected_values() {
         "s.toml",
         "\"ground.frequency\" = { from = 3.0, to = 4.0, steps = 5 }\n\"ground.amplitude\" = { from = 0.9, to = 0.3, step = 0.3 }",
     );
-    let (_, rows) = table(&sweep_ok(&file, &dir.path().join("o"), &[]));
+    let (_, rows) = csv_table(&sweep_ok(&file, &dir.path().join("o"), &[]));
     let pairs: Vec<(&str, &str)> = rows.iter().map(|r| (r[0].as_str(), r[1].as_str())).collect();
     let mut expected = Vec::new();
     for f in ["3.0", "3.25", "3.5", "3.75", "4.0"] {
@@ -231,7 +220,7 @@ fn the_figure_6_example_runs_and_rotation_falls_with_frequency() {
     let dir = tempdir();
     let r = rocking(&["sweep", "examples/figure6-sweep.toml", "--out", arg(dir.path())]);
     assert_eq!(r.code, Some(0), "{r:?}");
-    let (header, rows) = table(&dir.path().join("sweep.csv"));
+    let (header, rows) = csv_table(&dir.path().join("sweep.csv"));
     assert_eq!(rows.len(), 4 * 41);
     let (error, peak) = (col(&header, "error"), col(&header, "max_theta_over_alpha"));
     assert!(rows.iter().all(|r| r[error].is_empty()));
@@ -253,7 +242,7 @@ fn plot_comes_after_the_csv() {
     let out = dir.path().join("o");
     let r = rocking(&["sweep", arg(&file), "--out", arg(&out), "--plot"]);
     // Whether or not the figures can be drawn, sweep.csv is complete.
-    let (_, rows) = table(&out.join("sweep.csv"));
+    let (_, rows) = csv_table(&out.join("sweep.csv"));
     assert_eq!(rows.len(), 4);
     match r.code {
         Some(0) => assert!(r.stdout.contains("sweep.csv"), "{r:?}"),
@@ -301,7 +290,7 @@ fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
     assert_eq!(r.status.code(), Some(130), "{stderr}");
     let lines: Vec<&str> = stderr.lines().collect();
     assert_eq!(lines.len(), 1, "{stderr}");
-    let (header, rows) = table(&csv);
+    let (header, rows) = csv_table(&csv);
     assert!(rows.len() >= 2 && rows.len() < 20000, "{} rows", rows.len());
     assert!(
         lines[0].starts_with(&format!("interrupted: wrote {} of 20000 cases to ", rows.len())),
