@@ -43,33 +43,31 @@ pub struct Frame {
     pub coords: Coordinates,
     /// Where the blocks are.
     pub pose: Pose,
-    pub(crate) jac: [[Vec2; MAX_COORDINATES]; MAX_BLOCKS],
-    pub(crate) rot: [[f64; MAX_COORDINATES]; MAX_BLOCKS],
     pub(crate) quad: [Vec2; MAX_BLOCKS],
 }
 
 impl Frame {
     /// The frame of `pose` in `coords`.
-    #[inline]
+    #[inline(always)]
     pub fn new(coords: Coordinates, pose: Pose) -> Self {
-        // Filled in place: a frame is large, and one is made at every evaluation.
-        let mut frame = Self {
-            coords,
-            pose,
-            jac: [[[0.0; 2]; MAX_COORDINATES]; MAX_BLOCKS],
-            rot: [[0.0; MAX_COORDINATES]; MAX_BLOCKS],
-            quad: [[0.0; 2]; MAX_BLOCKS],
-        };
-        let (coords, pose) = (&frame.coords, &frame.pose);
-        for i in 0..pose.len() {
-            let g = pose.centre(i);
-            for (a, &c) in coords.list().iter().enumerate() {
-                frame.jac[i][a] = pose.point_jacobian(i, g, c);
-                frame.rot[i][a] = pose.rotation_jacobian(i, c);
-            }
-            frame.quad[i] = pose.point_quadratic(i, g);
+        let mut quad = [[0.0; 2]; MAX_BLOCKS];
+        for (i, q) in quad.iter_mut().enumerate().take(pose.len()) {
+            *q = pose.point_quadratic(i, pose.centre(i));
         }
-        frame
+        Self { coords, pose, quad }
+    }
+
+    /// `∂G_i/∂q_a`. Computed where it is used: a few operations, cheaper
+    /// than storing a table of them at every evaluation.
+    #[inline(always)]
+    pub(crate) fn jac(&self, i: usize, a: usize) -> Vec2 {
+        self.pose.point_jacobian(i, self.pose.centre(i), self.coords.list()[a])
+    }
+
+    /// `∂φ_i/∂q_a`.
+    #[inline(always)]
+    pub(crate) fn rot(&self, i: usize, a: usize) -> f64 {
+        self.pose.rotation_jacobian(i, self.coords.list()[a])
     }
 }
 
@@ -153,9 +151,9 @@ impl Stack {
             let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
             for a in 0..n {
                 for b in a..n {
-                    m[a][b] += block.mass * dot(frame.jac[i][a], frame.jac[i][b]) + block.inertia_centre * frame.rot[i][a] * frame.rot[i][b];
+                    m[a][b] += block.mass * dot(frame.jac(i, a), frame.jac(i, b)) + block.inertia_centre * frame.rot(i, a) * frame.rot(i, b);
                 }
-                f[a] -= block.mass * dot(frame.jac[i][a], load);
+                f[a] -= block.mass * dot(frame.jac(i, a), load);
             }
         }
         for a in 0..n {
@@ -173,7 +171,7 @@ impl Stack {
                 for (i, block) in self.blocks.iter().enumerate() {
                     rest += block.mass * frame.quad[i][1];
                     for b in 0..n {
-                        m[u][b] += friction * block.mass * frame.jac[i][b][1];
+                        m[u][b] += friction * block.mass * frame.jac(i, b)[1];
                     }
                 }
                 f[u] -= friction * rest;
@@ -230,9 +228,9 @@ impl Stack {
         for i in 0..self.len() {
             let mut acc = [a_g + frame.quad[i][0], frame.quad[i][1]];
             for a in 0..n {
-                acc[0] += frame.jac[i][a][0] * q_ddot[a];
-                acc[1] += frame.jac[i][a][1] * q_ddot[a];
-                rotation_acc[i] += frame.rot[i][a] * q_ddot[a];
+                acc[0] += frame.jac(i, a)[0] * q_ddot[a];
+                acc[1] += frame.jac(i, a)[1] * q_ddot[a];
+                rotation_acc[i] += frame.rot(i, a) * q_ddot[a];
             }
             centre_acc[i] = acc;
         }

@@ -168,7 +168,7 @@ pub struct Pose {
 impl Pose {
     /// The pose of `stack` in `regime` and `state` (a stuck interface's `θ_k`
     /// and `θ̇_k` are taken as 0 whatever the state holds).
-    #[inline]
+    #[inline(always)]
     pub fn new(stack: &Stack, regime: &StackRegime, state: &StackState) -> Self {
         let n = stack.len();
         let mut pose = Self {

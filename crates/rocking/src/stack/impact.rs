@@ -163,8 +163,8 @@ impl Stack {
         for (i, block) in self.blocks.iter().enumerate() {
             vertical_before += block.mass * before.centre[i][1];
             for a in 0..n {
-                p[a] += block.mass * dot(frame.jac[i][a], before.centre[i]) + block.inertia_centre * frame.rot[i][a] * before.rotation[i];
-                vertical_per[a] += block.mass * frame.jac[i][a][1];
+                p[a] += block.mass * dot(frame.jac(i, a), before.centre[i]) + block.inertia_centre * frame.rot(i, a) * before.rotation[i];
+                vertical_per[a] += block.mass * frame.jac(i, a)[1];
             }
         }
         let vertical_impulse = |q: &[f64; MAX_COORDINATES]| (0..n).map(|a| vertical_per[a] * q[a]).sum::<f64>() - vertical_before;
