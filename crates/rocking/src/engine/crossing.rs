@@ -171,7 +171,7 @@ fn state_crossing<const N: usize>(e: &Ends, screen: &Screen, i: usize, d: &Dense
             points.push((tb, value(tb)));
         }
     } else if screen.stick_examined {
-        let mut eval = |t: f64| condition_on(kernel, regime, (&piece, &vpiece), c, d, t);
+        let mut eval = |t: f64| condition_on(kernel, regime, (piece, vpiece), c, d, t);
         interior_extrema(t0, e.w0.conditions[i], t1, e.w1.conditions[i], &mut eval, |_| true, &mut |t, v| {
             points.push((t, v))
         });

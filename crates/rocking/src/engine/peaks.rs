@@ -20,9 +20,9 @@ pub(super) fn inside<const N: usize>(e: &Ends, screen: &Screen, dense: Option<&D
         }
     }
     let Some(d) = dense else { return };
-    let (t0, t1, w0, w1) = (e.t0, e.t1, &e.w0, &e.w1);
+    let (t0, t1, w0, w1) = (e.t0, e.t1, e.w0, e.w1);
     // The peaks alone: no condition is evaluated (an empty list).
-    let at = |t: f64| watched_on(e.kernel, e.regime, (&e.pieces.0, &e.pieces.1), &[], d, t);
+    let at = |t: f64| watched_on(e.kernel, e.regime, e.pieces, &[], d, t);
     if screen.top {
         interior_extrema(t0, w0.top, t1, w1.top, &mut |t| at(t).top, screen.top_matters(), &mut |t, v| {
             if t <= t_stop {

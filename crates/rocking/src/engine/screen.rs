@@ -26,7 +26,7 @@ pub(super) struct Ends<'a> {
     pub(super) kernel: &'a Kernel,
     pub(super) regime: Regime,
     /// The inputs' pieces over the step (horizontal, vertical).
-    pub(super) pieces: (Piece, Piece),
+    pub(super) pieces: (&'a Piece, &'a Piece),
     /// The regime's conditions.
     pub(super) list: &'a [Condition],
     pub(super) t0: f64,
@@ -39,8 +39,8 @@ pub(super) struct Ends<'a> {
     pub(super) f0: State,
     pub(super) f1: State,
     /// The watched quantities at both ends.
-    pub(super) w0: Watched,
-    pub(super) w1: Watched,
+    pub(super) w0: &'a Watched,
+    pub(super) w1: &'a Watched,
 }
 
 impl Ends<'_> {
@@ -141,7 +141,7 @@ pub(super) fn screen(e: &Ends, kept: Kept, observed: bool) -> Screen {
     let slip_roots = slip_turns(e);
     let stick_examined = e.rocking() && e.regime.building == BuildingRegime::Stick && e.kernel.has_building;
     let crossing_at_end = e.w1.conditions[..e.list.len()].iter().any(|c| c.v >= 0.0);
-    let (w0, w1, h, g) = (&e.w0, &e.w1, e.h, e.kernel.g);
+    let (w0, w1, h, g) = (e.w0, e.w1, e.h, e.kernel.g);
     let low_fy = w0.fy.v.min(w1.fy.v) < 0.5 * g;
     let mut screen = Screen {
         theta_roots,
@@ -186,7 +186,7 @@ pub(super) fn screen(e: &Ends, kept: Kept, observed: bool) -> Screen {
 /// Upper bounds over the step of `|a_g|`, `|ȧ_g|`, `g_e` and `|ġ_e|`.
 #[inline(always)]
 fn input_bounds(e: &Ends) -> (f64, f64, f64, f64) {
-    let (piece, vpiece) = (&e.pieces.0, &e.pieces.1);
+    let (piece, vpiece) = e.pieces;
     (
         piece.max_abs(e.t0, e.t1),
         piece.max_abs_rate(),

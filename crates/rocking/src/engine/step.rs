@@ -1,15 +1,17 @@
 //! One accepted step of the integrator, examined whole (module docs of
 //! `engine`) and cut short at the first transition in it.
 
+use super::input::Input;
 use super::rhs::{self, Rhs, Selected};
 use super::screen::{self, Ends};
-use super::watch::{accelerations_of, watched};
+use super::watch::{accelerations_of, watched, Watched};
 use super::{crossing, peaks, step_error, Run, Settled};
 use crate::condition::{conditions, Condition};
+use crate::equations::Kernel;
 use crate::error::Error;
-use crate::integrator::DenseOutput;
+use crate::integrator::{DenseOutput, Dop853};
 use crate::observer::{Interpolant, Observer};
-use crate::regime::State;
+use crate::regime::{Regime, State};
 
 impl<O: Observer, const N: usize> Run<'_, O, N> {
     /// One step of the dynamic motion, with the right-hand side of the
@@ -42,7 +44,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             .stepper
             .step(&mut rhs, self.input.step_bound())
             .map_err(|e| step_error(e, self.kernel.dynamic))?;
-        let ends = self.ends(list);
+        let w1 = watched_at_end(self.kernel, self.regime, &self.input, &self.integ.stepper, list);
+        let ends = ends(self.kernel, self.regime, &self.input, &self.integ.stepper, (&self.cache.watch, &w1), list);
         let screen = screen::screen(&ends, self.report.tracker.kept(), self.report.observer.wants_steps());
         let dense = screen.needs_dense().then(|| self.integ.stepper.dense(&mut rhs));
         let theta_points = match (&dense, screen.theta_roots) {
@@ -52,15 +55,17 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let first = crossing::first_transition(&ends, &screen, dense.as_ref(), &theta_points, self.fell_back_now());
         let t_stop = first.map_or(ends.t1, |(tb, _)| tb);
         peaks::inside(&ends, &screen, dense.as_ref(), &theta_points, t_stop, &mut self.report.tracker);
+        // The step's end, out of `ends`, which borrows the run.
+        let (t1, y1, rocking) = (ends.t1, ends.y1, ends.rocking());
         // Built only for an observer that wants it (a copy of the polynomial otherwise spent).
         let interpolant = || match &dense {
             Some(d) => Interpolant::Dense(d.widen()),
-            None => Interpolant::Constant(ends.y1),
+            None => Interpolant::Constant(y1),
         };
         self.emit_step(interpolant, t_stop)?;
-        match (first, dense) {
-            (Some((tb, c)), Some(d)) => self.stop_inside(&ends, &d, tb, c),
-            _ => self.go_on(&ends),
+        match (first, &dense) {
+            (Some((tb, c)), Some(d)) => self.stop_inside(t1, y1, d, tb, c),
+            _ => self.go_on(t1, y1, &w1, rocking),
         }
     }
 
@@ -87,56 +92,29 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         self.integ.restart = false;
     }
 
-    /// The step just taken, seen from its ends.
-    #[inline(always)]
-    fn ends<'l>(&self, list: &'l [Condition]) -> Ends<'l>
-    where
-        Self: 'l,
-    {
-        let st = &self.integ.stepper;
-        let (piece, vpiece) = (self.input.segment.piece, self.input.vsegment.piece);
-        let (t0, t1) = (st.t_old, st.t);
-        let (y1, f1) = (State::from_components(&st.y), State::from_components(&st.f));
-        Ends {
-            kernel: self.kernel,
-            regime: self.regime,
-            pieces: (piece, vpiece),
-            list,
-            t0,
-            t1,
-            h: t1 - t0,
-            y0: State::from_components(&st.y_old),
-            y1,
-            f0: State::from_components(&st.f_old()),
-            f1,
-            w0: self.cache.watch,
-            w1: watched(self.kernel, self.regime, &piece, &vpiece, list, t1, &y1, Some(accelerations_of(&f1))),
-        }
-    }
-
-    /// The step ends at its first transition, `c` at `tb`: the state there,
-    /// the switch, and the conditions that then hold.
-    fn stop_inside(&mut self, e: &Ends, d: &DenseOutput<N>, tb: f64, c: Condition) -> Result<(), Error> {
+    /// The step, ending at `(t1, y1)`, ends at its first transition, `c` at
+    /// `tb`: the state there, the switch, and the conditions that then hold.
+    fn stop_inside(&mut self, t1: f64, y1: State, d: &DenseOutput<N>, tb: f64, c: Condition) -> Result<(), Error> {
         self.integ.t = tb;
-        self.integ.y = if tb >= e.t1 { e.y1 } else { State::from_components(&d.state(tb)) };
+        self.integ.y = if tb >= t1 { y1 } else { State::from_components(&d.state(tb)) };
         self.integ.restart = true;
         self.record_instant();
         self.switch(c)?;
         self.next_instant()
     }
 
-    /// The step is taken whole: its end is the current instant, its end's
-    /// values go to the summary.
+    /// The step is taken whole: its end `(t1, y1)`, where `w1` is watched,
+    /// is the current instant, its end's values go to the summary.
     #[inline(always)]
-    fn go_on(&mut self, e: &Ends) -> Result<(), Error> {
-        self.integ.t = e.t1;
-        self.integ.y = e.y1;
-        self.cache.watch = e.w1;
+    fn go_on(&mut self, t1: f64, y1: State, w1: &Watched, rocking: bool) -> Result<(), Error> {
+        self.integ.t = t1;
+        self.integ.y = y1;
+        self.cache.watch = *w1;
         let tracker = &mut self.report.tracker;
-        tracker.displacement(e.y1.theta, e.y1.slip);
-        if e.rocking() {
-            tracker.top(e.w1.top.v);
-            tracker.pivot(e.w1.fx.v, e.w1.fy.v);
+        tracker.displacement(y1.theta, y1.slip);
+        if rocking {
+            tracker.top(w1.top.v);
+            tracker.pivot(w1.fx.v, w1.fy.v);
         }
         // Within a segment the conditions were just checked on the step; only a
         // new segment (a kink or jump of the input) can make one hold at once.
@@ -145,4 +123,50 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         }
         Ok(())
     }
+}
+
+/// The step `stepper` just took, seen from its ends; `w`: what is watched
+/// at its start and end ([`watched_at_end`]). It borrows the run's inputs
+/// and watched values, not its stepper, which the dense output needs.
+#[inline(always)]
+fn ends<'a, const N: usize>(
+    kernel: &'a Kernel,
+    regime: Regime,
+    input: &'a Input,
+    st: &Dop853<N>,
+    (w0, w1): (&'a Watched, &'a Watched),
+    list: &'a [Condition],
+) -> Ends<'a> {
+    let (t0, t1) = (st.t_old, st.t);
+    Ends {
+        kernel,
+        regime,
+        pieces: (&input.segment.piece, &input.vsegment.piece),
+        list,
+        t0,
+        t1,
+        h: t1 - t0,
+        y0: State::from_components(&st.y_old),
+        y1: State::from_components(&st.y),
+        f0: State::from_components(&st.f_old()),
+        f1: State::from_components(&st.f),
+        w0,
+        w1,
+    }
+}
+
+/// What is watched at the end of the step `stepper` just took.
+#[inline(always)]
+fn watched_at_end<const N: usize>(kernel: &Kernel, regime: Regime, input: &Input, st: &Dop853<N>, list: &[Condition]) -> Watched {
+    let (y1, f1) = (State::from_components(&st.y), State::from_components(&st.f));
+    watched(
+        kernel,
+        regime,
+        &input.segment.piece,
+        &input.vsegment.piece,
+        list,
+        st.t,
+        &y1,
+        Some(accelerations_of(&f1)),
+    )
 }

@@ -43,14 +43,17 @@ pub(super) fn watched(
         Piece::Constant(a_v) => Jet::from(kernel.g + a_v),
         _ => Jet::from(kernel.g) + vpiece.eval_jet(t),
     };
-    let mut w = Watched::default();
+    let mut conditions = [Jet::default(); MAX_CONDITIONS];
     let TowerRegime::Rocking(pivot) = regime.tower else {
         let acc = acc.unwrap_or_else(|| kernel.accelerations(regime, a_g.v, g_e.v, y.theta, y.theta_dot));
         let yj = y.jets(acc);
-        for (slot, c) in w.conditions.iter_mut().zip(list) {
+        for (slot, c) in conditions.iter_mut().zip(list) {
             *slot = c.value(kernel, regime, a_g, g_e, &yj);
         }
-        return w;
+        return Watched {
+            conditions,
+            ..Watched::default()
+        };
     };
     let s = pivot.sign();
     let lean = kernel.lean(s, Jet::new(y.theta, y.theta_dot));
@@ -73,7 +76,7 @@ pub(super) fn watched(
     yj.theta = Jet::new(y.theta, y.theta_dot);
     let demand = (!list.is_empty() && regime.building == BuildingRegime::Stick && kernel.has_building)
         .then(|| kernel.rocking_stick_demand(lean, yj.theta_dot, theta_ddot, a_g, g_e));
-    for (slot, &c) in w.conditions.iter_mut().zip(list) {
+    for (slot, &c) in conditions.iter_mut().zip(list) {
         *slot = match (c, demand) {
             // What `value` gives, without its call (not inlined: inlining it
             // everywhere cost 7 M instructions of the sweep, the call here 2.7 M).
@@ -82,9 +85,9 @@ pub(super) fn watched(
             _ => c.value(kernel, regime, a_g, g_e, &yj),
         };
     }
-    w.top = kernel.top_kinematics(Some(s), kernel.rotation(lean), yj.theta_dot, theta_ddot, acc_pivot).1;
-    (w.fx, w.fy) = kernel.pivot_reactions(Some(lean), yj.theta_dot, theta_ddot, acc_pivot, g_e);
-    w
+    let top = kernel.top_kinematics(Some(s), kernel.rotation(lean), yj.theta_dot, theta_ddot, acc_pivot).1;
+    let (fx, fy) = kernel.pivot_reactions(Some(lean), yj.theta_dot, theta_ddot, acc_pivot, g_e);
+    Watched { conditions, top, fx, fy }
 }
 
 /// [`Watched`] at `t` on a step's dense output.
