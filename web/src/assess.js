@@ -255,6 +255,8 @@ export class AssessView {
     const form = $("assess-form");
     form.addEventListener("input", (ev) => {
       if (ev.target.name?.startsWith("site.") && ["lon", "lat", "VN", "CU"].includes(ev.target.name.slice(5))) return;
+      // A limit state's value typed by hand: SLD, SLV, SLC are no longer the grid's.
+      if (/^site\.SL[DVC]\./.test(ev.target.name ?? "")) $("assess-grid-note").textContent = "";
       this.changed();
     });
     form.addEventListener("change", (ev) => {
