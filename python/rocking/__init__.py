@@ -350,7 +350,10 @@ def assess(file: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threads: 
     """Assesses a tower to the code, as ``rocking assess`` does (Circolare 2019
     §C8.7.1.2.1 with the NTC 2018 or EN 1998-1 spectra): the capacity, the
     activation, linear and non-linear kinematic checks and, with a record set,
-    the non-linear dynamic checks (on all cores with the GIL released).
+    the non-linear dynamic checks (on all cores with the GIL released). With
+    ``[[block]]`` tables each block, with those above it, is a mechanism of
+    its own (``Assessment.mechanisms``), and the governing check is taken
+    over every mechanism.
 
     Args:
         file: The path of an assessment file, or a dict with its keys (relative

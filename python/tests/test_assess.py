@@ -1,5 +1,6 @@
 """`rocking.assess`: the same verdict as the `rocking assess` command, digit for
-digit, from a file or a dict, and the activation capacity by hand."""
+digit, from a file or a dict, and the activation capacity by hand; with blocks
+on the tower, every mechanism's, the belfry's governing check by hand."""
 
 from __future__ import annotations
 
