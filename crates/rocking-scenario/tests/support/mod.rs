@@ -10,18 +10,13 @@ pub fn at2(peak: f64) -> String {
     )
 }
 
+/// The bodies of the tests of every crate: the bell tower on its church.
+pub const CHURCH: &str = include_str!("../data/church.toml");
+
 /// A study of the tower on its church over `records` (TOML array items), two levels, one limit state on `field`.
 pub fn study(records: &str, field: &str, extra: &str) -> String {
     format!(
-        r#"
-[tower]
-width = 4.0
-height = 12.0
-mass = 1.5e5
-[building]
-mass = 2.0e6
-mu_static = 1.25
-mu_kinetic = 1.0
+        r#"{CHURCH}
 [study]
 records = [{records}]
 measure = "pga"
