@@ -608,10 +608,10 @@ def main():
     results, convergence, rows, verticals, engine_rows = {}, [], [], {}, []
     contact_restitution()
     for scenario in SCENARIOS:
-        # The engine bounds a seat's moment by the force normal to the top of the block
-        # below, V cos(phi) + T sin(phi) (V and T the vertical and horizontal forces of
-        # the blocks above, phi its tilt), as MuJoCo's contacts do; the model's chapter
-        # writes V: the second implementation does either (seat = "normal" or "vertical")
+        # The model (and the engine) bound a seat's moment by the force normal to the top
+        # of the block below, V cos(phi) + T sin(phi) (V and T the vertical and horizontal
+        # forces of the blocks above, phi its tilt), as MuJoCo's contacts do; the second
+        # implementation does that (seat = "normal") or bounds it by V ("vertical")
         model = reference_result(scenario, seat="normal")
         verticals[scenario["name"]] = reference_result(scenario)
         engine_rows += compare_engine(scenario, model, engine_result(scenario))
