@@ -69,8 +69,7 @@ fn a_sweep_into_a_run_folder_removes_the_run_files_and_keeps_the_others() {
 #[cfg(unix)]
 #[test]
 fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
-    use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let dir = tempdir();
     // 10^6 history rows over 1000 s: far longer than the test waits.
     let text = SCENARIO
@@ -80,26 +79,11 @@ fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(out.join("summary.json"), "earlier").unwrap_or_else(|e| panic!("{e}"));
-    let child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args(["run", arg(&file), "--out", arg(&out)])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    // Wait until the history is being written in the staging folder.
-    let partial = crate::util::staging_folder(&out, Duration::from_secs(60))
-        .expect("no staging folder after a minute")
-        .join("history.csv");
-    let start = Instant::now();
-    while std::fs::metadata(&partial).map_or(0, |m| m.len()) < 100_000 {
-        assert!(start.elapsed() < Duration::from_secs(60), "no history after a minute");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
-    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
-    let r = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-    let stderr = String::from_utf8_lossy(&r.stderr);
-    assert_eq!(r.status.code(), Some(130), "{stderr}");
+    // Interrupted once the history is being written in the staging folder.
+    let history = |staging: &Path| std::fs::metadata(staging.join("history.csv")).map_or(0, |m| m.len()) >= 100_000;
+    let r = crate::util::interrupted(&["run", arg(&file), "--out", arg(&out)], &out, "-INT", Duration::from_secs(60), history);
+    let stderr = r.stderr;
+    assert_eq!(r.code, Some(130), "{stderr}");
     assert_eq!(stderr.trim(), "interrupted: nothing written");
     assert_eq!(names(&out), ["summary.json"]);
     assert_eq!(read(&out.join("summary.json")), "earlier");

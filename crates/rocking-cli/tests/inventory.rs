@@ -4,7 +4,7 @@
 //! their own error while the others are still right; inventory.geojson read
 //! back by the `geojson` crate.
 
-use crate::util::{arg, assert_shards_merge_to_whole, csv_table, read, rocking, root, staging_folder, tempdir, write};
+use crate::util::{arg, assert_shards_merge_to_whole, csv_table, read, rocking, root, tempdir, write};
 use std::path::Path;
 
 /// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
@@ -288,8 +288,7 @@ fn with_a_record_set_the_dynamic_checks_are_those_of_rocking_assess() {
 #[cfg(unix)]
 #[test]
 fn ctrl_c_keeps_the_towers_finished() {
-    use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     // Only a guard against a hang: no test waits this long unless the command is stuck.
     let hang = Duration::from_secs(600);
     let dir = tempdir();
@@ -308,46 +307,22 @@ fn ctrl_c_keeps_the_towers_finished() {
     let rows: String = (0..towers_count).map(|i| format!("T{i:02},,14.{},41.06\n", 34 + i % 10)).collect();
     let towers = write(dir.path(), "towers.csv", &format!("id,name,lon,lat\n{rows}"));
     let out = dir.path().join("out");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args([
-            "inventory",
-            arg(&towers),
-            "--assess",
-            arg(&assess_file),
-            "--out",
-            arg(&out),
-            "--threads",
-            "2",
-            "--details",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    let staging = staging_folder(&out, hang).expect("no staging folder");
-    let first = staging.join("towers").join("T00").join("report.html");
-    let start = Instant::now();
-    while !first.exists() {
-        assert!(start.elapsed() < hang, "the first tower never ended");
-        std::thread::sleep(Duration::from_millis(10));
-    }
-    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
-    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
-            break status;
-        }
-        if start.elapsed() > hang {
-            child.kill().unwrap_or_default();
-            panic!("the inventory did not stop");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    if let Some(mut pipe) = child.stderr.take() {
-        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
-    }
-    assert_eq!(status.code(), Some(130), "{stderr}");
+    let args = [
+        "inventory",
+        arg(&towers),
+        "--assess",
+        arg(&assess_file),
+        "--out",
+        arg(&out),
+        "--threads",
+        "2",
+        "--details",
+    ];
+    // Interrupted once the first tower has ended.
+    let first_tower = |staging: &Path| staging.join("towers").join("T00").join("report.html").exists();
+    let r = crate::util::interrupted(&args, &out, "-INT", hang, first_tower);
+    let stderr = r.stderr;
+    assert_eq!(r.code, Some(130), "{stderr}");
     let (header, rows) = inventory_csv(&out);
     // Stopped before its end, as the output shows: fewer rows than towers, and the last line says so.
     assert!(!rows.is_empty() && rows.len() < towers_count, "{} rows", rows.len());

@@ -5,9 +5,9 @@
 //! their next event: the sweep exits 130 at once with the rows finished
 //! (none here), and no staging folder is left.
 
-use crate::util::{arg, read, staging_folder, tempdir, write};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use crate::util::{arg, interrupted, read, tempdir, write};
+use std::path::Path;
+use std::time::Duration;
 
 /// A building sliding under 1.5 g (μs = 1.25) for 150,000 s: two slip events
 /// a cycle, tens of seconds of computing a case; four of them.
@@ -37,36 +37,11 @@ fn interrupted_by(signal: &str) {
     let dir = tempdir();
     let file = write(dir.path(), "long.toml", LONG);
     let out = dir.path().join("out");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args(["sweep", arg(&file), "--out", arg(&out), "--threads", "2"])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    // The header is written when the cases start.
-    let partial = staging_folder(&out, LIMIT).expect("no staging folder").join("sweep.csv");
-    let start = Instant::now();
-    while std::fs::metadata(&partial).map_or(true, |m| m.len() == 0) && start.elapsed() < LIMIT {
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let kill = Command::new("kill").args([signal, &child.id().to_string()]).status();
-    assert!(kill.is_ok_and(|s| s.success()), "cannot send {signal}");
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
-            break status;
-        }
-        if start.elapsed() > LIMIT {
-            child.kill().unwrap_or_default();
-            panic!("{signal}: the sweep did not stop its cases");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    if let Some(mut pipe) = child.stderr.take() {
-        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
-    }
-    assert_eq!(status.code(), Some(130), "{signal}: {stderr}");
+    // Interrupted once the header is written, when the cases start.
+    let header = |staging: &Path| std::fs::metadata(staging.join("sweep.csv")).is_ok_and(|m| m.len() > 0);
+    let r = interrupted(&["sweep", arg(&file), "--out", arg(&out), "--threads", "2"], &out, signal, LIMIT, header);
+    let (stderr, partial) = (r.stderr, r.staging.join("sweep.csv"));
+    assert_eq!(r.code, Some(130), "{signal}: {stderr}");
     // No case could have ended: the rows finished are none, the file its header.
     assert!(stderr.starts_with("interrupted: wrote 0 of 4 cases"), "{signal}: {stderr}");
     assert_eq!(read(&out.join("sweep.csv")).lines().count(), 1);

@@ -256,8 +256,7 @@ fn plot_comes_after_the_csv() {
 #[cfg(unix)]
 #[test]
 fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
-    use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let dir = tempdir();
     // 20,000 cases of 5 s: far longer than the test waits.
     let text = format!(
@@ -266,28 +265,14 @@ fn ctrl_c_leaves_the_rows_finished_in_order_and_exits_130() {
     );
     let file = write(dir.path(), "long.toml", &text);
     let out = dir.path().join("o");
-    let child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args(["sweep", arg(&file), "--out", arg(&out), "--threads", "2"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
     let csv = out.join("sweep.csv");
-    // The rows go to a staging folder until the sweep ends (or is interrupted).
-    let partial = crate::util::staging_folder(&out, Duration::from_secs(60))
-        .expect("no staging folder after a minute")
-        .join("sweep.csv");
-    let start = Instant::now();
-    // Wait until some rows have reached the file (the writer is buffered).
-    while std::fs::read_to_string(&partial).map_or(0, |t| t.lines().count()) < 3 {
-        assert!(start.elapsed() < Duration::from_secs(60), "no rows after a minute");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
-    assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
-    let r = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-    let stderr = String::from_utf8_lossy(&r.stderr);
-    assert_eq!(r.status.code(), Some(130), "{stderr}");
+    // The rows go to a staging folder until the sweep ends (or is interrupted):
+    // interrupted once some rows have reached it (the writer is buffered).
+    let some_rows = |staging: &Path| std::fs::read_to_string(staging.join("sweep.csv")).map_or(0, |t| t.lines().count()) >= 3;
+    let args = ["sweep", arg(&file), "--out", arg(&out), "--threads", "2"];
+    let r = crate::util::interrupted(&args, &out, "-INT", Duration::from_secs(60), some_rows);
+    let (stderr, partial) = (r.stderr, r.staging.join("sweep.csv"));
+    assert_eq!(r.code, Some(130), "{stderr}");
     let lines: Vec<&str> = stderr.lines().collect();
     assert_eq!(lines.len(), 1, "{stderr}");
     let (header, rows) = csv_table(&csv);

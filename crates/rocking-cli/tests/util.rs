@@ -165,3 +165,59 @@ pub fn csv_table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
         .collect();
     (header, rows)
 }
+
+/// What [`interrupted`] saw: the exit code, stderr, and the staging folder
+/// the run wrote into until the signal.
+#[cfg(unix)]
+pub struct Interrupted {
+    /// Exit code (`None` if killed by a signal).
+    pub code: Option<i32>,
+    pub stderr: String,
+    /// The run's `.rocking-partial-…` folder in `out`.
+    pub staging: PathBuf,
+}
+
+/// Starts `rocking args…` (writing into `out`), waits until `under_way` holds
+/// of its staging folder (what it writes there has begun), sends it `signal`
+/// (`-INT` as Ctrl-C does, `-TERM`) and waits for it to end. Each wait is at
+/// most `limit`: a run that the signal did not stop would go on far longer,
+/// and is killed and fails the test.
+#[cfg(unix)]
+pub fn interrupted(args: &[&str], out: &Path, signal: &str, limit: std::time::Duration, under_way: impl Fn(&Path) -> bool) -> Interrupted {
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(args)
+        .current_dir(root())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("cannot start rocking: {e}"));
+    let staging = staging_folder(out, limit).unwrap_or_else(|| panic!("no staging folder in {:?}", limit));
+    let start = Instant::now();
+    while !under_way(&staging) {
+        assert!(start.elapsed() < limit, "the run's output did not begin in {limit:?}");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let kill = Command::new("kill").args([signal, &child.id().to_string()]).status();
+    assert!(kill.is_ok_and(|s| s.success()), "cannot send {signal}");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
+            break status;
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap_or_default();
+            panic!("{signal}: the run did not stop in {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    if let Some(mut pipe) = child.stderr.take() {
+        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
+    }
+    Interrupted {
+        code: status.code(),
+        stderr,
+        staging,
+    }
+}
