@@ -234,3 +234,41 @@ def test_on_the_exact_curve_each_mechanisms_points_sit_on_it(browser, server):
             assert abs(p["a"] - a) < 1e-12 * cap["a0_star_m_s2"], (m["name"], p, a)
     assert page.errors == [], page.errors
     page.close()
+
+
+BELFRY_EXAMPLE = ROOT / "examples" / "belfry-assess" / "assess.toml"
+
+
+def test_the_belfry_example_gives_the_commands_governing_check(page, tmp_path):
+    """examples/belfry-assess/assess.toml chosen in the tab's Example list: its
+    tower and belfry into the page's form, its site from the synthetic grid;
+    the page's mechanisms and governing check are the command's. The command
+    runs the file without its record set (the page's instant part is the
+    kinematic one); the full command's governing check is a kinematic one too
+    (the tower's SLV linear kinematic, ζ_E 1.26; its dynamic checks give 2.45
+    and more: docs/src/guide/assessment.md), checked by hand in
+    crates/rocking-assess/tests/belfry_by_hand.rs."""
+    text = BELFRY_EXAMPLE.read_text()
+    kinematic = "".join(l + "\n" for l in text.splitlines() if not l.startswith("records ="))
+    assert kinematic.count("\n") == text.count("\n") - 1
+    path = tmp_path / "assess.toml"
+    path.write_text(kinematic.replace('"../../data/', f'"{ROOT}/data/'))
+    out = tmp_path / "assess"
+    subprocess.run([BIN, "assess", str(path), "--out", str(out)], check=True, capture_output=True, text=True)
+    expected = json.loads((out / "assessment.json").read_text())
+
+    page.click("#tab-assess")
+    index = page.locator("#assess-example option").all_text_contents().index("examples/belfry-assess/assess.toml") - 1
+    page.select_option("#assess-example", str(index))
+    expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
+    expect(page.locator('input[name="block[1].name"]')).to_have_value("belfry")
+    expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
+    expect(page.locator("#assess")).not_to_have_class(re.compile(r"\bstale\b"))
+    got = page_assessment(page)
+    assert [m["name"] for m in got["mechanisms"]] == ["tower", "belfry"]
+    assert got["mechanisms"] == expected["mechanisms"]
+    governing = expected["governing"]
+    assert got["governing"] == governing
+    assert (governing["mechanism"], governing["limit_state"], governing["method"]) == ("tower", "SLV", "linear_kinematic")
+    expect(page.locator("#assess-governing")).to_contain_text("Governing: SLV linear kinematic of the tower")
+    expect(page.locator('#assess-checks tr.governing[data-mechanism="tower"][data-method="linear_kinematic"]')).to_have_count(1)

@@ -261,3 +261,56 @@ fn an_inventory_names_a_block_that_governs() {
     assert_relative_eq!(zeta, 2.0 * (0.85 * 172.0 / 1262.0) / 1.62 / 0.155, max_relative = 1e-9);
     assert_relative_eq!(zeta, 0.923, max_relative = 1e-3);
 }
+
+/// The example examples/belfry-assess/assess.toml (the S. Anna tower with the
+/// belfry of examples/belfry-on-church.toml, at Cervino on the synthetic
+/// grid), its kinematic part (the record set left out: the dynamic checks are
+/// those of the command's tests): the belfry's α0 and its SLV linear kinematic
+/// ζ_E, and the shaft's α0 under it, by hand.
+#[test]
+fn the_belfry_example_by_hand() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/belfry-assess/assess.toml");
+    let file = std::fs::read_to_string(&path).unwrap();
+    let text: String = file.lines().filter(|l| !l.starts_with("records =")).map(|l| format!("{l}\n")).collect();
+    assert_eq!(text.lines().count() + 1, file.lines().count(), "the example names its records on one line");
+    let input = AssessmentInput::from_toml_str(&text, &path).unwrap();
+    let done = Assessment::run(&input).unwrap();
+    let belfry = &done.blocks[0];
+    assert_eq!(belfry.name, "belfry");
+
+    // The belfry, 3.2 m wide and 4.5 m high, of a given mass (its walls'
+    // centre at mid-height): b = 1.6, h = 2.25, α0 = 1.6/2.25 = 0.711111.
+    // R and α are rounded on the way: a few 1e-16.
+    assert_relative_eq!(belfry.capacity.alpha0, 1.6 / 2.25, max_relative = 1e-14);
+    assert_relative_eq!(belfry.capacity.alpha0, 0.711_111, max_relative = 1e-6);
+    // The shaft under it: hollow, 4 × 4 m with 0.9 m walls, 14 m of 1800 kg/m³:
+    // 1800 · (16 − 2.2²) · 14 = 281 232 kg at 7 m; the belfry's 30 t at 14 +
+    // 2.25 m: h = (281 232 · 7 + 30 000 · 16.25)/311 232 = 2 456 124/311 232 m.
+    assert_relative_eq!(done.capacity.alpha0, 2.0 * 311_232.0 / 2_456_124.0, max_relative = 1e-14);
+
+    // Its activation, on the SLD spectrum (subsoil B, the grid's F0 at Cervino,
+    // 2.35): a0*/g = α0/FC = 0.526749, where SS = 1.4 − 0.4 F0 ag is below 1
+    // (F0 ag = 1.24 ≥ 1), so SS = 1 and the least root of ag SS(ag) = a0*/g is
+    // a0*/g itself (on the branches SS = 1.2 and SS = 1.4 − 0.4 F0 ag, ag SS
+    // stays below 1/F0 = 0.425 < a0*/g). The SLV linear kinematic check: q = 2
+    // times it against the SLV's ag (the grid's 0.247 g at Cervino).
+    let a0_over_g = 1.6 / 2.25 / 1.35;
+    let (sld, slv) = (
+        &input.site.spectrum(rocking_assess::Role::Damage),
+        &input.site.spectrum(rocking_assess::Role::LifeSafety),
+    );
+    let rocking_codes::CodeSpectrum::Ntc(sld_ntc) = sld else {
+        panic!("an NTC site")
+    };
+    assert!(sld_ntc.site().f0 * a0_over_g >= 1.0, "the branch SS = 1");
+    assert_relative_eq!(slv.ag(), 0.247, max_relative = 2e-3);
+    let linear = belfry.checks[1];
+    assert_eq!((linear.limit_state.to_string().as_str(), linear.method), ("SLV", Method::LinearKinematic));
+    // The activation's root is bisected to 1e-12 g; ×2/0.247: 1e-11 relative.
+    assert_relative_eq!(linear.zeta_e, 2.0 * a0_over_g / slv.ag(), max_relative = 1e-10);
+    assert_relative_eq!(linear.zeta_e, 4.2568, max_relative = 1e-4);
+    // The belfry is far from governing: the tower's own SLV linear kinematic
+    // check does (ζ_E = 1.26, `rocking assess` prints it).
+    let (m, g) = done.governing_mechanism().unwrap();
+    assert_eq!((m.name, g.method), ("tower", Method::LinearKinematic));
+}
