@@ -20,7 +20,7 @@
 //! [`REST_ANGULAR_VELOCITY`] seats it (the end of an accumulation of ever
 //! smaller impacts), as the tower's.
 //!
-//! Transitions are located by the engine's search ([`crate::engine::crossing`]):
+//! Transitions are located by the engine's search (`engine::crossing`):
 //! the conditions of `θ_k` (impact, overturning) are monotone between the
 //! extremes of `θ_k`, the roots of `θ̇_k` isolated on the dense output, and
 //! the end of a slip is bracketed by the first root of `u̇`; the uplift of a

@@ -8,11 +8,13 @@
 //! interface's state in [`Sample::stack`], and the usual [`Event`]s, each
 //! saying whose it is in [`Event::block`].
 //!
-//! Peaks are located as follows: the extremes of every `θ_k` by root finding
-//! on `θ̇_k` (`run.rs`); the top's acceleration, each interface's friction
-//! demand and the slip at the ends of the 16 equal parts of every step and
-//! at every event (a peak between two of those points is read lower by the
-//! curvature over a sixteenth of a step).
+//! Peaks are located as follows: the extremes of every `θ_k` at the roots of
+//! `θ̇_k` isolated on the dense output (`run.rs`, the engine's search); the
+//! top's acceleration, each interface's friction demand and the slip at the
+//! ends of the 16 equal parts of every step (Kane's equations solved there
+//! once, for these and the conditions read there, [`Instant`]) and at every
+//! event (a peak between two of those points is read lower by the curvature
+//! over a sixteenth of a step).
 
 use super::dynamics::Snapshot;
 use super::run::{part, run_with, BlockSummary, Hook, Instant, RunSettings, StackEvent, StackEventKind, PARTS};
