@@ -23,9 +23,10 @@ critically damped contacts (tc = 1 ms, corner spheres of 1 mm), whose
 blocks bounce off the corners they land on, to damped contacts (damping
 ratio 8, which throws a landing corner back at 0.4% of its speed) with
 corners of 0.1 mm at tc = 0.5 ms; the table compares the last.
-`mujoco_stack.py --sequence` takes the stack where they differed most
-through a sequence of MuJoCo's settings, one parameter at a time (about 5
-minutes; its table, mujoco-stack-sequence, is committed). Two more cases
+`mujoco_stack.py --sequence` (`run.py mujoco_stack --sequence`) takes the
+stack where they differed most through a sequence of MuJoCo's settings, one
+parameter at a time (3 to 6 minutes; its table, mujoco-stack-sequence, is
+committed). Two more cases
 check what the model says of a seated belfry when its shaft lands: the
 impulse the model asks of the seat, and what MuJoCo's belfry does instead.
 
@@ -840,7 +841,7 @@ def sequence_settings():
 
 def contact_sequence(scenario):
     """The stack where MuJoCo differed most, run at a sequence of MuJoCo's settings, one
-    parameter at a time: its table (mujoco-stack-sequence) and figure. About 5 minutes,
+    parameter at a time: its table (mujoco-stack-sequence) and figure. 3 to 6 minutes,
     hence `mujoco_stack.py --sequence`, not part of the whole run."""
     ref = reference_result(scenario, impulsive_friction=False, seat="normal")
     rows = []

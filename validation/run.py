@@ -5,6 +5,7 @@ a comparison leaves its stated tolerance.
 
     python validation/run.py              # every script
     python validation/run.py slammer      # some of them
+    python validation/run.py mujoco_stack --sequence   # one script, with its option
 
 It makes its own virtual environment (validation/.venv, kept between runs)
 with the references from PyPI (validation/requirements.txt), builds the
@@ -44,10 +45,13 @@ def environment():
 
 
 def main():
-    wanted = sys.argv[1:] or SCRIPTS
+    options = [arg for arg in sys.argv[1:] if arg.startswith("--")]
+    wanted = [arg for arg in sys.argv[1:] if not arg.startswith("--")] or SCRIPTS
     unknown = [name for name in wanted if name not in SCRIPTS]
     if unknown:
         sys.exit(f"unknown script(s): {', '.join(unknown)}; the scripts are {', '.join(SCRIPTS)}")
+    if options and len(wanted) != 1:
+        sys.exit(f"options ({' '.join(options)}) go to one script: name it, e.g. mujoco_stack --sequence")
     python = environment()
     target = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
     print("== building the rocking command (release)")
@@ -57,7 +61,7 @@ def main():
     for name in wanted:
         print(f"== {name}")
         start = time.monotonic()
-        done = subprocess.run([str(python), str(HERE / f"{name}.py")], cwd=HERE, env=env)
+        done = subprocess.run([str(python), str(HERE / f"{name}.py"), *options], cwd=HERE, env=env)
         print(f"   {name}: {'ok' if done.returncode == 0 else 'FAILED'} in {time.monotonic() - start:.0f} s")
         if done.returncode != 0:
             failed.append(name)
