@@ -236,12 +236,8 @@ fn rename(mut fault: Fault, name: &str) -> Fault {
 /// described as a tower is); its own inertia is about its centre of mass.
 fn one(s: &Section<'_>, index: usize) -> Result<Block, Fault> {
     s.only_scenario_keys()?;
-    let required = |key: &str, what: &str| -> Result<f64, Fault> {
-        s.number(key)?
-            .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))
-    };
-    let width = required("width", "the block's width in m")?;
-    let height = required("height", "the block's height in m")?;
+    let width = s.required_number("width", "the block's width in m")?;
+    let height = s.required_number("height", "the block's height in m")?;
     let (mass, section) = crate::tower::mass_and_section(s, "block")?;
     let as_tower = Tower::from_geometry(&TowerGeometry {
         width,

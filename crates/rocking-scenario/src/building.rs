@@ -1,6 +1,6 @@
 //! `[building]`: the sliding base (the church without the tower).
 
-use crate::error::{ErrorKind, Fault};
+use crate::error::Fault;
 use crate::read::Section;
 use rocking::{Building, NormalForce};
 
@@ -8,12 +8,8 @@ use rocking::{Building, NormalForce};
 /// `mu_static` (a single Coulomb coefficient), `normal_force` to "constant".
 pub(crate) fn parse(s: &Section<'_>) -> Result<Building, Fault> {
     s.only_scenario_keys()?;
-    let required = |key: &str, what: &str| -> Result<f64, Fault> {
-        s.number(key)?
-            .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))
-    };
-    let mass = required("mass", "the building's mass m1 in kg, without the tower")?;
-    let mu_static = required("mu_static", "the static friction coefficient of the foundation")?;
+    let mass = s.required_number("mass", "the building's mass m1 in kg, without the tower")?;
+    let mu_static = s.required_number("mu_static", "the static friction coefficient of the foundation")?;
     let mu_kinetic = s.number("mu_kinetic")?.unwrap_or(mu_static);
     let normal_force = s
         .choice("normal_force", &[("constant", NormalForce::Constant), ("dynamic", NormalForce::Dynamic)])?

@@ -117,6 +117,12 @@ impl<'a> Section<'a> {
         }
     }
 
+    /// A number that must be given: its absence is an error saying `required: {what}`.
+    pub(crate) fn required_number(&self, key: &str, what: &str) -> Result<f64, Fault> {
+        self.number(key)?
+            .ok_or_else(|| Fault::new(self.key(key), ErrorKind::Missing(format!("required: {what}"))))
+    }
+
     /// An optional string.
     pub(crate) fn string(&self, key: &str) -> Result<Option<&'a str>, Fault> {
         match self.table.get(key) {

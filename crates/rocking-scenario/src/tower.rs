@@ -53,10 +53,6 @@ pub(crate) fn mass_and_section(s: &Section<'_>, body: &str) -> Result<(MassInput
 /// The tower and the extra points (x, y) in m, tower coordinates, to report.
 pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> {
     s.only_scenario_keys()?;
-    let required = |key: &str, what: &str| -> Result<f64, Fault> {
-        s.number(key)?
-            .ok_or_else(|| Fault::new(s.key(key), ErrorKind::Missing(format!("required: {what}"))))
-    };
     let restitution = s.number("restitution")?;
     let tower = if s.has("radius") || s.has("alpha") {
         if let Some(k) = GEOMETRY_ONLY.iter().find(|k| s.has(k)) {
@@ -65,14 +61,14 @@ pub(crate) fn parse(s: &Section<'_>) -> Result<(Tower, Vec<(f64, f64)>), Fault> 
                 ErrorKind::NotApplicable("does not apply to a tower given by radius and alpha (give either width and height, or radius and alpha)".into()),
             ));
         }
-        let mass = required("mass", "the tower's mass in kg")?;
-        let inertia = required("inertia_pivot", "the moment of inertia about a base corner in kg·m², with radius and alpha")?;
-        let radius = required("radius", "R in m, the distance from a base corner to the centre of mass")?;
-        let alpha = required("alpha", "the slenderness angle α = atan(b/h) in rad")?;
+        let mass = s.required_number("mass", "the tower's mass in kg")?;
+        let inertia = s.required_number("inertia_pivot", "the moment of inertia about a base corner in kg·m², with radius and alpha")?;
+        let radius = s.required_number("radius", "R in m, the distance from a base corner to the centre of mass")?;
+        let alpha = s.required_number("alpha", "the slenderness angle α = atan(b/h) in rad")?;
         Tower::from_properties(mass, inertia, radius, alpha, restitution)?
     } else {
-        let width = required("width", "the tower's width B in m (or give radius and alpha)")?;
-        let height = required("height", "the tower's height H in m (or give radius and alpha)")?;
+        let width = s.required_number("width", "the tower's width B in m (or give radius and alpha)")?;
+        let height = s.required_number("height", "the tower's height H in m (or give radius and alpha)")?;
         let (mass, section) = mass_and_section(s, "tower")?;
         Tower::from_geometry(&TowerGeometry {
             width,
