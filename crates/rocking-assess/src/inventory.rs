@@ -19,7 +19,7 @@ use crate::site::Role;
 use crate::town::IDENTITY;
 use crate::RecordSet;
 use rocking_codes::LimitState;
-use rocking_scenario::{set_dotted, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row};
+use rocking_scenario::{set_dotted, set_named_key, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -191,7 +191,10 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
         } else {
             cell_value(&given.text)
         };
-        set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
+        // A block's key by its name (`belfry.width`), as a sweep's axis names it.
+        if !set_named_key(&mut table, key, value.clone()) {
+            set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
+        }
     }
     Ok(table)
 }

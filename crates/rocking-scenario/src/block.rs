@@ -126,7 +126,7 @@ fn name_of(table: &Table, k: usize) -> Result<String, Fault> {
     if !identifier || name.len() > MAX_NAME {
         return Err(Fault::invalid(
             key,
-            format!("\"{name}\" is not a plain name: letters, digits and _ (not first a digit), at most {MAX_NAME} characters, as it prefixes the block's outputs (\"belfry\" gives belfry_max_abs_theta_rad)"),
+            format!("{name:?} is not a plain name: letters, digits and _ (not first a digit), at most {MAX_NAME} characters, as it prefixes the block's outputs (\"belfry\" gives belfry_max_abs_theta_rad)"),
         ));
     }
     if RESERVED.contains(&name.as_str()) {
@@ -183,6 +183,14 @@ pub(crate) fn set_key(table: &mut Table, names: &BlockNames, key: &str, value: V
         }
         None => false,
     }
+}
+
+/// Sets the key `key` of a block of `table` named by its name (`belfry.width`,
+/// as a sweep's axis or an inventory's column gives it) to `value`; false
+/// (nothing set) if `key` names no block of `table`, or `table`'s blocks are
+/// not well formed (their parse says what is wrong).
+pub fn set_named_key(table: &mut Table, key: &str, value: Value) -> bool {
+    names(table).is_ok_and(|names| set_key(table, &names, key, value))
 }
 
 /// The blocks of a scenario table, the lowest first, with their names; each

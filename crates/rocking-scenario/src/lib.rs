@@ -110,7 +110,7 @@ pub use assessment::{
     DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS,
     KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, SITE_KEYS,
 };
-pub use block::{BlockNames, BLOCK, MAX_ABOVE};
+pub use block::{set_named_key, BlockNames, BLOCK, MAX_ABOVE};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
 pub use error::{key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordCache, RecordInfo};
