@@ -32,29 +32,24 @@ pub(crate) const MAX_CONDITIONS: usize = 4;
 /// they are applied when several hold at one instant (a jump of the input):
 /// the tower's first, unless [`slips_before_uplift`].
 #[inline(always)]
-pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> ([Condition; MAX_CONDITIONS], usize) {
-    let tower: &[Condition] = match (kernel.has_tower, regime.tower) {
-        (false, _) => &[],
-        (true, TowerRegime::Rest) => &[Condition::UpliftNegative, Condition::UpliftPositive],
-        (true, TowerRegime::Rocking(_)) => &[Condition::Overturn, Condition::Impact],
-    };
-    let building: &[Condition] = match (kernel.has_building, regime.building) {
-        (false, _) => &[],
-        (true, BuildingRegime::Stick) => &[Condition::SlipNegative, Condition::SlipPositive],
-        (true, BuildingRegime::Slip(_)) => &[Condition::SlipStop],
-    };
-    let order = if slips_before_uplift(kernel, regime) {
-        [building, tower]
-    } else {
-        [tower, building]
-    };
-    let mut list = [Condition::Impact; MAX_CONDITIONS];
-    let mut n = 0;
-    for &c in order.iter().flat_map(|part| part.iter()) {
-        list[n] = c;
-        n += 1;
+pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> &'static [Condition] {
+    use Condition::{Impact, Overturn, SlipNegative, SlipPositive, SlipStop, UpliftNegative, UpliftPositive};
+    let tower = kernel.has_tower.then_some(regime.tower);
+    let building = kernel.has_building.then_some(regime.building);
+    match (tower, building) {
+        (None, None) => &[],
+        (None, Some(BuildingRegime::Stick)) => &[SlipNegative, SlipPositive],
+        (None, Some(BuildingRegime::Slip(_))) => &[SlipStop],
+        (Some(TowerRegime::Rest), None) => &[UpliftNegative, UpliftPositive],
+        (Some(TowerRegime::Rest), Some(BuildingRegime::Stick)) if slips_before_uplift(kernel, regime) => {
+            &[SlipNegative, SlipPositive, UpliftNegative, UpliftPositive]
+        }
+        (Some(TowerRegime::Rest), Some(BuildingRegime::Stick)) => &[UpliftNegative, UpliftPositive, SlipNegative, SlipPositive],
+        (Some(TowerRegime::Rest), Some(BuildingRegime::Slip(_))) => &[UpliftNegative, UpliftPositive, SlipStop],
+        (Some(TowerRegime::Rocking(_)), None) => &[Overturn, Impact],
+        (Some(TowerRegime::Rocking(_)), Some(BuildingRegime::Stick)) => &[Overturn, Impact, SlipNegative, SlipPositive],
+        (Some(TowerRegime::Rocking(_)), Some(BuildingRegime::Slip(_))) => &[Overturn, Impact, SlipStop],
     }
-    (list, n)
 }
 
 /// Whether a building that is stuck under a standing tower slips before the
@@ -166,5 +161,79 @@ impl Condition {
             Condition::SlipNegative | Condition::SlipPositive => "slip",
             Condition::SlipStop => "slip stop",
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::solid_block;
+    use crate::regime::{Pivot, SlipDirection};
+    use crate::{Building, Model, NormalForce};
+    use Condition::{Impact, Overturn, SlipNegative, SlipPositive, SlipStop, UpliftNegative, UpliftPositive};
+
+    /// The table of [`conditions`] against the rule it is written from: the
+    /// tower's conditions (an uplift either way at rest; the overturning and
+    /// the impact while rocking) then the building's (a slip either way while
+    /// stuck; the end of the slip while sliding), the building's first where
+    /// it slips before the tower lifts; none of a body the model lacks; never
+    /// more than `MAX_CONDITIONS`, the room `watched` has for them. Every
+    /// regime of the 0.5 m × 2 m block (tan α = 0.25), alone, on a building
+    /// with μs = 0.6 and 0.2 (above and below tan α), and the building alone.
+    #[test]
+    fn each_regime_is_ended_by_its_bodies_conditions_in_the_order_of_the_rule() {
+        let building = |mu_s: f64| Building::new(2.0e6, mu_s, 0.75 * mu_s, NormalForce::Dynamic).unwrap_or_else(|e| panic!("{e}"));
+        let models = [
+            Model::new(Some(solid_block(0.5, 2.0)), None, 9.81),
+            Model::new(Some(solid_block(0.5, 2.0)), Some(building(0.6)), 9.81),
+            Model::new(Some(solid_block(0.5, 2.0)), Some(building(0.2)), 9.81),
+            Model::new(None, Some(building(0.6)), 9.81),
+        ];
+        let towers = [TowerRegime::Rest, TowerRegime::Rocking(Pivot::Negative), TowerRegime::Rocking(Pivot::Positive)];
+        let buildings = [
+            BuildingRegime::Stick,
+            BuildingRegime::Slip(SlipDirection::Negative),
+            BuildingRegime::Slip(SlipDirection::Positive),
+        ];
+        let mut seen = 0;
+        for model in models {
+            let kernel = Kernel::new(&model.unwrap_or_else(|e| panic!("{e}")));
+            for (tower, building) in towers.iter().flat_map(|&t| buildings.iter().map(move |&b| (t, b))) {
+                let regime = Regime { tower, building };
+                let tower_part: Vec<Condition> = match (kernel.has_tower, tower) {
+                    (false, _) => vec![],
+                    (true, TowerRegime::Rest) => vec![UpliftNegative, UpliftPositive],
+                    (true, TowerRegime::Rocking(_)) => vec![Overturn, Impact],
+                };
+                let building_part: Vec<Condition> = match (kernel.has_building, building) {
+                    (false, _) => vec![],
+                    (true, BuildingRegime::Stick) => vec![SlipNegative, SlipPositive],
+                    (true, BuildingRegime::Slip(_)) => vec![SlipStop],
+                };
+                // The building slips first only under a standing tower on a stuck building with μs < tan α.
+                let building_first = kernel.has_tower
+                    && kernel.has_building
+                    && tower == TowerRegime::Rest
+                    && building == BuildingRegime::Stick
+                    && kernel.mu_s < kernel.tan_alpha;
+                let expected: Vec<Condition> = if building_first {
+                    [building_part, tower_part].concat()
+                } else {
+                    [tower_part, building_part].concat()
+                };
+                let list = conditions(&kernel, regime);
+                assert_eq!(
+                    list,
+                    expected.as_slice(),
+                    "{regime:?}, tower {}, building {}",
+                    kernel.has_tower,
+                    kernel.has_building
+                );
+                assert!(list.len() <= MAX_CONDITIONS);
+                seen += usize::from(building_first);
+            }
+        }
+        // The reversed order is met (μs = 0.2 under the standing tower), or it is not tested.
+        assert_eq!(seen, 1);
     }
 }

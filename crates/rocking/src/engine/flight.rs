@@ -77,7 +77,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             // equal) and at the apex, with a margin of 1e-6 μs M g: the
             // demand inside departs from these by a relative `ψm² / 8`.
             let margin = 1e-6 * self.kernel.mu_s * self.kernel.total * self.kernel.g;
-            let (list, n) = conditions(self.kernel, self.regime);
+            let list = conditions(self.kernel, self.regime);
             let apex = State {
                 theta: s * flight.apex,
                 theta_dot: 0.0,
@@ -86,8 +86,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             };
             let ends = [self.integ.y, apex];
             let holds = ends.iter().all(|y| {
-                list[..n]
-                    .iter()
+                list.iter()
                     .filter(|c| !c.of_theta())
                     .all(|c| c.value(self.kernel, self.regime, 0.0, self.kernel.g, y) < -margin)
             });

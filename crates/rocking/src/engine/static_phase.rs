@@ -28,12 +28,12 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             .min(self.input.vsegment.end)
             .min(self.input.free_fall)
             .min(self.input.end);
-        let (list, n) = conditions(self.kernel, self.regime);
+        let list = conditions(self.kernel, self.regime);
         let (kernel, regime, y, piece, vpiece) = (self.kernel, self.regime, self.integ.y, self.input.segment.piece, self.input.vsegment.piece);
         let value = |c: Condition, t: f64| c.value(kernel, regime, piece.eval(t), kernel.g + vpiece.eval(t), &y);
         let fell_back = self.fell_back_now();
         let mut first: Option<(f64, Condition)> = None;
-        for &c in &list[..n] {
+        for &c in list {
             let on_zero = OnZero::of(c, fell_back);
             let (v0, v1) = (value(c, self.integ.t), value(c, t1));
             let tb = if self.input.has_vertical {

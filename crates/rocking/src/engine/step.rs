@@ -35,8 +35,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let y = State::from_components(y);
             y.rate(f.accelerations(t, y.theta, y.theta_dot)).components()
         };
-        let (list, n) = conditions(self.kernel, self.regime);
-        let list = &list[..n];
+        let list = conditions(self.kernel, self.regime);
         if self.integ.restart {
             self.restart(&mut rhs, list);
         }

@@ -25,14 +25,14 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 self.set_down()?;
                 continue;
             }
-            let (list, n) = conditions(self.kernel, self.regime);
-            let conditions = if list[..n].iter().all(|c| c.of_theta()) {
+            let list = conditions(self.kernel, self.regime);
+            let conditions = if list.iter().all(|c| c.of_theta()) {
                 // Conditions on θ alone (a rocking tower on a fixed base): the
                 // value is θ's and the derivative θ̇'s, with no ground motion,
                 // lean or acceleration to evaluate (one of these per impact).
                 let (s, theta) = (pivot_sign(self.regime), Jet::new(self.integ.y.theta, self.integ.y.theta_dot));
                 let mut conditions = [Jet::default(); MAX_CONDITIONS];
-                for (slot, c) in conditions.iter_mut().zip(&list[..n]) {
+                for (slot, c) in conditions.iter_mut().zip(list) {
                     *slot = c.theta_margin(s, theta);
                 }
                 conditions
@@ -43,7 +43,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     self.regime,
                     &self.input.segment.piece,
                     &self.input.vsegment.piece,
-                    &list[..n],
+                    list,
                     self.integ.t,
                     &self.integ.y,
                     Some(acc),
@@ -66,7 +66,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 (c, _) if fell_back && c.lifts() => false,
                 _ => holds_now(conditions[i]),
             };
-            let Some(i) = (0..n).find(|&i| holds(i)) else {
+            let Some(i) = (0..list.len()).find(|&i| holds(i)) else {
                 return Ok(());
             };
             self.switch(list[i])?;
