@@ -500,9 +500,10 @@ macro_rules! tower_field {
 /// body, read for the block.
 pub const SUMMARY_BLOCKS: &[BodyField] = &[MAX_ABS_THETA, MAX_THETA_OVER_ALPHA, IMPACTS, FIRST_UPLIFT_TIME, OVERTURNED, FRICTION_DEMAND];
 
-/// The quantities derived from a scenario that the summary holds too: each
-/// an entry of [`DERIVED`], and a field of [`SUMMARY`] through
-/// `derived_field!`, which reads it from the run's own derived quantities.
+// The quantities derived from a scenario that the summary holds too: each
+// an entry of `DERIVED`, and a field of `SUMMARY` through `derived_field!`,
+// which reads it from the run's own derived quantities.
+
 /// α, in [`DERIVED`] and the summary.
 const ALPHA: DerivedQuantity = DerivedQuantity {
     name: "alpha_rad",
