@@ -19,7 +19,7 @@ use crate::site::Role;
 use crate::town::IDENTITY;
 use crate::RecordSet;
 use rocking_codes::LimitState;
-use rocking_scenario::{set_dotted, set_named_key, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row};
+use rocking_scenario::{set_dotted, set_named_key, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row, SECTIONS};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -191,10 +191,27 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
         } else {
             cell_value(&given.text)
         };
-        // A block's key by its name (`belfry.width`), as a sweep's axis names it.
-        if !set_named_key(&mut table, key, value.clone()) {
-            set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
+        // A block's key by its name (`belfry.width`), as a sweep's axis names it; not its
+        // name, which names its outputs (as a sweep, which cannot vary it either).
+        let head = key.split('.').next().unwrap_or_default();
+        let known = SECTIONS.contains(&head) || ["site", "assessment"].contains(&head);
+        if !known && key.ends_with(".name") {
+            return Err(row.fault(file, &given.name, "a block's name cannot be set per tower: its outputs are named by it"));
         }
+        if set_named_key(&mut table, key, value.clone()) {
+            continue;
+        }
+        if !known {
+            return Err(row.fault(
+                file,
+                &given.name,
+                format!(
+                    "`{head}` is no section of the assessment file ({}, site, assessment) and no block on its tower (a block's key is its name and the key: belfry.width)",
+                    SECTIONS.join(", ")
+                ),
+            ));
+        }
+        set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
     }
     Ok(table)
 }
