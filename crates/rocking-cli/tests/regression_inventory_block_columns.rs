@@ -61,7 +61,7 @@ renamed,14.4,41.0,,cell
     let error = |row: &[String]| row[header.iter().position(|h| h == "error").unwrap_or_else(|| panic!("no error column"))].clone();
     assert_eq!(error(&rows[0]), "");
     assert!(
-        error(&rows[1]).contains("row 2 (id lantern), column lantern.width: `lantern` is no section of the assessment file and no block on its tower"),
+        error(&rows[1]).contains("row 2 (id lantern), column lantern.width: `lantern` is no section of the assessment file (tower, block, building, ground, initial, simulation, site, assessment) and no block on its tower"),
         "{}",
         error(&rows[1])
     );
