@@ -30,7 +30,8 @@ pub(crate) const MAX_CONDITIONS: usize = 4;
 
 /// The conditions that can end `regime`, at most four, in the order in which
 /// they are applied when several hold at one instant (a jump of the input):
-/// the tower's first, unless [`slips_before_uplift`].
+/// the tower's first, unless the building slips first
+/// ([`Kernel::slips_before_uplift`]).
 #[inline(always)]
 pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> &'static [Condition] {
     use Condition::{Impact, Overturn, SlipNegative, SlipPositive, SlipStop, UpliftNegative, UpliftPositive};
@@ -41,28 +42,13 @@ pub(crate) fn conditions(kernel: &Kernel, regime: Regime) -> &'static [Condition
         (None, Some(BuildingRegime::Stick)) => &[SlipNegative, SlipPositive],
         (None, Some(BuildingRegime::Slip(_))) => &[SlipStop],
         (Some(TowerRegime::Rest), None) => &[UpliftNegative, UpliftPositive],
-        (Some(TowerRegime::Rest), Some(BuildingRegime::Stick)) if slips_before_uplift(kernel, regime) => {
-            &[SlipNegative, SlipPositive, UpliftNegative, UpliftPositive]
-        }
+        (Some(TowerRegime::Rest), Some(BuildingRegime::Stick)) if kernel.slips_before_uplift() => &[SlipNegative, SlipPositive, UpliftNegative, UpliftPositive],
         (Some(TowerRegime::Rest), Some(BuildingRegime::Stick)) => &[UpliftNegative, UpliftPositive, SlipNegative, SlipPositive],
         (Some(TowerRegime::Rest), Some(BuildingRegime::Slip(_))) => &[UpliftNegative, UpliftPositive, SlipStop],
         (Some(TowerRegime::Rocking(_)), None) => &[Overturn, Impact],
         (Some(TowerRegime::Rocking(_)), Some(BuildingRegime::Stick)) => &[Overturn, Impact, SlipNegative, SlipPositive],
         (Some(TowerRegime::Rocking(_)), Some(BuildingRegime::Slip(_))) => &[Overturn, Impact, SlipStop],
     }
-}
-
-/// Whether a building that is stuck under a standing tower slips before the
-/// tower can lift, when a jump of the input makes both conditions hold at
-/// once: with the tower standing, both compare the pivot line's acceleration
-/// `|a_g|` with a threshold, `μs g_e` for the slip and `g_e tan α` for the
-/// uplift, and a jump passes the lower one first. So where `μs < tan α` the
-/// building slips first, and sliding it carries the tower at `μk g_e < g_e
-/// tan α`: the tower stays standing (a 1.5 g rectangular pulse under a
-/// building with μs = 0.2 lifted the tower first and reported an uplift and an
-/// impact at t = 0 while θ stayed 0).
-pub(crate) fn slips_before_uplift(kernel: &Kernel, regime: Regime) -> bool {
-    kernel.has_tower && kernel.has_building && regime.tower == TowerRegime::Rest && regime.building == BuildingRegime::Stick && kernel.mu_s < kernel.tan_alpha
 }
 
 /// `s = ±1` of a rocking tower (0 at rest).
@@ -176,8 +162,10 @@ mod tests {
     /// tower's conditions (an uplift either way at rest; the overturning and
     /// the impact while rocking) then the building's (a slip either way while
     /// stuck; the end of the slip while sliding), the building's first where
-    /// it slips before the tower lifts; none of a body the model lacks; never
-    /// more than `MAX_CONDITIONS`, the room `watched` has for them. Every
+    /// it slips before the tower lifts ([`Kernel::slips_before_uplift`],
+    /// tested against the slip and uplift laws beside them); none of a body
+    /// the model lacks; never more than `MAX_CONDITIONS`, the room `watched`
+    /// has for them. Every
     /// regime of the 0.5 m × 2 m block (tan α = 0.25), alone, on a building
     /// with μs = 0.6 and 0.2 (above and below tan α), and the building alone.
     #[test]
@@ -210,12 +198,9 @@ mod tests {
                     (true, BuildingRegime::Stick) => vec![SlipNegative, SlipPositive],
                     (true, BuildingRegime::Slip(_)) => vec![SlipStop],
                 };
-                // The building slips first only under a standing tower on a stuck building with μs < tan α.
-                let building_first = kernel.has_tower
-                    && kernel.has_building
-                    && tower == TowerRegime::Rest
-                    && building == BuildingRegime::Stick
-                    && kernel.mu_s < kernel.tan_alpha;
+                // The building first only under a standing tower on a stuck
+                // building that slips before the tower lifts (μs < tan α).
+                let building_first = tower == TowerRegime::Rest && building == BuildingRegime::Stick && kernel.slips_before_uplift();
                 let expected: Vec<Condition> = if building_first {
                     [building_part, tower_part].concat()
                 } else {

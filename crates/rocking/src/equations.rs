@@ -264,6 +264,24 @@ impl Kernel {
         }
     }
 
+    /// Whether a stuck building under a standing tower slips before the tower
+    /// can lift when a jump of the input passes both thresholds at once:
+    /// derived from the two laws, it does if the ground acceleration that
+    /// lifts the tower, `|Ẍ_p| = |a_g| = g_e tan α` ([`Kernel::uplift_threshold`]),
+    /// already asks of static friction more than it holds under the resting
+    /// stick demand ([`Kernel::stick_demand`], [`Kernel::static_friction_margin`]).
+    /// Both thresholds are proportional to `g_e` (the resting demand and its
+    /// normal force are the complex's mass times `a_g` and `g_e`, for both
+    /// normal-force laws), so one `g_e` decides for all: `μs < tan α`.
+    /// Sliding then carries the tower at `μk g_e < g_e tan α`, and it stays
+    /// standing (a 1.5 g rectangular pulse under a building with `μs = 0.2`
+    /// once lifted the tower first and reported an uplift and an impact at
+    /// `t = 0` while θ stayed 0).
+    pub(crate) fn slips_before_uplift(&self) -> bool {
+        let (force, normal) = self.stick_demand(TowerRegime::Rest, self.uplift_threshold(1.0), 1.0, 0.0, 0.0);
+        self.has_tower && self.has_building && self.static_friction_margin(force, normal) > 0.0
+    }
+
     /// [`Kernel::stick_demand`] of a rocking tower whose lean and `θ̈` (from
     /// (T) with `Ẍ_p = a_g`) are known.
     #[inline(always)]
@@ -392,7 +410,7 @@ mod tests {
     use crate::condition::Condition;
     use crate::jet::Jet;
     use crate::reference::solid_block;
-    use crate::regime::SlipDirection;
+    use crate::regime::{SlipDirection, State};
     use crate::{Building, NormalForce};
     use proptest::prelude::*;
 
@@ -541,5 +559,49 @@ mod tests {
         let acc = k.accelerations(regime, a_g, g_e, 0.0, 0.0);
         let (bound, _) = k.resting_slide_bounds(g_e, 0.0, a_g, 0.0);
         assert!((acc.slip.abs() / bound - 1.0).abs() < 1e-12, "{} against {bound}", acc.slip);
+    }
+
+    /// [`Kernel::slips_before_uplift`] against the two conditions it orders,
+    /// as the run evaluates them ([`Condition::value`] under a standing tower
+    /// on a stuck building): raising `|a_g|` from 0 by steps of `1e-4 g_e`
+    /// (either sign), a slip condition holds first exactly where it says so.
+    /// Blocks with `tan α` = 1/4, 1/2 and 1/6, `μs` from 0.02 to 1.2 (kept
+    /// `1e-3` off `tan α`, several steps), both normal-force laws, `g_e` = g and
+    /// 4 m/s² (a vertical input): both orders must be met.
+    #[test]
+    fn slips_before_uplift_orders_the_slip_and_uplift_conditions_as_the_run_evaluates_them() {
+        let regime = Regime {
+            tower: TowerRegime::Rest,
+            building: BuildingRegime::Stick,
+        };
+        let mut orders = [0; 2];
+        for (width, height) in [(0.5, 2.0), (1.0, 2.0), (1.0, 6.0)] {
+            for normal in [NormalForce::Constant, NormalForce::Dynamic] {
+                for i in 0..60 {
+                    let mu_s = 0.02 + 0.02 * f64::from(i);
+                    if (mu_s - width / height).abs() < 1e-3 {
+                        continue;
+                    }
+                    let building = Building::new(2.0e6, mu_s, 0.5 * mu_s, normal).unwrap_or_else(|e| panic!("{e}"));
+                    let k = Kernel::new(&Model::new(Some(solid_block(width, height)), Some(building), G).unwrap_or_else(|e| panic!("{e}")));
+                    for g_e in [G, 4.0] {
+                        let holds = |c: Condition, a_g: f64| c.value(&k, regime, a_g, g_e, &State::default()) > 0.0;
+                        let first = |pair: [Condition; 2]| {
+                            (1..=20_000)
+                                .find(|&n| {
+                                    let a = 1e-4 * g_e * f64::from(n);
+                                    pair.iter().any(|&c| holds(c, a) || holds(c, -a))
+                                })
+                                .unwrap_or_else(|| panic!("{pair:?} never holds"))
+                        };
+                        let slip = first([Condition::SlipNegative, Condition::SlipPositive]);
+                        let uplift = first([Condition::UpliftNegative, Condition::UpliftPositive]);
+                        assert_eq!(k.slips_before_uplift(), slip < uplift, "B/H = {width}/{height}, μs = {mu_s}, g_e = {g_e}");
+                        orders[usize::from(slip < uplift)] += 1;
+                    }
+                }
+            }
+        }
+        assert!(orders.iter().all(|&n| n > 50), "{orders:?}");
     }
 }

@@ -97,6 +97,14 @@ impl Kernel {
     /// than `g tan α`), the tower falls back, and the next impact sets the
     /// building sliding again, each cycle some 40 times smaller than the last
     /// and never the last.
+    ///
+    /// It is the model's threshold for the end of accumulating impacts (the
+    /// transition impact → rest), not a closed form: the ratio of one such
+    /// cycle to the next comes out of the coupled motion of both bodies, not
+    /// out of a law, so the series has no closed sum. On a fixed base or a
+    /// building that stays stuck the series is Housner's geometric one, and
+    /// `cascade.rs` jumps its flights in closed form down to the same
+    /// threshold, every impact reported.
     fn cut_at_rest(&self, after: AfterImpact) -> AfterImpact {
         if after.theta_dot.abs() < REST_ANGULAR_VELOCITY && after.slip_vel.abs() < REST_ANGULAR_VELOCITY * self.radius {
             AfterImpact {
