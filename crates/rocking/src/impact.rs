@@ -26,7 +26,7 @@
 
 use crate::equations::Kernel;
 use crate::regime::{BuildingRegime, SlipDirection};
-use crate::simulate::REST_ANGULAR_VELOCITY;
+use crate::simulate::{impact_ends_at_rest, REST_ANGULAR_VELOCITY};
 
 /// Velocities just after an impact and the building's regime.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -106,7 +106,7 @@ impl Kernel {
     /// `cascade.rs` jumps its flights in closed form down to the same
     /// threshold, every impact reported.
     fn cut_at_rest(&self, after: AfterImpact) -> AfterImpact {
-        if after.theta_dot.abs() < REST_ANGULAR_VELOCITY && after.slip_vel.abs() < REST_ANGULAR_VELOCITY * self.radius {
+        if impact_ends_at_rest(after.theta_dot) && after.slip_vel.abs() < REST_ANGULAR_VELOCITY * self.radius {
             AfterImpact {
                 slip_vel: 0.0,
                 building: BuildingRegime::Stick,

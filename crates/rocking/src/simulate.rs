@@ -15,6 +15,15 @@ use std::f64::consts::FRAC_PI_2;
 /// cascade of ever smaller impacts is cut there, in finite time.
 pub const REST_ANGULAR_VELOCITY: f64 = 1e-9;
 
+/// The model's end of accumulating impacts (impact → rest): an impact whose
+/// angular velocity after it, `theta_dot_after` (rad/s), is below
+/// [`REST_ANGULAR_VELOCITY`] sets its block down. The tower's impacts, the
+/// building's slip after one and every interface of a stack ask it here.
+#[inline]
+pub fn impact_ends_at_rest(theta_dot_after: f64) -> bool {
+    theta_dot_after.abs() < REST_ANGULAR_VELOCITY
+}
+
 /// How long and how accurately to integrate.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Settings {

@@ -10,7 +10,7 @@ use crate::event::{Event, EventKind};
 use crate::jet::Jet;
 use crate::observer::Observer;
 use crate::regime::{BuildingRegime, Pivot, Regime, SlipDirection, State, TowerRegime};
-use crate::simulate::REST_ANGULAR_VELOCITY;
+use crate::simulate::impact_ends_at_rest;
 use std::ops::ControlFlow;
 
 /// Regime switches at one instant beyond which the run reports chattering.
@@ -242,7 +242,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// The impact law (`impact.rs`): the pivot flips, `θ̇` and `u̇` jump; a
     /// building that starts or stops sliding through the impact is an event of
-    /// its own at the same instant. Below [`REST_ANGULAR_VELOCITY`] the tower
+    /// its own at the same instant. Below [`REST_ANGULAR_VELOCITY`](crate::REST_ANGULAR_VELOCITY) the tower
     /// stands, unless the pivot line accelerates enough to lift it at once.
     pub(super) fn impact(&mut self) -> Result<(), Error> {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return Ok(()) };
@@ -269,7 +269,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             let at = self.integ.y;
             self.emit(kind, at)?;
         }
-        if self.integ.y.theta_dot.abs() < REST_ANGULAR_VELOCITY {
+        if impact_ends_at_rest(self.integ.y.theta_dot) {
             let before = self.integ.y;
             self.integ.y.theta_dot = 0.0;
             self.regime.tower = TowerRegime::Rest;

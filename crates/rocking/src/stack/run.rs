@@ -17,7 +17,7 @@
 //!
 //! A condition that already holds when a regime is entered switches at once.
 //! An impact that leaves its interface turning slower than
-//! [`REST_ANGULAR_VELOCITY`] seats it (the end of an accumulation of ever
+//! [`REST_ANGULAR_VELOCITY`](crate::REST_ANGULAR_VELOCITY) seats it (the end of an accumulation of ever
 //! smaller impacts), as the tower's.
 //!
 //! Transitions are located by the engine's search (`engine::crossing`):
@@ -40,7 +40,7 @@ use crate::ground::GroundMotion;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
 use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
-use crate::simulate::REST_ANGULAR_VELOCITY;
+use crate::simulate::impact_ends_at_rest;
 use std::borrow::Cow;
 use std::ops::ControlFlow;
 
@@ -424,7 +424,7 @@ impl<const S: usize> Runner<'_, S> {
                 let out = self.stack.impact(regime, &state, k);
                 let (mut regime, mut state) = (out.regime, out.state);
                 let mut kind = StackEventKind::Impact(k);
-                if regime.interfaces[k] != Interface::Stuck && state.theta_dot[k].abs() < REST_ANGULAR_VELOCITY {
+                if regime.interfaces[k] != Interface::Stuck && impact_ends_at_rest(state.theta_dot[k]) {
                     regime.interfaces[k] = Interface::Stuck;
                 }
                 if regime.interfaces[k] == Interface::Stuck {
