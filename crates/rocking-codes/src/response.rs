@@ -24,6 +24,12 @@ pub const DEFAULT_PERIODS: PeriodGrid = PeriodGrid {
 /// How many free periods follow the record.
 const TAIL_PERIODS: f64 = 2.0;
 
+/// The most periods a [`PeriodGrid`] gives: 10,000 log-spaced over 0.02–4 s
+/// are 0.05% apart, far finer than a spectrum's features; each period walks
+/// every record, so a count typed with a few zeros too many would run for
+/// hours and fill the memory instead of being refused.
+pub const MAX_PERIODS: usize = 10_000;
+
 /// Log-spaced periods: `count` values from `from` to `to` (s).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PeriodGrid {
@@ -36,7 +42,7 @@ pub struct PeriodGrid {
 }
 
 impl PeriodGrid {
-    /// The periods, checked: `0 < from < to`, `count ≥ 2`; the ends exact.
+    /// The periods, checked: `0 < from < to`, `2 ≤ count ≤` [`MAX_PERIODS`]; the ends exact.
     pub fn periods(&self) -> Result<Vec<f64>, Error> {
         let PeriodGrid { from, to, count } = *self;
         if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from) {
@@ -44,6 +50,9 @@ impl PeriodGrid {
         }
         if count < 2 {
             return Err(invalid("periods", format!("need at least 2 periods, got {count}")));
+        }
+        if count > MAX_PERIODS {
+            return Err(invalid("periods", format!("at most {MAX_PERIODS} periods, got {count}")));
         }
         let ratio = libm::log(to / from) / (count - 1) as f64;
         Ok((0..count)

@@ -42,7 +42,7 @@ pub struct Args {
     /// Damping of the records' spectra, % of critical [default: 5].
     #[arg(long, value_name = "PCT", allow_negative_numbers = true, conflicts_with = "site")]
     pub damping: Option<f64>,
-    /// Periods: FROM,TO,N, N log-spaced values from FROM to TO seconds [default: 0.02,4,100].
+    /// Periods: FROM,TO,N, N log-spaced values from FROM to TO seconds (N at most 10,000) [default: 0.02,4,100].
     #[arg(long, value_name = "FROM,TO,N", allow_hyphen_values = true)]
     pub periods: Option<String>,
     /// Output folder, created if needed [default: out/spectra, or out/<assessment file stem>].
