@@ -133,7 +133,12 @@ impl Study {
                 },
             )));
         }
-        let template = summary_template();
+        // The fields of the study's runs: with blocks on the tower, the stack's and each block's.
+        let layout = crate::columns::Layout {
+            blocks: crate::block::names(&table).map_err(fail)?,
+            ..Default::default()
+        };
+        let template = summary_template(&layout);
         let measure = parse_measure(&study).map_err(fail)?;
         let levels = parse_levels(&study).map_err(fail)?;
         let free_after = match study.get("free_after") {

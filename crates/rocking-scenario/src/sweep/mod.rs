@@ -430,22 +430,24 @@ pub(crate) fn one_line(text: &str) -> String {
     text.split(['\n', '\r']).map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 
-/// The summary fields of every case, named, with a cell of their kind (text,
-/// flag or number), from the descriptors: known without a run.
-pub(crate) fn summary_template() -> Vec<(String, Cell)> {
-    let layout = crate::columns::Layout::default();
-    crate::columns::SUMMARY
+/// The summary fields of every case of `layout`, named, with a cell of their
+/// kind (text, flag or number), from the descriptors: known without a run.
+pub(crate) fn summary_template(layout: &crate::columns::Layout) -> Vec<(String, Cell)> {
+    let cell = |kind: crate::columns::Kind| match kind {
+        crate::columns::Kind::Number => Cell::Float(0.0),
+        crate::columns::Kind::Flag => Cell::Bool(false),
+        crate::columns::Kind::Text => Cell::Text(String::new()),
+    };
+    let mut template: Vec<(String, Cell)> = crate::columns::SUMMARY
         .iter()
-        .filter(|f| (f.present)(&layout))
-        .map(|f| {
-            let cell = match f.kind {
-                crate::columns::Kind::Number => Cell::Float(0.0),
-                crate::columns::Kind::Flag => Cell::Bool(false),
-                crate::columns::Kind::Text => Cell::Text(String::new()),
-            };
-            (f.name.to_string(), cell)
-        })
-        .collect()
+        .filter(|f| (f.present)(layout))
+        .map(|f| (f.name.to_string(), cell(f.kind)))
+        .collect();
+    // Each block's fields, as summary_fields gives them (crate::columns::summary_names).
+    for name in layout.blocks.iter() {
+        template.extend(crate::columns::SUMMARY_BLOCKS.iter().map(|f| (format!("{name}_{}", f.suffix), cell(f.kind))));
+    }
+    template
 }
 
 /// The key of `[sweep]` that raises the cap on the number of cases (not an axis: it has no dot).
