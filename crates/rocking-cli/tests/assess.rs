@@ -369,4 +369,23 @@ fn a_belfry_is_a_mechanism_of_its_own() {
     ] {
         assert!(report.contains(part), "no {part:?} in the report");
     }
+    // Each ADRS figure (one a mechanism) tells its kinds of point apart: each
+    // has its legend entry, and the two limit states have two colours (the
+    // life-safety one blue #0072B2, the collapse one vermilion #D55E00).
+    let figures: Vec<&str> = report.split("Capacity curve in the ADRS plane: ").skip(1).collect();
+    assert_eq!(figures.len(), 2, "one ADRS figure a mechanism");
+    for figure in figures {
+        let svg = &figure[..figure.find("</svg>").unwrap_or(figure.len())];
+        for entry in [
+            "ultimate d_SLV = 0.4 d0 = ",
+            "ultimate d_SLC = 0.6 d0 = ",
+            "SLV non-linear demand ",
+            "SLC non-linear demand ",
+        ] {
+            assert!(svg.contains(entry), "no legend entry {entry:?} in the ADRS figure {svg}");
+        }
+        for color in ["fill=\"#0072B2\"", "fill=\"#D55E00\""] {
+            assert!(svg.contains(color), "no point filled {color} in the ADRS figure");
+        }
+    }
 }

@@ -7,12 +7,12 @@
 //! figure is cut (each figure avoids a page break inside it).
 
 use crate::format::sig;
-use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, SpectraFigure};
+use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, Shape, SpectraFigure, BLUE, GREEN, OVERTURN, VERMILION};
 use rocking_assess::{
     capacity_json, linear_kinematic_demand, soil_factor, Assessment, AssessmentInput, Capacity, Check, DynamicCheck, MechanismView, Method, RecordSet, Role,
     CAPACITY_QUANTITIES,
 };
-use rocking_codes::{CodeSpectrum, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
+use rocking_codes::{CodeSpectrum, LimitState, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
 use std::fmt::Write;
 
 /// Escapes text for HTML.
@@ -24,7 +24,8 @@ pub(crate) fn esc(text: &str) -> String {
 pub(crate) const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;max-width:190mm;margin:1em auto;color:#222;font-size:10.5pt;line-height:1.4}\
 h1{font-size:17pt}h2{font-size:13pt;border-bottom:1px solid #999;margin-top:1.4em}h3{font-size:11pt}\
 table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left;vertical-align:top}\
-th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
+th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
+.wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}@media print{.wide{overflow:visible}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
 figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width:100%;height:auto;display:block}figcaption{font-size:9.5pt;color:#444}\
 code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
 
@@ -35,6 +36,12 @@ pub(crate) fn scalable(svg: String, size: (u32, u32)) -> String {
     } else {
         svg.replacen("<svg ", &format!("<svg viewBox=\"0 0 {} {}\" ", size.0, size.1), 1)
     }
+}
+
+/// The file name of a record's path (the whole path when it has none), so
+/// that a table of records fits the page's column; the paths are listed once.
+fn file_name(path: &str) -> &str {
+    std::path::Path::new(path).file_name().and_then(|n| n.to_str()).unwrap_or(path)
 }
 
 fn verdict(c: &Check) -> String {
@@ -66,25 +73,38 @@ fn check_row(out: &mut String, c: &Check, q: f64) {
 }
 
 /// The capacity curve in the ADRS plane with the ultimate displacements and the demands.
-fn adrs_figure(capacity: &Capacity, checks: &[Check], of: &str) -> anyhow::Result<String> {
+///
+/// Each kind of point has its own look: the colour is the limit state's (blue
+/// the life-safety one, vermilion the collapse one), the shape what the point
+/// is (a square the ultimate displacement, a triangle the non-linear kinematic
+/// demand that the capacity meets, a cross a demand beyond it).
+fn adrs_figure(capacity: &Capacity, checks: &[Check], life_safety: LimitState, of: &str) -> anyhow::Result<String> {
     let points = capacity.curve_points(201);
     let mut markers = vec![
         Marker {
-            label: format!("d_SLV = 0.4 d0 = {} m", sig(capacity.d_slv, 3)),
+            label: format!("ultimate d_SLV = 0.4 d0 = {} m", sig(capacity.d_slv, 3)),
             at: (capacity.d_slv, capacity.acceleration_at(capacity.d_slv)),
-            fails: false,
+            shape: Shape::Square,
+            color: BLUE,
         },
         Marker {
-            label: format!("d_SLC = 0.6 d0 = {} m", sig(capacity.d_slc, 3)),
+            label: format!("ultimate d_SLC = 0.6 d0 = {} m", sig(capacity.d_slc, 3)),
             at: (capacity.d_slc, capacity.acceleration_at(capacity.d_slc)),
-            fails: false,
+            shape: Shape::Square,
+            color: VERMILION,
         },
     ];
     for c in checks.iter().filter(|c| c.method == Method::NonlinearKinematic) {
         markers.push(Marker {
-            label: format!("{} demand {} m", c.limit_state, sig(c.demand, 3)),
+            label: format!(
+                "{} non-linear demand {} m ({})",
+                c.limit_state,
+                sig(c.demand, 3),
+                if c.holds { "holds" } else { "fails" }
+            ),
             at: (c.demand, capacity.acceleration_at(c.demand.min(capacity.d0))),
-            fails: !c.holds,
+            shape: if c.holds { Shape::Triangle } else { Shape::Cross },
+            color: if c.limit_state == life_safety { BLUE } else { VERMILION },
         });
     }
     let chart = LineChart {
@@ -164,12 +184,14 @@ fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64, name: &str) -> anyhow::Re
         markers.push(Marker {
             label: format!("holds at λ = {}", sig(lo, 4)),
             at: (lo, at(lo)),
-            fails: false,
+            shape: Shape::Circle,
+            color: GREEN,
         });
         markers.push(Marker {
             label: format!("fails at λ = {}", sig(hi, 4)),
             at: (hi, at(hi)),
-            fails: true,
+            shape: Shape::Cross,
+            color: OVERTURN,
         });
     }
     let chart = LineChart {
@@ -384,7 +406,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         }
         checks_table(&mut out, m, input.file.q);
         if stacked {
-            let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve of {} with its ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(m.capacity, m.checks, &format!(": {}", m.name))?, esc(m.name));
+            let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve of {} with its ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(m.capacity, m.checks, input.site.limit_state(Role::LifeSafety), &format!(": {}", m.name))?, esc(m.name));
         }
     }
     let _ = writeln!(
@@ -402,7 +424,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         sig(soil_factor(&life_safety), 4)
     );
     if !stacked {
-        let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub> (a cross where the check fails).</figcaption></figure>", adrs_figure(capacity, checks, "")?);
+        let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(capacity, checks, input.site.limit_state(Role::LifeSafety), "")?);
     }
 
     if let Some((set, dynamic)) = dynamic {
@@ -415,6 +437,15 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
             sig(set.range.1, 3),
             if input.model().building().is_some() { " (the tower, and the church sliding on its foundation)" } else { "" },
             input.file.free_after
+        );
+        let _ = writeln!(
+            out,
+            "<p class=\"note\">The record files, from the assessment file's folder (the tables below name each by its file's name): {}.</p>",
+            set.records
+                .iter()
+                .map(|r| format!("<code>{}</code>", esc(&r.path)))
+                .collect::<Vec<_>>()
+                .join(", ")
         );
         if stacked {
             let _ = writeln!(
@@ -435,7 +466,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                 COMPATIBILITY_UPPER
             );
             let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
-            let mut head = "<table><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th>".to_string();
+            let mut head = "<div class=\"wide\"><table class=\"records\"><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th>".to_string();
             for m in &mechanisms[1..] {
                 let _ = write!(head, "<th>{0}: max d* (m)</th><th>{0} fell</th>", esc(m.name));
             }
@@ -457,12 +488,13 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                 };
                 let _ = writeln!(
                     out,
-                    "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td>{blocks}<td class=\"n\">{slip}</td><td>{err}</td></tr>",
+                    "<tr><td title=\"{}\">{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td>{blocks}<td class=\"n\">{slip}</td><td>{err}</td></tr>",
                     esc(&r.path),
+                    esc(file_name(&r.path)),
                     sig(*s, 4)
                 );
             }
-            let _ = writeln!(out, "</table>");
+            let _ = writeln!(out, "</table></div>");
             for m in &mechanisms {
                 let d = &m.dynamic[i];
                 let d_ls = if d.limit_state == input.site.limit_state(Role::LifeSafety) {

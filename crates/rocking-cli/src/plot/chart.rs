@@ -2,7 +2,7 @@
 //! capacity curve in the ADRS plane with the demand points, the response of a
 //! record set against λ), for the pages that inline their figures.
 
-use super::legend::{self, Entry, Swatch};
+use super::legend::{self, Entry, Shape, Swatch};
 use super::spectra::Curve;
 use super::style::{self, size, text, Figure, GREY, INK};
 use plotters::coord::Shift;
@@ -21,8 +21,10 @@ pub struct Marker {
     pub label: String,
     /// x, y in the axes' units.
     pub at: (f64, f64),
-    /// Whether it marks a failure (drawn as a cross), else a square.
-    pub fails: bool,
+    /// Its shape (a cross for a failure).
+    pub shape: Shape,
+    /// Its colour.
+    pub color: RGBColor,
 }
 
 /// A chart of curves and markers on linear axes.
@@ -50,14 +52,7 @@ impl Figure for LineChart {
         let rest = style::title_band(root, &self.title, &self.subtitle)?;
         let mut entries: Vec<Entry> = self.curves.iter().filter_map(Curve::legend_entry).collect();
         for m in &self.markers {
-            entries.push(Entry::new(
-                if m.fails {
-                    Swatch::Cross(style::OVERTURN)
-                } else {
-                    Swatch::LineDots(style::GREEN)
-                },
-                m.label.clone(),
-            ));
+            entries.push(Entry::new(Swatch::Point(m.shape, m.color), m.label.clone()));
         }
         let panel = legend::above(&rest, PLOT_LEFT, &entries)?;
         let finite = |v: &f64| v.is_finite();
@@ -106,11 +101,7 @@ impl Figure for LineChart {
             }
         }
         for m in &self.markers {
-            if m.fails {
-                chart.draw_series(std::iter::once(Cross::new(m.at, 7, style::OVERTURN.stroke_width(3))))?;
-            } else {
-                chart.draw_series(std::iter::once(Circle::new(m.at, 6, style::GREEN.filled())))?;
-            }
+            legend::point(chart.plotting_area(), m.at, m.shape, m.color)?;
         }
         Ok(())
     }

@@ -23,6 +23,37 @@ pub enum Swatch {
     Square(RGBColor),
     /// A line with round markers.
     LineDots(RGBColor),
+    /// A point of a chart, as drawn on it.
+    Point(Shape, RGBColor),
+}
+
+/// The shape of a point of a chart (and of its legend's swatch).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// A filled disc.
+    Circle,
+    /// A filled square.
+    Square,
+    /// A filled triangle pointing up.
+    Triangle,
+    /// A cross (×): a failure.
+    Cross,
+}
+
+/// Draws a point of `shape` at `at` (in `area`'s coordinates), the same size
+/// on a chart as in its legend.
+pub fn point<DB: DrawingBackend, CT: CoordTranslate>(area: &DrawingArea<DB, CT>, at: CT::From, shape: Shape, color: RGBColor) -> anyhow::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let anchor = EmptyElement::<CT::From, DB>::at(at);
+    match shape {
+        Shape::Circle => area.draw(&(anchor + Circle::new((0, 0), 6, color.filled())))?,
+        Shape::Square => area.draw(&(anchor + Rectangle::new([(-6, -6), (6, 6)], color.filled())))?,
+        Shape::Triangle => area.draw(&(anchor + Polygon::new(vec![(0, -8), (7, 5), (-7, 5)], color.filled())))?,
+        Shape::Cross => area.draw(&(anchor + Cross::new((0, 0), 7, color.stroke_width(3))))?,
+    }
+    Ok(())
 }
 
 /// One entry: its swatch and its text.
@@ -135,6 +166,7 @@ where
             area.draw(&line(c))?;
             area.draw(&Circle::new((x + SWATCH / 2, y), 4, c.filled()))?;
         }
+        Swatch::Point(shape, c) => point(area, (x + SWATCH / 2, y), shape, c)?,
     }
     Ok(())
 }

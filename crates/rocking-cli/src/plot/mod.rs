@@ -27,9 +27,11 @@ mod timeline;
 mod town;
 
 pub use chart::{LineChart, Marker};
+pub use legend::Shape;
 use rocking_scenario::{Measure, Outcome, Stripe};
 pub use spectra::{Band, Curve, Ink, SpectraFigure};
 use std::path::{Path, PathBuf};
+pub use style::{BLUE, GREEN, OVERTURN, VERMILION};
 pub use sweep_table::SweepTable;
 
 /// Draws a figure of spectra (log-log) into `dir/<stem>.svg` and `.png`, returning the files.
