@@ -25,7 +25,7 @@ pub(crate) const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;
 h1{font-size:17pt}h2{font-size:13pt;border-bottom:1px solid #999;margin-top:1.4em}h3{font-size:11pt}\
 table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left;vertical-align:top}\
 th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
-.wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}@media print{.wide{overflow:visible}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
+.wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}@media print{.wide{overflow:visible}table{font-size:8.5pt}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
 figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width:100%;height:auto;display:block}figcaption{font-size:9.5pt;color:#444}\
 code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
 
