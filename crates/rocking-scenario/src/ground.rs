@@ -306,7 +306,7 @@ fn frequency(s: &Section<'_>, cx: &Context<'_>) -> Result<f64, Fault> {
 }
 
 /// The values of `units`, the acceleration units of a CSV record.
-pub(crate) const ACCELERATION_UNITS: [(&str, AccelerationUnit); 3] = [
+pub const ACCELERATION_UNITS: [(&str, AccelerationUnit); 3] = [
     ("g", AccelerationUnit::G),
     ("m/s2", AccelerationUnit::MetersPerSecond2),
     ("cm/s2", AccelerationUnit::CentimetersPerSecond2),
@@ -354,6 +354,21 @@ fn parse_record(s: &Section<'_>, folder: &Path) -> Result<RecordSpec, Fault> {
         },
         csv_keys,
     })
+}
+
+/// The peak of `record` in g (gravity `g`, m/s²) when it is above
+/// [`MAX_PEAK_G`]: no ground motion is that strong, the units or the scale
+/// are wrong. `None` for a record within the bound.
+pub(crate) fn peak_beyond_bound(record: &Record, g: f64) -> Option<f64> {
+    let peak_g = record.peak().0 / g;
+    // Record values are finite (the reader checks), so the peak is a number.
+    (peak_g > MAX_PEAK_G).then_some(peak_g)
+}
+
+/// What is wrong with a record `what` ("FILE peaks at") that peaks at `peak_g` g,
+/// above [`MAX_PEAK_G`].
+pub(crate) fn too_strong(what: &str, peak_g: f64) -> String {
+    format!("{what} {peak_g:.3e} g, above {MAX_PEAK_G} g (the strongest recorded motions stay below 5 g: check the units and the scale)")
 }
 
 /// The name of a record format as written in `format`.
@@ -462,19 +477,14 @@ impl RecordSpec {
     /// The motion and its description, once read: `record` scaled by `scale`.
     fn finish(&self, record: Record, format: RecordFormat, g: f64) -> Result<(GroundMotion, GroundInfo), Fault> {
         let record = record.scaled(self.scale);
-        let peak_g = record.peak().0 / g;
-        // Record values are finite (the reader checks), so the peak is a number.
-        if peak_g > MAX_PEAK_G {
+        if let Some(peak_g) = peak_beyond_bound(&record, g) {
             // The scale is the one given (1 when absent): exact comparison is meant.
             let (key, what) = if self.scale.to_bits() == 1.0f64.to_bits() {
                 (self.key("file"), format!("{} peaks at", self.file.display()))
             } else {
                 (self.key("scale"), format!("{} scaled by {} peaks at", self.file.display(), self.scale))
             };
-            return Err(Fault::invalid(
-                key,
-                format!("{what} {peak_g:.3e} g, above {MAX_PEAK_G} g (the strongest recorded motions stay below 5 g: check the units and the scale)"),
-            ));
+            return Err(Fault::invalid(key, too_strong(&what, peak_g)));
         }
         let info = GroundInfo {
             kind: GroundKind::Record,

@@ -2,7 +2,7 @@
 //! assessment file's site with its record set fitted to them.
 //!
 //! ```text
-//! rocking spectrum RECORD... [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]
+//! rocking spectrum RECORD... [--dt S] [--units g|m/s2|cm/s2] [--damping PCT] [--periods FROM,TO,N] [--out DIR] [--plot]
 //! rocking spectrum --site ASSESS.toml [--periods FROM,TO,N] [--out DIR] [--plot]
 //! ```
 //!
@@ -17,9 +17,12 @@ use crate::format::sig;
 use crate::output;
 use crate::plot::{Band, Curve, Ink, SpectraFigure};
 use anyhow::Context;
-use rocking::Record;
+use rocking::{AccelerationUnit, CsvOptions, Record};
 use rocking_codes::{default_period_range, fit_record_set, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS};
-use rocking_scenario::{code_spectra_columns, dynamic_limit_states, read_record, record_names, record_spectra_in_g, AssessmentFile, SpectrumKind, DEFAULT_G};
+use rocking_scenario::{
+    code_spectra_columns, dynamic_limit_states, read_record_with, record_names, record_spectra_in_g, AssessmentFile, SpectrumKind, ACCELERATION_UNITS,
+    DEFAULT_G,
+};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -39,6 +42,12 @@ pub struct Args {
     /// An assessment file: the code spectra of its [site] and its record set fitted to them.
     #[arg(long, value_name = "ASSESS.toml")]
     pub site: Option<PathBuf>,
+    /// Time step of a CSV record with one (acceleration) column, s (an AT2 or ESM file carries its own).
+    #[arg(long, value_name = "S", value_parser = time_step, allow_negative_numbers = true, conflicts_with = "site")]
+    pub dt: Option<f64>,
+    /// Units of a CSV record's acceleration: g, m/s2 or cm/s2 [default: g] (an AT2 or ESM file carries its own).
+    #[arg(long, value_name = "UNITS", value_parser = units, conflicts_with = "site")]
+    pub units: Option<AccelerationUnit>,
     /// Damping of the records' spectra, % of critical [default: 5].
     #[arg(long, value_name = "PCT", allow_negative_numbers = true, conflicts_with = "site")]
     pub damping: Option<f64>,
@@ -52,6 +61,22 @@ pub struct Args {
     /// Also draw the figures (log-log): spectra, code_spectra, fit_<LS>.
     #[arg(long)]
     pub plot: bool,
+}
+
+/// Parses `--dt`: a time step in s, finite and > 0, as `[ground].dt`.
+fn time_step(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(dt) if dt.is_finite() && dt > 0.0 => Ok(dt),
+        _ => Err(format!("expected a time step in s, a number > 0, got {text:?}")),
+    }
+}
+
+/// Parses `--units`: a name of `[ground].units`.
+fn units(text: &str) -> Result<AccelerationUnit, String> {
+    ACCELERATION_UNITS.iter().find(|(name, _)| *name == text).map(|(_, unit)| *unit).ok_or_else(|| {
+        let names: Vec<&str> = ACCELERATION_UNITS.iter().map(|(name, _)| *name).collect();
+        format!("expected one of {}, got {text:?}", names.join(", "))
+    })
 }
 
 /// Parses `--periods FROM,TO,N`.
@@ -109,10 +134,14 @@ fn records_form(args: &Args, periods: &[f64]) -> anyhow::Result<()> {
     let damping = args.damping.unwrap_or(DEFAULT_DAMPING_PCT);
     rocking_codes::check_damping(damping).map_err(|e| anyhow::anyhow!("--damping: {}", reason(&e)))?;
     let g = DEFAULT_G;
+    let csv = CsvOptions {
+        units: args.units.unwrap_or_default(),
+        dt: args.dt,
+    };
     let records: Vec<Record> = args
         .records
         .iter()
-        .map(|p| read_record(p, g).map_err(|kind| anyhow::anyhow!("{kind}")))
+        .map(|p| read_record_with(p, &csv, g).map_err(|kind| anyhow::anyhow!("{kind}")))
         .collect::<anyhow::Result<_>>()?;
     let paths: Vec<String> = args.records.iter().map(|p| p.display().to_string()).collect();
     let names = record_names(&paths);

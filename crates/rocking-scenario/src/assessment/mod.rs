@@ -315,7 +315,14 @@ pub fn kinematic_damping_pct(state: LimitState) -> Option<f64> {
 /// Reads a record file as `[ground]` does with `format` guessed and no CSV
 /// options (values in g, `g` in m/s²), or what is wrong with it.
 pub fn read_record(path: &Path, g: f64) -> Result<Record, ErrorKind> {
-    parse_record_guessed(&read_record_text(path)?, path, &CsvOptions::default(), g)
+    read_record_with(path, &CsvOptions::default(), g)
+}
+
+/// Reads a record file as [`read_record`] does, a CSV record with the
+/// options `csv` (its `units`, and `dt` for one column); an AT2 or ESM file
+/// carries its own.
+pub fn read_record_with(path: &Path, csv: &CsvOptions, g: f64) -> Result<Record, ErrorKind> {
+    parse_record_guessed(&read_record_text(path)?, path, csv, g)
 }
 
 /// The text of a record file, or what is wrong with it.
@@ -335,7 +342,12 @@ fn parse_record_guessed(text: &str, path: &Path, csv: &CsvOptions, g: f64) -> Re
         source,
     };
     let format = Record::guess_format(text).map_err(record)?;
-    Record::parse(text, Some(format), csv, g).map_err(record)
+    let parsed = Record::parse(text, Some(format), csv, g).map_err(record)?;
+    // A record no ground motion could be is refused as `[ground]` refuses it.
+    match crate::ground::peak_beyond_bound(&parsed, g) {
+        Some(peak_g) => Err(ErrorKind::Invalid(crate::ground::too_strong(&format!("{} peaks at", path.display()), peak_g))),
+        None => Ok(parsed),
+    }
 }
 
 /// The records of `assessment.records` given as tables `{ name, text }`:
