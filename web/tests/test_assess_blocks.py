@@ -22,6 +22,7 @@ from pathlib import Path
 
 from conftest import BIN, OUT, ROOT, open_page
 from playwright.sync_api import expect
+from test_codes import choose_assess_example
 
 TOWER_ON_B = ROOT / "crates" / "rocking-assess" / "tests" / "data" / "tower_on_b.toml"
 BLOCKS = [
@@ -258,8 +259,7 @@ def test_the_belfry_example_gives_the_commands_governing_check(page, tmp_path):
     expected = json.loads((out / "assessment.json").read_text())
 
     page.click("#tab-assess")
-    index = page.locator("#assess-example option").all_text_contents().index("examples/belfry-assess/assess.toml") - 1
-    page.select_option("#assess-example", str(index))
+    choose_assess_example(page, "examples/belfry-assess/assess.toml")
     expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
     expect(page.locator('input[name="block[1].name"]')).to_have_value("belfry")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)

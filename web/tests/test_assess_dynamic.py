@@ -19,6 +19,7 @@ from pathlib import Path
 
 from conftest import BIN, OUT, ROOT
 from playwright.sync_api import expect
+from test_codes import choose_assess_example
 
 SANT_ANNA = ROOT / "examples" / "sant-anna-cervino" / "assess.toml"
 
@@ -35,8 +36,7 @@ def command(tmp_path):
 
 def open_example(page):
     page.click("#tab-assess")
-    index = page.locator("#assess-example option").all_text_contents().index("examples/sant-anna-cervino/assess.toml") - 1
-    page.select_option("#assess-example", str(index))
+    choose_assess_example(page, "examples/sant-anna-cervino/assess.toml")
     expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
 

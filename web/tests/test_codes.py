@@ -122,6 +122,13 @@ def open_assess(page):
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
 
 
+def choose_assess_example(page, example):
+    """Picks `example` (its path from the repository's root, as the list
+    names it) in the assess tab's Example list."""
+    names = page.locator("#assess-example option").all_text_contents()
+    page.select_option("#assess-example", str(names.index(example) - 1))
+
+
 def page_assessment(page):
     return page.evaluate("(() => { const { curve, ms, ...r } = document.getElementById('assess').assessment; return r; })()")
 
@@ -132,8 +139,7 @@ def test_the_assess_tab_gives_rocking_assess_numbers_bit_for_bit(page, tmp_path)
     four kinematic checks equal the command's assessment.json to the last bit,
     and the table shows them as the command's lines print them."""
     page.click("#tab-assess")
-    index = page.locator("#assess-example option").all_text_contents().index("examples/sant-anna-cervino/assess.toml") - 1
-    page.select_option("#assess-example", str(index))
+    choose_assess_example(page, "examples/sant-anna-cervino/assess.toml")
     expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
     expect(page.locator('input[name="tower.wall_thickness"]')).to_have_value("0.9")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
@@ -171,8 +177,7 @@ def test_a_site_typed_by_hand_and_an_ec8_site_against_the_command(page, tmp_path
     (ground type C, type 1, ag given per limit state): the command's numbers."""
     open_assess(page)
     source = ROOT / "examples" / "spectra" / "site.toml"
-    index = page.locator("#assess-example option").all_text_contents().index("examples/spectra/site.toml") - 1
-    page.select_option("#assess-example", str(index))
+    choose_assess_example(page, "examples/spectra/site.toml")
     expect(page.locator('input[name="tower.height"]')).to_have_value("12")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
     expected, _ = command_assessment(tmp_path, source)
