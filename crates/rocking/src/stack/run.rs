@@ -34,10 +34,12 @@
 
 use super::dynamics::Snapshot;
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
+use crate::condition::Condition;
 use crate::engine::crossing::{extremes, first_crossing, first_root, leaving_point, OnZero, Points};
 use crate::error::Error;
 use crate::ground::GroundMotion;
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
+use crate::jet::Jet;
 use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
 use crate::simulate::impact_ends_at_rest;
@@ -248,14 +250,17 @@ enum Watch {
 }
 
 impl Watch {
-    /// The condition as one of `θ_k` alone, if it is: the impact `−s_k θ_k`
-    /// of a rocking interface, the overturning `|θ_k| − π/2`.
+    /// The condition as one of `θ_k` alone, if it is: the tower's impact or
+    /// overturning ([`Condition::theta_margin`]) on the corner `s_k` the
+    /// interface rocks on.
     fn of_theta(self, regime: &StackRegime) -> Option<(usize, OfTheta)> {
-        match self {
-            Watch::Impact(k) => Some((k, OfTheta::Impact(regime.interfaces[k].pivot().map_or(0.0, Pivot::sign)))),
-            Watch::Overturn(k) => Some((k, OfTheta::Overturn)),
-            _ => None,
-        }
+        let (k, condition) = match self {
+            Watch::Impact(k) => (k, Condition::Impact),
+            Watch::Overturn(k) => (k, Condition::Overturn),
+            _ => return None,
+        };
+        let s = regime.interfaces[k].pivot().map_or(0.0, Pivot::sign);
+        Some((k, OfTheta { condition, s }))
     }
 
     /// Whether the condition needs Kane's equations (it is read at the ends
@@ -276,22 +281,19 @@ impl Watch {
     }
 }
 
-/// A condition of `θ_k` alone.
+/// A condition of `θ_k` alone: the engine's impact or overturning of a block
+/// rocking on the corner `s` (the sign; 0 on none).
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum OfTheta {
-    /// The impact of an interface rocking on the corner `s_k` (the sign).
-    Impact(f64),
-    /// The overturning of a block.
-    Overturn,
+struct OfTheta {
+    condition: Condition,
+    s: f64,
 }
 
 impl OfTheta {
     /// The condition and its rate at `θ_k`, `θ̇_k`.
     fn margin(self, theta: f64, theta_dot: f64) -> (f64, f64) {
-        match self {
-            OfTheta::Impact(s) => (-s * theta, -s * theta_dot),
-            OfTheta::Overturn => (theta.abs() - std::f64::consts::FRAC_PI_2, theta.signum() * theta_dot),
-        }
+        let m = self.condition.theta_margin(self.s, Jet::new(theta, theta_dot));
+        (m.v, m.d)
     }
 }
 
