@@ -12,8 +12,10 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// The arithmetic the equations of the model use.
-pub(crate) trait Real:
+/// The arithmetic the equations of the model use. Public so that the
+/// stack's public functions may be generic over it, in a private module so
+/// that nothing outside the crate implements it (`f64` and [`Jet`] only).
+pub trait Real:
     Copy
     + From<f64>
     + Add<Output = Self>
@@ -29,6 +31,8 @@ pub(crate) trait Real:
     fn sin_cos(self) -> (Self, Self);
     /// The value, without its derivative.
     fn value(self) -> f64;
+    /// Whether it is exactly zero (its derivative too).
+    fn is_zero(self) -> bool;
 }
 
 impl Real for f64 {
@@ -39,6 +43,10 @@ impl Real for f64 {
     #[inline(always)]
     fn value(self) -> f64 {
         self
+    }
+    #[inline(always)]
+    fn is_zero(self) -> bool {
+        self == 0.0
     }
 }
 
@@ -130,6 +138,10 @@ impl Real for Jet {
     #[inline(always)]
     fn value(self) -> f64 {
         self.v
+    }
+    #[inline(always)]
+    fn is_zero(self) -> bool {
+        self.v == 0.0 && self.d == 0.0
     }
 }
 

@@ -28,31 +28,32 @@
 //! While the building sticks, the friction it needs is the horizontal
 //! momentum rate of everything on it, `F_req = m1 a_g + Σ_i m_i Ẍ_i`.
 
-use super::geometry::{cross, dot, scale, sub, Coordinate, Coordinates, Pose, Vec2, MAX_COORDINATES};
+use super::geometry::{cross, dot, real, scale, sub, Coordinate, Coordinates, Pose, Vec2, MAX_COORDINATES};
 use super::linalg::{solve, Matrix};
 use super::{Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::body::NormalForce;
+use crate::jet::Real;
 use crate::regime::BuildingRegime;
 use arrayvec::ArrayVec;
 
 /// The kinematics of one instant in one set of coordinates: the pose, and for
 /// each block `∂G_i/∂q`, `∂φ_i/∂q` and the velocity-squared part of `G̈_i`.
 #[derive(Debug, Clone)]
-pub struct Frame {
+pub struct Frame<T = f64> {
     /// The coordinates.
     pub coords: Coordinates,
     /// Where the blocks are.
-    pub pose: Pose,
-    pub(crate) quad: [Vec2; MAX_BLOCKS],
+    pub pose: Pose<T>,
+    pub(crate) quad: [Vec2<T>; MAX_BLOCKS],
 }
 
-impl Frame {
+impl<T: Real> Frame<T> {
     /// The frame of `pose` in `coords`.
     #[inline(always)]
-    pub fn new(coords: Coordinates, pose: Pose) -> Self {
-        let mut quad = [[0.0; 2]; MAX_BLOCKS];
+    pub(crate) fn new(coords: Coordinates, pose: Pose<T>) -> Self {
+        let mut quad = [[real(0.0); 2]; MAX_BLOCKS];
         for (i, q) in quad.iter_mut().enumerate().take(pose.len()) {
-            *q = pose.point_quadratic(i, pose.centre(i));
+            *q = pose.point_quadratic(i, pose.centre[i]);
         }
         Self { coords, pose, quad }
     }
@@ -60,8 +61,8 @@ impl Frame {
     /// `∂G_i/∂q_a`. Computed where it is used: a few operations, cheaper
     /// than storing a table of them at every evaluation.
     #[inline(always)]
-    pub(crate) fn jac(&self, i: usize, a: usize) -> Vec2 {
-        self.pose.point_jacobian(i, self.pose.centre(i), self.coords.list()[a])
+    pub(crate) fn jac(&self, i: usize, a: usize) -> Vec2<T> {
+        self.pose.point_jacobian(i, self.pose.centre[i], self.coords.list()[a])
     }
 
     /// `∂φ_i/∂q_a`.
@@ -72,44 +73,45 @@ impl Frame {
 }
 
 /// The state of motion at one instant: the accelerations of the regime's
-/// coordinates and of every body.
+/// coordinates and of every body (of plain numbers, or of
+/// [`Jet`](crate::jet::Jet)s carrying their time derivatives).
 #[derive(Debug, Clone)]
-pub struct Snapshot {
+pub struct Snapshot<T = f64> {
     /// Where the blocks are.
-    pub pose: Pose,
+    pub pose: Pose<T>,
     /// `θ̈_k` (rad/s², 0 for a stuck interface) at index `k − 1`.
-    pub theta_ddot: [f64; MAX_BLOCKS],
+    pub theta_ddot: [T; MAX_BLOCKS],
     /// `ü` (m/s², 0 while the building sticks).
-    pub slip_acc: f64,
+    pub slip_acc: T,
     /// `G̈_i`, absolute (with the ground's `a_g`).
-    pub centre_acc: [Vec2; MAX_BLOCKS],
+    pub centre_acc: [Vec2<T>; MAX_BLOCKS],
     /// `φ̈_i`.
-    pub rotation_acc: [f64; MAX_BLOCKS],
+    pub rotation_acc: [T; MAX_BLOCKS],
     /// The ground's acceleration `a_g` (m/s²).
-    pub a_g: f64,
+    pub a_g: T,
     /// The effective gravity `g_e` (m/s²).
-    pub g_e: f64,
+    pub g_e: T,
 }
 
 /// What the blocks `k … N` need from the block below (the building for
 /// `k = 1`): the resultant force split along that block's base and normal to
 /// it, and the counter-clockwise moment about `C_k`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct InterfaceLoad {
+pub struct InterfaceLoad<T = f64> {
     /// Component along the supporting surface `R(φ_{k−1}) e_x` (N).
-    pub tangential: f64,
+    pub tangential: T,
     /// Component normal to it, `R(φ_{k−1}) e_y` (N); the resultant of `V_k`
     /// and `T_k` on the surface's normal, equal to `V_k` on an upright block.
-    pub normal: f64,
+    pub normal: T,
     /// `M_k` (N·m), counter-clockwise positive.
-    pub moment: f64,
+    pub moment: T,
 }
 
 /// `θ̈_k` by interface and `ü` from the accelerations of `coords`.
 #[inline]
-fn split(coords: &Coordinates, q_ddot: &[f64; MAX_COORDINATES]) -> ([f64; MAX_BLOCKS], f64) {
-    let mut theta_ddot = [0.0; MAX_BLOCKS];
-    let mut slip_acc = 0.0;
+fn split<T: Real>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; MAX_BLOCKS], T) {
+    let mut theta_ddot = [real(0.0); MAX_BLOCKS];
+    let mut slip_acc = real(0.0);
     for (a, c) in coords.list().iter().enumerate() {
         match *c {
             Coordinate::Slip => slip_acc = q_ddot[a],
@@ -139,21 +141,22 @@ impl Stack {
     /// including the foundation's kinetic friction when `coords` has the slip
     /// (`sigma` its direction).
     #[inline]
-    pub(crate) fn kane_system(&self, frame: &Frame, sigma: f64, a_g: f64, g_e: f64, m: &mut Matrix, f: &mut [f64; MAX_COORDINATES]) {
+    pub(crate) fn kane_system<T: Real>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T, m: &mut Matrix<T>, f: &mut [T; MAX_COORDINATES]) {
         let coords = frame.coords.list();
         let n = coords.len();
         for row in m.iter_mut().take(n) {
-            row[..n].fill(0.0);
+            row[..n].fill(real(0.0));
         }
-        f[..n].fill(0.0);
+        f[..n].fill(real(0.0));
         let m1 = self.building_mass();
         for (i, block) in self.blocks.iter().enumerate() {
             let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
             for a in 0..n {
                 for b in a..n {
-                    m[a][b] += block.mass * dot(frame.jac(i, a), frame.jac(i, b)) + block.inertia_centre * frame.rot(i, a) * frame.rot(i, b);
+                    let inertia: T = real(block.inertia_centre * frame.rot(i, a) * frame.rot(i, b));
+                    m[a][b] = m[a][b] + (dot(frame.jac(i, a), frame.jac(i, b)) * block.mass + inertia);
                 }
-                f[a] -= block.mass * dot(frame.jac(i, a), load);
+                f[a] = f[a] - dot(frame.jac(i, a), load) * block.mass;
             }
         }
         for a in 0..n {
@@ -162,21 +165,21 @@ impl Stack {
             }
         }
         if let Some(u) = frame.coords.index(Coordinate::Slip) {
-            m[u][u] += m1;
-            f[u] -= m1 * a_g;
+            m[u][u] = m[u][u] + m1;
+            f[u] = f[u] - a_g * m1;
             let friction = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
             let weight = g_e * self.total_mass();
             if self.dynamic_normal_force() {
                 let mut rest = weight;
                 for (i, block) in self.blocks.iter().enumerate() {
-                    rest += block.mass * frame.quad[i][1];
+                    rest = rest + frame.quad[i][1] * block.mass;
                     for b in 0..n {
-                        m[u][b] += friction * block.mass * frame.jac(i, b)[1];
+                        m[u][b] = m[u][b] + frame.jac(i, b)[1] * (friction * block.mass);
                     }
                 }
-                f[u] -= friction * rest;
+                f[u] = f[u] - rest * friction;
             } else {
-                f[u] -= friction * weight;
+                f[u] = f[u] - weight * friction;
             }
         }
     }
@@ -189,18 +192,18 @@ impl Stack {
     /// has no solution (Painlevé's paradox of the dynamic normal force, a
     /// light building under high friction).
     #[inline]
-    fn solve_kane(&self, frame: &Frame, regime: &StackRegime, a_g: f64, g_e: f64) -> [f64; MAX_COORDINATES] {
+    fn solve_kane<T: Real>(&self, frame: &Frame<T>, regime: &StackRegime, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
         let sigma = match regime.building {
             BuildingRegime::Slip(d) => d.sign(),
             BuildingRegime::Stick => 0.0,
         };
-        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
-        let mut q_ddot = [0.0; MAX_COORDINATES];
+        let mut m: Matrix<T> = [[real(0.0); MAX_COORDINATES]; MAX_COORDINATES];
+        let mut q_ddot = [real(0.0); MAX_COORDINATES];
         self.kane_system(frame, sigma, a_g, g_e, &mut m, &mut q_ddot);
         if solve(&mut m, &mut q_ddot, frame.coords.len()) > 0.0 {
             q_ddot
         } else {
-            [f64::NAN; MAX_COORDINATES]
+            [real(f64::NAN); MAX_COORDINATES]
         }
     }
 
@@ -219,18 +222,27 @@ impl Stack {
     /// accelerations.
     #[inline]
     pub fn snapshot(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> Snapshot {
-        let frame = Frame::new(Coordinates::of(self, regime), Pose::new(self, regime, state));
+        self.snapshot_of(regime, &state.theta, &state.theta_dot, a_g, g_e)
+    }
+
+    /// [`Stack::snapshot`] at the rotations `θ_k` and rates `θ̇_k`: on
+    /// [`Jet`](crate::jet::Jet)s (`θ_k` with `θ̇_k`, `θ̇_k` with `θ̈_k`, `a_g`
+    /// with its rate), every quantity with its exact time derivative along
+    /// the motion.
+    #[inline]
+    pub(crate) fn snapshot_of<T: Real>(&self, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> Snapshot<T> {
+        let frame = Frame::new(Coordinates::of(self, regime), Pose::of(self, regime, theta, theta_dot));
         let n = frame.coords.len();
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
         let (theta_ddot, slip_acc) = split(&frame.coords, &q_ddot);
-        let mut centre_acc = [[0.0; 2]; MAX_BLOCKS];
-        let mut rotation_acc = [0.0; MAX_BLOCKS];
+        let mut centre_acc = [[real(0.0); 2]; MAX_BLOCKS];
+        let mut rotation_acc = [real(0.0); MAX_BLOCKS];
         for i in 0..self.len() {
             let mut acc = [a_g + frame.quad[i][0], frame.quad[i][1]];
             for a in 0..n {
-                acc[0] += frame.jac(i, a)[0] * q_ddot[a];
-                acc[1] += frame.jac(i, a)[1] * q_ddot[a];
-                rotation_acc[i] += frame.rot(i, a) * q_ddot[a];
+                acc[0] = acc[0] + frame.jac(i, a)[0] * q_ddot[a];
+                acc[1] = acc[1] + frame.jac(i, a)[1] * q_ddot[a];
+                rotation_acc[i] = rotation_acc[i] + q_ddot[a] * frame.rot(i, a);
             }
             centre_acc[i] = acc;
         }
@@ -247,10 +259,14 @@ impl Stack {
 
     /// The normal force of the foundation on the building in `snap`:
     /// `g_e Σ m` (constant) or `Σ m_i (g_e + ÿ_i)` (dynamic).
-    pub fn normal_force(&self, snap: &Snapshot) -> f64 {
+    pub fn normal_force<T: Real>(&self, snap: &Snapshot<T>) -> T {
         let weight = snap.g_e * self.total_mass();
         if self.dynamic_normal_force() {
-            weight + self.blocks.iter().zip(&snap.centre_acc).map(|(b, acc)| b.mass * acc[1]).sum::<f64>()
+            let mut blocks = real::<T>(0.0);
+            for (b, acc) in self.blocks.iter().zip(&snap.centre_acc) {
+                blocks = blocks + acc[1] * b.mass;
+            }
+            weight + blocks
         } else {
             weight
         }
@@ -259,8 +275,12 @@ impl Stack {
     /// The friction force on the building, `F = m1 Ẍ_p + Σ_i m_i Ẍ_i`: while it
     /// sticks (`Ẍ_p = a_g`), the `F_req` it needs; it slips when
     /// `|F_req| > μs N`.
-    pub fn friction_force(&self, snap: &Snapshot) -> f64 {
-        self.building_mass() * (snap.a_g + snap.slip_acc) + self.blocks.iter().zip(&snap.centre_acc).map(|(b, acc)| b.mass * acc[0]).sum::<f64>()
+    pub fn friction_force<T: Real>(&self, snap: &Snapshot<T>) -> T {
+        let mut blocks = real::<T>(0.0);
+        for (b, acc) in self.blocks.iter().zip(&snap.centre_acc) {
+            blocks = blocks + acc[0] * b.mass;
+        }
+        (snap.a_g + snap.slip_acc) * self.building_mass() + blocks
     }
 
     /// The load interface `k` (0-based: 0 is the tower on the building)
@@ -268,16 +288,16 @@ impl Stack {
     /// its components along and normal to the supporting surface, and
     /// `M_k = Σ_{i≥k} (G_i − C_k) × m_i (G̈_i + g_e e_y) − Σ_{i≥k} J_i φ̈_i`
     /// (`φ` is clockwise positive, hence the minus).
-    pub fn interface_load(&self, snap: &Snapshot, k: usize) -> InterfaceLoad {
+    pub fn interface_load<T: Real>(&self, snap: &Snapshot<T>, k: usize) -> InterfaceLoad<T> {
         let pose = &snap.pose;
-        let mut force = [0.0, 0.0];
-        let mut moment = 0.0;
+        let mut force = [real::<T>(0.0), real(0.0)];
+        let mut moment = real::<T>(0.0);
         for i in k..self.len() {
             let block = &self.blocks[i];
-            let f = scale([snap.centre_acc[i][0], snap.centre_acc[i][1] + snap.g_e], block.mass);
-            force[0] += f[0];
-            force[1] += f[1];
-            moment += cross(sub(pose.centre[i], pose.base[k]), f) - block.inertia_centre * snap.rotation_acc[i];
+            let f = scale([snap.centre_acc[i][0], snap.centre_acc[i][1] + snap.g_e], real(block.mass));
+            force[0] = force[0] + f[0];
+            force[1] = force[1] + f[1];
+            moment = moment + (cross(sub(pose.centre[i], pose.base[k]), f) - snap.rotation_acc[i] * block.inertia_centre);
         }
         InterfaceLoad {
             tangential: dot(force, pose.tangent[k]),
@@ -291,9 +311,10 @@ impl Stack {
     /// need; block `k` then rocks on the corner `s_k = sgn M_k`. For one block
     /// standing on the ground (`M = −m (H/2) Ẍ_p`, `N = m g_e`) it is positive
     /// exactly when `|Ẍ_p| > g_e tan α`.
-    pub fn uplift_margin(&self, snap: &Snapshot, k: usize) -> (f64, f64) {
+    pub fn uplift_margin<T: Real>(&self, snap: &Snapshot<T>, k: usize) -> (T, f64) {
         let load = self.interface_load(snap, k);
-        (load.moment.abs() - load.normal * self.blocks[k].width / 2.0, load.moment.signum())
+        let corner = load.moment.value().signum();
+        (load.moment * corner - load.normal * (self.blocks[k].width / 2.0), corner)
     }
 
     /// The horizontal ground acceleration (m/s², in either direction) that

@@ -29,52 +29,60 @@
 //! rocking interfaces `k ≤ i` (a stuck one has `φ̇_k = φ̇_{k−1}` and adds nothing).
 
 use super::{Stack, StackRegime, StackState, MAX_BLOCKS};
+use crate::jet::Real;
 use crate::regime::BuildingRegime;
 use arrayvec::ArrayVec;
 
 /// The most coordinates a regime has: the slip and one per interface.
 pub const MAX_COORDINATES: usize = MAX_BLOCKS + 1;
 
-/// A plane vector `(x, y)`.
-pub type Vec2 = [f64; 2];
+/// A plane vector `(x, y)`, of plain numbers or of [`Jet`](crate::jet::Jet)s
+/// (values with their time derivatives).
+pub type Vec2<T = f64> = [T; 2];
 
 /// `R(φ) v`, given `(sin φ, cos φ)`.
 #[inline(always)]
-pub(crate) fn rotate((sin, cos): (f64, f64), v: Vec2) -> Vec2 {
+pub(crate) fn rotate<T: Real>((sin, cos): (T, T), v: Vec2<T>) -> Vec2<T> {
     [v[0] * cos + v[1] * sin, -v[0] * sin + v[1] * cos]
 }
 
 /// `J(w) = (w_y, −w_x)`: the velocity of the point `w` away from a centre of
 /// rotation per unit of clockwise angular velocity.
 #[inline(always)]
-pub(crate) fn turn(w: Vec2) -> Vec2 {
+pub(crate) fn turn<T: Real>(w: Vec2<T>) -> Vec2<T> {
     [w[1], -w[0]]
 }
 
 /// `a × b = a_x b_y − a_y b_x` (counter-clockwise positive).
 #[inline(always)]
-pub(crate) fn cross(a: Vec2, b: Vec2) -> f64 {
+pub(crate) fn cross<T: Real>(a: Vec2<T>, b: Vec2<T>) -> T {
     a[0] * b[1] - a[1] * b[0]
 }
 
 #[inline(always)]
-pub(crate) fn dot(a: Vec2, b: Vec2) -> f64 {
+pub(crate) fn dot<T: Real>(a: Vec2<T>, b: Vec2<T>) -> T {
     a[0] * b[0] + a[1] * b[1]
 }
 
 #[inline(always)]
-pub(crate) fn sub(a: Vec2, b: Vec2) -> Vec2 {
+pub(crate) fn sub<T: Real>(a: Vec2<T>, b: Vec2<T>) -> Vec2<T> {
     [a[0] - b[0], a[1] - b[1]]
 }
 
 #[inline(always)]
-pub(crate) fn add(a: Vec2, b: Vec2) -> Vec2 {
+pub(crate) fn add<T: Real>(a: Vec2<T>, b: Vec2<T>) -> Vec2<T> {
     [a[0] + b[0], a[1] + b[1]]
 }
 
 #[inline(always)]
-pub(crate) fn scale(a: Vec2, k: f64) -> Vec2 {
+pub(crate) fn scale<T: Real>(a: Vec2<T>, k: T) -> Vec2<T> {
     [a[0] * k, a[1] * k]
+}
+
+/// A number as a vector's component: `T::from(x)`.
+#[inline(always)]
+pub(crate) fn real<T: Real>(x: f64) -> T {
+    T::from(x)
 }
 
 /// One generalised coordinate.
@@ -143,26 +151,28 @@ impl Coordinates {
     }
 }
 
-/// Where every block is at one instant of one regime, and how fast it turns.
+/// Where every block is at one instant of one regime, and how fast it turns:
+/// of plain numbers, or of [`Jet`](crate::jet::Jet)s that carry each
+/// position's time derivative along the motion.
 #[derive(Debug, Clone)]
-pub struct Pose {
+pub struct Pose<T = f64> {
     n: usize,
     /// `s_k` of the rocking interfaces, `None` for the stuck ones.
     pub(crate) pivots: [Option<f64>; MAX_BLOCKS],
     /// Absolute rotation `φ_k`.
-    pub(crate) phi: [f64; MAX_BLOCKS],
+    pub(crate) phi: [T; MAX_BLOCKS],
     /// `φ̇_k`.
-    pub(crate) phi_dot: [f64; MAX_BLOCKS],
+    pub(crate) phi_dot: [T; MAX_BLOCKS],
     /// The unit normal `R(φ_{k−1}) e_y` of the surface block `k` stands on.
-    pub(crate) normal: [Vec2; MAX_BLOCKS],
+    pub(crate) normal: [Vec2<T>; MAX_BLOCKS],
     /// The unit tangent `R(φ_{k−1}) e_x` of that surface.
-    pub(crate) tangent: [Vec2; MAX_BLOCKS],
+    pub(crate) tangent: [Vec2<T>; MAX_BLOCKS],
     /// `C_k`.
-    pub(crate) base: [Vec2; MAX_BLOCKS],
+    pub(crate) base: [Vec2<T>; MAX_BLOCKS],
     /// `G_k`.
-    pub(crate) centre: [Vec2; MAX_BLOCKS],
+    pub(crate) centre: [Vec2<T>; MAX_BLOCKS],
     /// `O_k` (a rocking interface's only).
-    pub(crate) corner: [Vec2; MAX_BLOCKS],
+    pub(crate) corner: [Vec2<T>; MAX_BLOCKS],
 }
 
 impl Pose {
@@ -170,59 +180,9 @@ impl Pose {
     /// and `θ̇_k` are taken as 0 whatever the state holds).
     #[inline(always)]
     pub fn new(stack: &Stack, regime: &StackRegime, state: &StackState) -> Self {
-        let n = stack.len();
-        let mut pose = Self {
-            n,
-            pivots: [None; MAX_BLOCKS],
-            phi: [0.0; MAX_BLOCKS],
-            phi_dot: [0.0; MAX_BLOCKS],
-            normal: [[0.0, 1.0]; MAX_BLOCKS],
-            tangent: [[1.0, 0.0]; MAX_BLOCKS],
-            base: [[0.0; 2]; MAX_BLOCKS],
-            centre: [[0.0; 2]; MAX_BLOCKS],
-            corner: [[0.0; 2]; MAX_BLOCKS],
-        };
-        let (mut phi_below, mut phi_dot_below) = (0.0, 0.0);
-        let mut rot_below = (0.0, 1.0);
-        let mut base_below = [0.0, 0.0];
-        let mut height_below = 0.0;
-        for (k, block) in stack.blocks.iter().enumerate() {
-            pose.normal[k] = rotate(rot_below, [0.0, 1.0]);
-            pose.tangent[k] = rotate(rot_below, [1.0, 0.0]);
-            let (phi, phi_dot, rot, base) = match regime.interfaces[k].pivot() {
-                Some(p) => {
-                    let s = p.sign();
-                    pose.pivots[k] = Some(s);
-                    let phi = phi_below + state.theta[k];
-                    let rot = crate::trig::sin_cos(phi);
-                    let corner = add(base_below, rotate(rot_below, [s * block.width / 2.0, height_below]));
-                    pose.corner[k] = corner;
-                    (
-                        phi,
-                        phi_dot_below + state.theta_dot[k],
-                        rot,
-                        add(corner, rotate(rot, [-s * block.width / 2.0, 0.0])),
-                    )
-                }
-                None => (phi_below, phi_dot_below, rot_below, add(base_below, rotate(rot_below, [0.0, height_below]))),
-            };
-            pose.phi[k] = phi;
-            pose.phi_dot[k] = phi_dot;
-            pose.base[k] = base;
-            pose.centre[k] = add(base, rotate(rot, [0.0, block.height / 2.0]));
-            (phi_below, phi_dot_below, rot_below, base_below, height_below) = (phi, phi_dot, rot, base, block.height);
-        }
-        pose
+        Self::of(stack, regime, &state.theta, &state.theta_dot)
     }
 
-    /// The number of blocks.
-    pub fn len(&self) -> usize {
-        self.n
-    }
-    /// Never true.
-    pub fn is_empty(&self) -> bool {
-        self.n == 0
-    }
     /// `G_k` relative to `(X_p, 0)` (block index `k` 0-based).
     pub fn centre(&self, k: usize) -> Vec2 {
         self.centre[k]
@@ -236,41 +196,6 @@ impl Pose {
         self.phi[k]
     }
 
-    /// `∂P/∂q_c` for a point `p` of block `i`.
-    #[inline]
-    pub fn point_jacobian(&self, i: usize, p: Vec2, c: Coordinate) -> Vec2 {
-        match c {
-            Coordinate::Slip => [1.0, 0.0],
-            Coordinate::Theta(k) if k <= i => turn(sub(p, self.corner[k])),
-            Coordinate::Theta(_) => [0.0, 0.0],
-        }
-    }
-
-    /// `∂φ_i/∂q_c`.
-    #[inline]
-    pub fn rotation_jacobian(&self, i: usize, c: Coordinate) -> f64 {
-        match c {
-            Coordinate::Theta(k) if k <= i => 1.0,
-            _ => 0.0,
-        }
-    }
-
-    /// The velocity-squared part of `P̈` for a point `p` of block `i`:
-    /// `−Σ_k (φ̇_k² − φ̇_{k−1}²) (P − O_k)`.
-    #[inline]
-    pub fn point_quadratic(&self, i: usize, p: Vec2) -> Vec2 {
-        let mut acc = [0.0, 0.0];
-        let mut below = 0.0;
-        for k in 0..=i {
-            let now = self.phi_dot[k] * self.phi_dot[k];
-            if self.pivots[k].is_some() {
-                acc = sub(acc, scale(sub(p, self.corner[k]), now - below));
-            }
-            below = now;
-        }
-        acc
-    }
-
     /// The velocity of a point `p` of block `i` relative to the ground:
     /// `u̇ e_x + Σ_k θ̇_k J(P − O_k)`.
     pub fn point_velocity(&self, i: usize, p: Vec2, state: &StackState) -> Vec2 {
@@ -281,5 +206,106 @@ impl Pose {
             }
         }
         v
+    }
+}
+
+impl<T: Real> Pose<T> {
+    /// The pose at the rotations `θ_k` and their rates `θ̇_k` (of the rocking
+    /// interfaces; a stuck interface's are taken as 0).
+    #[inline(always)]
+    pub(crate) fn of(stack: &Stack, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS]) -> Self {
+        let (zero, one) = (real::<T>(0.0), real::<T>(1.0));
+        let n = stack.len();
+        let mut pose = Self {
+            n,
+            pivots: [None; MAX_BLOCKS],
+            phi: [zero; MAX_BLOCKS],
+            phi_dot: [zero; MAX_BLOCKS],
+            normal: [[zero, one]; MAX_BLOCKS],
+            tangent: [[one, zero]; MAX_BLOCKS],
+            base: [[zero; 2]; MAX_BLOCKS],
+            centre: [[zero; 2]; MAX_BLOCKS],
+            corner: [[zero; 2]; MAX_BLOCKS],
+        };
+        let (mut phi_below, mut phi_dot_below) = (zero, zero);
+        let mut rot_below = (zero, one);
+        let mut base_below = [zero, zero];
+        let mut height_below = 0.0;
+        for (k, block) in stack.blocks.iter().enumerate() {
+            pose.normal[k] = rotate(rot_below, [zero, one]);
+            pose.tangent[k] = rotate(rot_below, [one, zero]);
+            let (phi, phi_dot, rot, base) = match regime.interfaces[k].pivot() {
+                Some(p) => {
+                    let s = p.sign();
+                    pose.pivots[k] = Some(s);
+                    let phi = phi_below + theta[k];
+                    let rot = phi.sin_cos();
+                    let corner = add(base_below, rotate(rot_below, [real(s * block.width / 2.0), real(height_below)]));
+                    pose.corner[k] = corner;
+                    (
+                        phi,
+                        phi_dot_below + theta_dot[k],
+                        rot,
+                        add(corner, rotate(rot, [real(-s * block.width / 2.0), zero])),
+                    )
+                }
+                None => (
+                    phi_below,
+                    phi_dot_below,
+                    rot_below,
+                    add(base_below, rotate(rot_below, [zero, real(height_below)])),
+                ),
+            };
+            pose.phi[k] = phi;
+            pose.phi_dot[k] = phi_dot;
+            pose.base[k] = base;
+            pose.centre[k] = add(base, rotate(rot, [zero, real(block.height / 2.0)]));
+            (phi_below, phi_dot_below, rot_below, base_below, height_below) = (phi, phi_dot, rot, base, block.height);
+        }
+        pose
+    }
+
+    /// The number of blocks.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+    /// Never true.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// `∂P/∂q_c` for a point `p` of block `i`.
+    #[inline]
+    pub(crate) fn point_jacobian(&self, i: usize, p: Vec2<T>, c: Coordinate) -> Vec2<T> {
+        match c {
+            Coordinate::Slip => [real(1.0), real(0.0)],
+            Coordinate::Theta(k) if k <= i => turn(sub(p, self.corner[k])),
+            Coordinate::Theta(_) => [real(0.0), real(0.0)],
+        }
+    }
+
+    /// `∂φ_i/∂q_c`.
+    #[inline]
+    pub(crate) fn rotation_jacobian(&self, i: usize, c: Coordinate) -> f64 {
+        match c {
+            Coordinate::Theta(k) if k <= i => 1.0,
+            _ => 0.0,
+        }
+    }
+
+    /// The velocity-squared part of `P̈` for a point `p` of block `i`:
+    /// `−Σ_k (φ̇_k² − φ̇_{k−1}²) (P − O_k)`.
+    #[inline]
+    pub(crate) fn point_quadratic(&self, i: usize, p: Vec2<T>) -> Vec2<T> {
+        let mut acc = [real(0.0), real(0.0)];
+        let mut below = real(0.0);
+        for k in 0..=i {
+            let now = self.phi_dot[k] * self.phi_dot[k];
+            if self.pivots[k].is_some() {
+                acc = sub(acc, scale(sub(p, self.corner[k]), now - below));
+            }
+            below = now;
+        }
+        acc
     }
 }

@@ -4,25 +4,28 @@
 //! for one 7×7 solve.
 
 use super::geometry::MAX_COORDINATES;
+use crate::jet::Real;
 
 /// A square matrix of order `n <= MAX_COORDINATES`, row-major, padded.
-pub(crate) type Matrix = [[f64; MAX_COORDINATES]; MAX_COORDINATES];
+pub(crate) type Matrix<T = f64> = [[T; MAX_COORDINATES]; MAX_COORDINATES];
 
 /// Solves `a x = b` for the leading `n × n` block by elimination with partial
 /// pivoting, in place: `b` becomes `x`, `a` is overwritten. Returns the
-/// determinant of `a` (0 where a pivot vanishes, and then `x` is NaN).
+/// determinant of `a` (0 where a pivot vanishes, and then `x` is NaN). On
+/// [`Jet`](crate::jet::Jet)s the pivots are chosen on the values, and `x`
+/// carries the derivative of the solution; the determinant is the values'.
 #[inline]
-pub(crate) fn solve(a: &mut Matrix, b: &mut [f64; MAX_COORDINATES], n: usize) -> f64 {
+pub(crate) fn solve<T: Real>(a: &mut Matrix<T>, b: &mut [T; MAX_COORDINATES], n: usize) -> f64 {
     let mut det = 1.0;
     for col in 0..n {
         let mut best = col;
         for row in col + 1..n {
-            if a[row][col].abs() > a[best][col].abs() {
+            if a[row][col].value().abs() > a[best][col].value().abs() {
                 best = row;
             }
         }
-        if a[best][col] == 0.0 || !a[best][col].is_finite() {
-            *b = [f64::NAN; MAX_COORDINATES];
+        if a[best][col].value() == 0.0 || !a[best][col].value().is_finite() {
+            *b = [T::from(f64::NAN); MAX_COORDINATES];
             return 0.0;
         }
         if best != col {
@@ -31,21 +34,21 @@ pub(crate) fn solve(a: &mut Matrix, b: &mut [f64; MAX_COORDINATES], n: usize) ->
             det = -det;
         }
         let pivot = a[col][col];
-        det *= pivot;
+        det *= pivot.value();
         for row in col + 1..n {
             let factor = a[row][col] / pivot;
-            if factor != 0.0 {
+            if !factor.is_zero() {
                 for j in col..n {
-                    a[row][j] -= factor * a[col][j];
+                    a[row][j] = a[row][j] - factor * a[col][j];
                 }
-                b[row] -= factor * b[col];
+                b[row] = b[row] - factor * b[col];
             }
         }
     }
     for row in (0..n).rev() {
         let mut sum = b[row];
         for j in row + 1..n {
-            sum -= a[row][j] * b[j];
+            sum = sum - a[row][j] * b[j];
         }
         b[row] = sum / a[row][row];
     }
