@@ -78,7 +78,8 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         );
     }
 
-    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create the output folder {}", args.out.display()))?;
+    // Removed again (if this made it and it is still empty) when the merge fails.
+    let mut created = crate::output::CreatedFolders::create(&args.out)?;
     let _lock = FolderLock::take(&args.out)?;
     let target = args.out.join(name);
     if target.exists() {
@@ -142,6 +143,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     temp.persist_noclobber(&target)
         .map_err(|e| e.error)
         .with_context(|| format!("cannot write {}", target.display()))?;
+    created.keep();
     let mut written = vec![target.clone()];
     if first.kind == "inventory" {
         written.push(finish_inventory(&args.out, &target)?);

@@ -15,7 +15,9 @@
 //! are removed and the rest replaced; any other file in the folder (the
 //! user's own, the scenario itself) is left as it is. When a run fails or is
 //! cut short, the staging folder is removed and the folder keeps the earlier
-//! run's files untouched.
+//! run's files untouched; a folder the run created for its output (the
+//! output folder, a missing parent of it) is removed too, so that a refused
+//! run leaves the disk as it found it ([`CreatedFolders`]).
 
 use super::guard::is_input;
 use super::lock::FolderLock;
@@ -81,13 +83,15 @@ pub struct Staging {
     registered: Registered,
     staging: TempDir,
     inputs: Vec<PathBuf>,
+    // Removed after the staging folder when there is no commit.
+    created: CreatedFolders,
 }
 
 impl Staging {
     /// Creates `dir` if needed and an empty staging folder in it. `inputs`
     /// (the scenario, a record) are never removed, even under a known name.
     pub fn new(dir: &Path, inputs: &[PathBuf]) -> anyhow::Result<Self> {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+        let created = CreatedFolders::create(dir)?;
         let staging = tempfile::Builder::new()
             .prefix(STAGING_PREFIX)
             .tempdir_in(dir)
@@ -97,6 +101,7 @@ impl Staging {
             registered: Registered::new(staging.path()),
             staging,
             inputs: inputs.to_vec(),
+            created,
         })
     }
 
@@ -114,7 +119,7 @@ impl Staging {
     /// then moves this run's files into the folder (each rename is atomic),
     /// holding the folder's lock throughout: another run's commit comes
     /// wholly before or wholly after.
-    pub fn commit(self) -> anyhow::Result<()> {
+    pub fn commit(mut self) -> anyhow::Result<()> {
         let written: Vec<_> = std::fs::read_dir(self.folder())
             .with_context(|| format!("cannot read {}", self.folder().display()))?
             .filter_map(|e| e.ok().map(|e| e.file_name()))
@@ -141,7 +146,49 @@ impl Staging {
         }
         drop(lock);
         drop(held);
+        self.created.keep();
         Ok(())
+    }
+}
+
+/// The folders made for an output folder: it and its parents that did not
+/// exist, the outermost first. Dropped without [`CreatedFolders::keep`] (the
+/// run failed before writing anything), each is removed if it is still empty,
+/// the innermost first: a folder that was there before, or that holds a file
+/// another process put there meanwhile, is never removed.
+#[derive(Debug)]
+pub struct CreatedFolders(Vec<PathBuf>);
+
+impl CreatedFolders {
+    /// Creates the folder `dir` and its missing parents, noting those this call made.
+    pub fn create(dir: &Path) -> anyhow::Result<Self> {
+        let missing: Vec<&Path> = dir.ancestors().filter(|a| !a.as_os_str().is_empty()).take_while(|a| !a.is_dir()).collect();
+        let mut created = Self(Vec::new());
+        for folder in missing.into_iter().rev() {
+            match std::fs::create_dir(folder) {
+                Ok(()) => created.0.push(folder.to_path_buf()),
+                // Made by another process meanwhile: not this one's to remove.
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && folder.is_dir() => {}
+                Err(e) => return Err(e).with_context(|| format!("cannot create the output folder {}", dir.display())),
+            }
+        }
+        Ok(created)
+    }
+
+    /// Keeps the folders (the run wrote its files there).
+    pub fn keep(&mut self) {
+        self.0.clear();
+    }
+}
+
+impl Drop for CreatedFolders {
+    fn drop(&mut self) {
+        for folder in self.0.iter().rev() {
+            // `remove_dir` removes only an empty folder; one that is not stays, and so do its parents.
+            if std::fs::remove_dir(folder).is_err() {
+                break;
+            }
+        }
     }
 }
 
@@ -165,6 +212,27 @@ mod tests {
         // The stale figure is gone, the user's file stays, no staging folder is left.
         assert_eq!(names, ["notes.txt", "summary.json"]);
         assert_eq!(std::fs::read_to_string(dir.path().join("summary.json"))?, "new");
+        Ok(())
+    }
+
+    #[test]
+    fn only_the_folders_made_and_still_empty_are_removed() -> anyhow::Result<()> {
+        let dir = tempfile::tempdir()?;
+        let (outer, inner) = (dir.path().join("a"), dir.path().join("a/b/c"));
+        // Made and dropped: a/b/c, a/b and a are gone, the folder that was there stays.
+        drop(CreatedFolders::create(&inner)?);
+        assert!(!outer.exists() && dir.path().is_dir());
+        // A file put in a/ meanwhile keeps a/ (b/ and c/, empty, go).
+        let created = CreatedFolders::create(&inner)?;
+        std::fs::write(outer.join("notes.txt"), "mine")?;
+        drop(created);
+        assert!(outer.join("notes.txt").is_file() && !outer.join("b").exists());
+        // Kept: all stay; a folder that existed is never noted.
+        CreatedFolders::create(&inner)?.keep();
+        assert!(inner.is_dir());
+        std::fs::remove_dir(&inner)?;
+        drop(CreatedFolders::create(&outer.join("b"))?);
+        assert!(outer.join("b").is_dir());
         Ok(())
     }
 

@@ -9,7 +9,7 @@ mod history;
 mod lock;
 
 pub use events::write_events;
-pub use folder::Staging;
+pub use folder::{CreatedFolders, Staging};
 pub use guard::refuse_to_overwrite_inputs;
 pub use history::HistoryWriter;
 pub use lock::{FolderLock, LOCK_FILE};
