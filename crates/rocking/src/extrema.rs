@@ -144,6 +144,29 @@ pub(crate) fn hermite_range_reaches(q0: Jet, q1: Jet, h: f64, reaches: impl Fn((
     reaches(hermite_hull(q0, q1, h)) && hermite_range(q0, q1, h).is_some_and(reaches)
 }
 
+/// A step is searched for a peak of the top acceleration or of the pivot
+/// friction demand only if the cubic Hermite interpolant of the exact end
+/// values and slopes comes within this fraction of the running maximum (or
+/// `f_y` within this fraction of `g_e` of zero). The interpolant's error is
+/// `h⁴/384 max|q⁗|`, below 1e-3 of the quantity for the steps DOP853 takes
+/// on these smooth quantities (ten or more per period of the input or of the
+/// rocking), so a step it keeps 5% below cannot hold the peak. Transition
+/// conditions are never pruned this way.
+pub(crate) const PEAK_MARGIN: f64 = 0.05;
+
+/// Whether the cubic Hermite interpolant of a quantity's exact end values
+/// and slopes comes within [`PEAK_MARGIN`] of `peak`, the largest magnitude
+/// kept so far: if not, the step is not searched for a peak of it.
+pub(crate) fn near_peak(q0: Jet, q1: Jet, h: f64, peak: f64) -> bool {
+    hermite_range_reaches(q0, q1, h, |(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak)
+}
+
+/// An extremum matters if it can raise the maximum kept before the step (one
+/// kept during it is at least as high).
+pub(crate) fn above(peak: f64) -> impl Fn((f64, f64)) -> bool {
+    move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) > peak
+}
+
 /// Relative accuracy of a located extremum's value.
 const VALUE_RTOL: f64 = 1e-12;
 

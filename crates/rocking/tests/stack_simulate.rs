@@ -108,9 +108,9 @@ fn a_cap_that_cannot_rock_runs_as_one_block_through_simulate() {
             assert_eq!(stack.theta[1].to_bits(), 0.0f64.to_bits(), "the cap rocked");
             assert!(b.stack.is_none());
         }
-        // The peaks are located differently (the tower's on exact derivatives,
-        // the stack's at the ends of sixteenths of a step), θ's both by root
-        // finding: to the 1e-7 rad of the histories.
+        // The peaks are located on different integrations of the same motion
+        // (the engine's and the stack's steps), θ's both by root finding: to
+        // the 1e-7 rad of the histories.
         assert!((s_stack.max_abs_theta() - s_one.max_abs_theta()).abs() < 1e-7);
         let top = shaft_top(s_one.theta_range.0).abs().max(shaft_top(s_one.theta_range.1).abs());
         assert!((s_stack.max_top_displacement - top).abs() < 2e-6);

@@ -14,7 +14,7 @@
 use super::watch::Watched;
 use crate::condition::{pivot_sign, Condition};
 use crate::equations::Kernel;
-use crate::extrema::{hermite_range_reaches, matters_on_step, may_have_extremum, taylor_enclosure};
+use crate::extrema::{above, hermite_range_reaches, matters_on_step, may_have_extremum, near_peak, taylor_enclosure, PEAK_MARGIN};
 use crate::ground::Piece;
 use crate::jet::Jet;
 use crate::regime::{BuildingRegime, Regime, State, TowerRegime};
@@ -113,22 +113,6 @@ impl Screen {
     }
 }
 
-/// An extremum matters if it can raise the maximum kept before the step (one
-/// kept during it is at least as high).
-fn above(peak: f64) -> impl Fn((f64, f64)) -> bool {
-    move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) > peak
-}
-
-/// A step is searched for a peak of the top acceleration or of the pivot
-/// friction demand only if the cubic Hermite interpolant of the exact end
-/// values and slopes comes within this fraction of the running maximum (or
-/// `f_y` within this fraction of `g_e` of zero). The interpolant's error is
-/// `h⁴/384 max|q⁗|`, below 1e-3 of the quantity for the steps DOP853 takes
-/// on these smooth quantities (ten or more per period of the input or of the
-/// rocking), so a step it keeps 5% below cannot hold the peak. Transition
-/// conditions are never pruned this way.
-const PEAK_MARGIN: f64 = 0.05;
-
 /// Screens a step from its ends: which searches inside it are needed.
 /// `kept`: the peaks so far; `observed`: an observer wants the step.
 #[inline(always)]
@@ -159,7 +143,7 @@ pub(super) fn screen(e: &Ends, kept: Kept, observed: bool) -> Screen {
     // Asked here as well as inside `interior_extrema` (which keeps its own
     // contract for every caller): a step ruled out by its ends needs no dense
     // output (1.5 M of the sweep's 178 M instructions).
-    let near = |q0: Jet, q1: Jet, peak: f64| hermite_range_reaches(q0, q1, h, |(lo, hi)| lo.abs().max(hi.abs()) >= (1.0 - PEAK_MARGIN) * peak);
+    let near = |q0: Jet, q1: Jet, peak: f64| near_peak(q0, q1, h, peak);
     screen.top = e.rocking() && near(w0.top, w1.top, kept.max_top_abs_acceleration) && matters_on_step(e.t0, w0.top, e.t1, w1.top, screen.top_matters());
     // Once f_y has reached zero the demand is unbounded and the uplift
     // known: neither can change any more.

@@ -25,25 +25,28 @@
 //! extremes of `θ_k`, the roots of `θ̇_k` isolated on the dense output, and
 //! the end of a slip is bracketed by the first root of `u̇`; the uplift of a
 //! stuck interface and the slip of a sticking building, which need Kane's
-//! equations, are read at the ends of 16 equal parts of the step (one that
-//! holds only for a moment between two of those points is missed). The first
-//! bracket is narrowed by root finding; a condition on zero at the step's
-//! start (an impact, a stop of the slip) is armed where the motion has left
-//! it. The same extremes of `θ_k` give each block's peaks. Every step ends at
-//! the next kink of the ground motion.
+//! equations, are split into monotone parts at their extrema inside the
+//! step, located on their exact time derivatives (Kane's equations solved
+//! on jets, [`Instant`]) as the tower's stuck building's demand is (the
+//! search starts from the cubic Hermite interpolant of the exact end values
+//! and slopes, and a step where it shows no interior extremum is not
+//! searched). The first bracket is narrowed by root finding; a condition on
+//! zero at the step's start (an impact, a stop of the slip) is armed where
+//! the motion has left it. The same extremes of `θ_k` give each block's
+//! peaks. Every step ends at the next kink of the ground motion.
 
 use super::dynamics::Snapshot;
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::condition::Condition;
 use crate::engine::crossing::{extremes, first_crossing, first_root, leaving_point, OnZero, Points};
 use crate::error::Error;
-use crate::ground::GroundMotion;
+use crate::extrema::interior_extrema;
+use crate::ground::{GroundMotion, Piece};
 use crate::integrator::{find_crossing, find_crossing_newton, DenseOutput, Dop853, StepFailure};
-use crate::jet::Jet;
+use crate::jet::{Jet, Real};
 use crate::observer::Flow;
 use crate::regime::{BuildingRegime, Pivot, SlipDirection};
 use crate::simulate::impact_ends_at_rest;
-use std::borrow::Cow;
 use std::ops::ControlFlow;
 
 /// How a stack is run.
@@ -162,15 +165,6 @@ pub struct StackRun {
     pub evaluations: u64,
 }
 
-/// The end of the `j`-th of [`PARTS`] equal parts of `[t0, t1]`.
-pub(crate) fn part(t0: f64, t1: f64, j: usize) -> f64 {
-    if j == PARTS {
-        t1
-    } else {
-        t0 + (t1 - t0) * j as f64 / PARTS as f64
-    }
-}
-
 /// The regime the initial state puts the stack in: an interface leaning or
 /// turning rocks on the side it leans (or turns) to; a building moving slips.
 pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
@@ -187,18 +181,37 @@ pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
     regime
 }
 
-/// One instant of a step: its time, the state there and Kane's equations
-/// solved at it. The search for the transitions that need Kane's equations
-/// reads them at the ends of the parts of a step, and hands them on to the
-/// [`Hook`], which reads the summary's peaks at the same instants: one solve
-/// for both.
+/// One instant of a step seen with exact time slopes: the state there and
+/// Kane's equations solved on jets (`θ_k` with `θ̇_k`, `θ̇_k` with `θ̈_k`,
+/// `a_g` with `ȧ_g`), so that every quantity of the motion comes with its
+/// time derivative along it. The search for the transitions that need
+/// Kane's equations reads their conditions here, and the [`Hook`]'s peaks
+/// read the same solve.
+#[derive(Debug, Clone)]
 pub(crate) struct Instant {
-    /// Time (s).
-    pub(crate) t: f64,
     /// The state.
     pub(crate) state: StackState,
-    /// The motion there.
-    pub(crate) snap: Snapshot,
+    /// The motion there, with time derivatives.
+    pub(crate) snap: Snapshot<Jet>,
+}
+
+/// A stretch of smooth motion handed to the [`Hook`]: the accepted step
+/// `[t0, t1]`, the motion holding up to `reached` (its first transition, or
+/// `t1`).
+pub(crate) struct Stretch<'a> {
+    /// The step's start (s).
+    pub(crate) t0: f64,
+    /// The step's end (s).
+    pub(crate) t1: f64,
+    /// Where the motion of the regime ends in it (s).
+    pub(crate) reached: f64,
+    /// The state at any instant of the step.
+    pub(crate) at: &'a dyn Fn(f64) -> StackState,
+    /// The instants at the step's two ends, when the hook asked for them
+    /// ([`Hook::wants_instants`]).
+    pub(crate) ends: Option<(&'a Instant, &'a Instant)>,
+    /// An instant anywhere inside the step.
+    pub(crate) inside: &'a dyn Fn(f64) -> Instant,
 }
 
 /// Runs `stack` under the horizontal `ground` motion from `initial`.
@@ -210,10 +223,12 @@ pub fn run(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings:
 /// stretch of smooth motion and each regime change. Either may end the run
 /// (an observer's `ControlFlow::Break`).
 pub(crate) trait Hook {
-    /// The motion of `regime` over `[t0, t1]`, `at(t)` the state there;
-    /// `instants`: the ends of the [`PARTS`] equal parts of `[t0, t1]`
-    /// ([`part`]), when the search for transitions has read them there.
-    fn step(&mut self, _regime: &StackRegime, _at: &dyn Fn(f64) -> StackState, _t0: f64, _t1: f64, _instants: Option<&[Instant]>) -> Flow {
+    /// Whether [`Hook::step`] reads the instants at a step's ends.
+    fn wants_instants(&self) -> bool {
+        false
+    }
+    /// The motion of `regime` over a step.
+    fn step(&mut self, _regime: &StackRegime, _stretch: &Stretch) -> Flow {
         Flow::Continue(())
     }
     /// A regime change.
@@ -263,8 +278,8 @@ impl Watch {
         Some((k, OfTheta { condition, s }))
     }
 
-    /// Whether the condition needs Kane's equations (it is read at the ends
-    /// of the parts of a step).
+    /// Whether the condition needs Kane's equations (it is read on the
+    /// [`Instant`]s of a step).
     fn sampled(self) -> bool {
         matches!(self, Watch::Uplift(_) | Watch::Slip)
     }
@@ -297,10 +312,6 @@ impl OfTheta {
     }
 }
 
-/// Parts of a step at whose ends the conditions that need Kane's equations
-/// are read.
-pub(crate) const PARTS: usize = 16;
-
 struct Runner<'a, const S: usize> {
     stack: &'a Stack,
     ground: &'a GroundMotion,
@@ -332,10 +343,12 @@ impl<const S: usize> Runner<'_, S> {
         state
     }
 
-    fn rhs(&self, regime: &StackRegime, t: f64, y: &[f64; S]) -> [f64; S] {
+    /// The right-hand side of `regime` at `t`, the ground's acceleration from
+    /// `piece` (the step's: every step ends at the next kink of the input).
+    fn rhs(&self, regime: &StackRegime, piece: &Piece, t: f64, y: &[f64; S]) -> [f64; S] {
         let n = self.n();
         let state = self.unpack(y);
-        let (theta_ddot, slip_acc) = self.stack.accelerations(regime, &state, self.ground.acceleration(t), self.stack.gravity);
+        let (theta_ddot, slip_acc) = self.stack.accelerations(regime, &state, piece.eval(t), self.stack.gravity);
         let mut dy = [0.0; S];
         for k in 0..n {
             if regime.interfaces[k] != Interface::Stuck {
@@ -348,6 +361,26 @@ impl<const S: usize> Runner<'_, S> {
             dy[2 * n + 1] = slip_acc;
         }
         dy
+    }
+
+    /// The [`Instant`] at `t` in the state `y`, whose rate is `rate` (the
+    /// right-hand side there).
+    fn instant(&self, regime: &StackRegime, piece: &Piece, t: f64, y: &[f64; S], rate: &[f64; S]) -> Instant {
+        let n = self.n();
+        // Components `from … from + n` of the state, each with its rate.
+        let jets = |from: usize| -> [Jet; MAX_BLOCKS] { std::array::from_fn(|k| if k < n { Jet::new(y[from + k], rate[from + k]) } else { Jet::default() }) };
+        Instant {
+            state: self.unpack(y),
+            snap: self
+                .stack
+                .snapshot_of(regime, &jets(0), &jets(n), piece.eval_jet(t), Jet::from(self.stack.gravity)),
+        }
+    }
+
+    /// The [`Instant`] at `t` inside the step of `dense`.
+    fn instant_on(&self, regime: &StackRegime, piece: &Piece, dense: &DenseOutput<S>, t: f64) -> Instant {
+        let y = dense.state(t);
+        self.instant(regime, piece, t, &y, &self.rhs(regime, piece, t, &y))
     }
 
     fn watches(&self, regime: &StackRegime) -> arrayvec::ArrayVec<Watch, { 2 * MAX_BLOCKS + 1 }> {
@@ -369,35 +402,33 @@ impl<const S: usize> Runner<'_, S> {
         w
     }
 
-    /// The value of a watched condition: negative while its transition is not due.
-    fn value(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> f64 {
-        self.value_with(regime, watch, state, || Cow::Owned(self.snapshot(regime, t, state)))
-    }
-
-    /// Kane's equations of `regime` solved at `t` in `state`.
-    fn snapshot(&self, regime: &StackRegime, t: f64, state: &StackState) -> Snapshot {
-        self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity)
-    }
-
-    /// [`Runner::value`], `snap` giving Kane's equations solved at the instant
-    /// for the conditions that need them.
-    fn value_with<'s>(&self, regime: &StackRegime, watch: Watch, state: &StackState, snap: impl FnOnce() -> Cow<'s, Snapshot>) -> f64 {
+    /// The value of a watched condition: negative while its transition is not
+    /// due. `piece`: the ground motion's piece at `t`.
+    fn value(&self, regime: &StackRegime, piece: &Piece, watch: Watch, t: f64, state: &StackState) -> f64 {
         match watch {
             Watch::Impact(k) | Watch::Overturn(k) => match watch.of_theta(regime) {
                 Some((_, c)) => c.margin(state.theta[k], state.theta_dot[k]).0,
                 None => -1.0,
             },
-            Watch::Uplift(k) => self.stack.uplift_margin(&snap(), k).0,
-            Watch::Slip => {
-                let snap = snap();
-                let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
-                self.stack.friction_force(&snap).abs() - mu_s * self.stack.normal_force(&snap)
-            }
             Watch::Stop => match regime.building {
                 BuildingRegime::Slip(d) => -d.sign() * state.slip_vel,
                 BuildingRegime::Stick => -1.0,
             },
+            Watch::Uplift(_) | Watch::Slip => self.condition(watch, &self.stack.snapshot(regime, state, piece.eval(t), self.stack.gravity)),
         }
+    }
+
+    /// The value of a condition that needs Kane's equations ([`Watch::sampled`]),
+    /// from their solve `snap` (on plain numbers, or on jets for its slope):
+    /// the uplift of a stuck interface, else the slip of the sticking
+    /// building, `|F_req| − μs N`.
+    fn condition<T: Real>(&self, watch: Watch, snap: &Snapshot<T>) -> T {
+        if let Watch::Uplift(k) = watch {
+            return self.stack.uplift_margin(snap, k).0;
+        }
+        let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
+        let demand = self.stack.friction_force(snap);
+        demand * demand.value().signum() - self.stack.normal_force(snap) * mu_s
     }
 
     /// The building's regime at `u̇ = 0`: stuck if the friction it needs
@@ -474,7 +505,7 @@ impl<const S: usize> Runner<'_, S> {
         self.watches(regime).into_iter().find(|&w| match w {
             // Crossings, not conditions: they are due only when reached from the other side.
             Watch::Impact(_) | Watch::Stop => false,
-            _ => self.value(regime, w, t, state) > 0.0,
+            _ => self.value(regime, &self.ground.segment(t).piece, w, t, state) > 0.0,
         })
     }
 
@@ -492,45 +523,31 @@ impl<const S: usize> Runner<'_, S> {
         })
     }
 
-    /// Fills `instants` with those at the ends of the [`PARTS`] parts of the
-    /// step of `dense` ([`part`]).
-    fn instants(&self, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, instants: &mut Vec<Instant>) {
-        instants.clear();
-        for j in 1..=PARTS {
-            let t = part(t0, t1, j);
-            let state = self.unpack(&dense.state(t));
-            instants.push(Instant {
-                t,
-                state,
-                snap: self.snapshot(regime, t, &state),
-            });
-        }
-    }
-
     /// The earliest crossing of a watched condition inside the step of
-    /// `dense`, `theta_points` the extremes of each `θ_k` there, `instants`
-    /// those of [`Runner::instants`] (needed if a condition is sampled).
+    /// `dense`, `theta_points` the extremes of each `θ_k` there, `ends` the
+    /// [`Instant`]s at the step's ends if they were computed.
     fn first_crossing(
         &self,
         regime: &StackRegime,
+        piece: &Piece,
         dense: &DenseOutput<S>,
         (t0, t1): (f64, f64),
         theta_points: &[Points; MAX_BLOCKS],
-        instants: Option<&[Instant]>,
+        ends: Option<(&Instant, &Instant)>,
     ) -> Option<(Watch, f64)> {
         let n = self.n();
         let mut best: Option<(Watch, f64)> = None;
         for watch in self.watches(regime) {
-            let value = |t: f64| self.value(regime, watch, t, &self.unpack(&dense.state(t)));
+            let value = |t: f64| self.value(regime, piece, watch, t, &self.unpack(&dense.state(t)));
             let regula_falsi = |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb;
             let leaving = |ta, tb| leaving_point(&value, ta, tb);
+            let mut points = Points::default();
             let hit = if let Some((k, c)) = watch.of_theta(regime) {
                 // Monotone between the extremes of θ_k; narrowed by Newton on θ̇_k.
                 let at = |t: f64| {
                     let y = dense.state(t);
                     c.margin(y[k], y[n + k])
                 };
-                let mut points = Points::default();
                 points.push((t0, value(t0)));
                 for &(t, theta) in theta_points[k].as_slice() {
                     points.push((t, c.margin(theta, 0.0).0));
@@ -544,7 +561,6 @@ impl<const S: usize> Runner<'_, S> {
                 )
             } else if watch == Watch::Stop {
                 // `−σ u̇`: of one sign up to the first root of u̇.
-                let mut points = Points::default();
                 points.push((t0, value(t0)));
                 if let Some((ta, tb)) = first_root(dense, 2 * n + 1, t0, t1) {
                     points.push((ta, value(ta)));
@@ -553,17 +569,19 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t1, value(t1)));
                 first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
             } else {
-                let mut points = [(t0, value(t0)); PARTS + 1];
-                for (j, point) in points.iter_mut().enumerate().skip(1) {
-                    *point = match instants {
-                        Some(i) => (i[j - 1].t, self.value_with(regime, watch, &i[j - 1].state, || Cow::Borrowed(&i[j - 1].snap))),
-                        None => {
-                            let t = part(t0, t1, j);
-                            (t, value(t))
-                        }
-                    };
-                }
-                first_crossing(&points, watch.on_zero(), regula_falsi, leaving)
+                // Kane's conditions: monotone between their extrema, located
+                // on their exact slopes (the instants' jets). Only a maximum
+                // that may reach zero can hold a crossing the ends do not
+                // show: the others are not located.
+                let inside = |t: f64| self.condition(watch, &self.instant_on(regime, piece, dense, t).snap);
+                let (c0, c1) = match ends {
+                    Some((start, end)) => (self.condition(watch, &start.snap), self.condition(watch, &end.snap)),
+                    None => (inside(t0), inside(t1)),
+                };
+                points.push((t0, c0.v));
+                interior_extrema(t0, c0, t1, c1, &mut |t| inside(t), |(_, hi)| hi >= 0.0, &mut |t, v| points.push((t, v)));
+                points.push((t1, c1.v));
+                first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
             };
             if let Some(te) = hit {
                 if best.is_none_or(|(_, tb)| te < tb) {
@@ -598,7 +616,6 @@ impl<const S: usize> Runner<'_, S> {
         let mut t = 0.0;
         let mut next_sample = 0usize;
         let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
-        let mut instants = Vec::with_capacity(PARTS);
         'run: loop {
             // Switch at once while a condition already holds.
             let mut switches = 0;
@@ -619,8 +636,13 @@ impl<const S: usize> Runner<'_, S> {
             }
             let y = self.pack(&state);
             let current = regime;
-            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&current, t, y);
+            let piece = self.ground.segment(t).piece;
+            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&current, &piece, t, y);
             stepper.restart(&mut rhs, t, y, settings.duration);
+            // The instants at the steps' ends, for the conditions that need
+            // Kane's equations and for the hook; each step's end is the next one's start.
+            let wants_instants = hook.wants_instants() || self.watches(&regime).iter().any(|w| w.sampled());
+            let mut start = wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f));
             loop {
                 let bound = self.ground.segment(t).kink.min(settings.duration);
                 stepper.step(&mut rhs, bound).map_err(|e| match e {
@@ -632,19 +654,21 @@ impl<const S: usize> Runner<'_, S> {
                 })?;
                 let dense = stepper.dense(&mut rhs);
                 let (t0, t1) = (stepper.t_old, stepper.t);
+                let end = wants_instants.then(|| self.instant(&regime, &piece, t1, &stepper.y, &stepper.f));
+                let ends = start.as_ref().zip(end.as_ref());
                 let theta_points = self.theta_extremes(&regime, &dense, t0, t1);
-                // Kane's equations at the parts' ends, once for the sampled
-                // conditions and the hook's peaks.
-                let sampled = self.watches(&regime).iter().any(|w| w.sampled());
-                if sampled {
-                    self.instants(&regime, &dense, t0, t1, &mut instants);
-                }
-                let instants = sampled.then_some(&instants[..]);
-                let crossing = self.first_crossing(&regime, &dense, (t0, t1), &theta_points, instants);
+                let crossing = self.first_crossing(&regime, &piece, &dense, (t0, t1), &theta_points, ends);
                 let reached = crossing.map_or(t1, |(_, te)| te);
                 self.track_peaks(&mut out, &regime, &dense, t0, reached, &theta_points);
-                let whole_step = instants.filter(|_| crossing.is_none());
-                if let ControlFlow::Break(halt) = hook.step(&regime, &|t| self.unpack(&dense.state(t)), t0, reached, whole_step) {
+                let stretch = Stretch {
+                    t0,
+                    t1,
+                    reached,
+                    at: &|t| self.unpack(&dense.state(t)),
+                    ends,
+                    inside: &|t| self.instant_on(&regime, &piece, &dense, t),
+                };
+                if let ControlFlow::Break(halt) = hook.step(&regime, &stretch) {
                     return Err(Error::halted(halt, t0));
                 }
                 while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {
@@ -665,6 +689,7 @@ impl<const S: usize> Runner<'_, S> {
                     continue 'run;
                 }
                 state = self.unpack(&stepper.y);
+                start = end;
                 if t >= settings.duration {
                     break 'run;
                 }

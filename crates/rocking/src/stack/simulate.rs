@@ -8,21 +8,25 @@
 //! interface's state in [`Sample::stack`], and the usual [`Event`]s, each
 //! saying whose it is in [`Event::block`].
 //!
-//! Peaks are located as follows: the extremes of every `θ_k` at the roots of
-//! `θ̇_k` isolated on the dense output (`run.rs`, the engine's search); the
-//! top's acceleration, each interface's friction demand and the slip at the
-//! ends of the 16 equal parts of every step (Kane's equations solved there
-//! once, for these and the conditions read there, [`Instant`]) and at every
-//! event (a peak between two of those points is read lower by the curvature
-//! over a sixteenth of a step).
+//! Peaks are located as the tower's are: the extremes of every `θ_k` at the
+//! roots of `θ̇_k` isolated on the dense output (`run.rs`, the engine's
+//! search); the top's acceleration and each interface's friction demand at
+//! the ends of every step, at every event, and at the extrema inside a step
+//! located on their exact time derivatives (Kane's equations solved on jets,
+//! [`Instant`](super::run::Instant)), searched only where the cubic Hermite interpolant of the
+//! ends comes near the running maximum ([`PEAK_MARGIN`]) or, for the demand,
+//! where the interface's normal force falls low; the slip at the ends of
+//! every step and at every event (its extremes are the ends of a slip).
 
-use super::dynamics::Snapshot;
-use super::run::{part, run_with, BlockSummary, Hook, Instant, RunSettings, StackEvent, StackEventKind, PARTS};
+use super::dynamics::{InterfaceLoad, Snapshot};
+use super::run::{run_with, BlockSummary, Hook, RunSettings, StackEvent, StackEventKind, Stretch};
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::equations::Kernel;
 use crate::error::{Error, Parameter};
 use crate::event::{Event, EventKind};
+use crate::extrema::{above, hermite_range_reaches, interior_extrema, may_have_extremum, near_peak, PEAK_MARGIN};
 use crate::ground::{GroundMotion, Piece};
+use crate::jet::{Jet, Real};
 use crate::model::Model;
 use crate::observer::{Flow, Interpolant, Observer, Sample, StackSampler, Step};
 use crate::regime::{BuildingRegime, Pivot, Regime, State, TowerRegime};
@@ -195,32 +199,147 @@ fn sample(stack: &Stack, kernel: &Kernel, ground: &GroundMotion, regime: &StackR
     }
 }
 
+/// What the summary reads of the motion at an instant (on plain numbers, or
+/// on jets for the slopes): the tower's top acceleration and the load each
+/// interface carries.
+struct Peaks<T> {
+    top: T,
+    loads: [InterfaceLoad<T>; MAX_BLOCKS],
+}
+
+impl<T: Real> Peaks<T> {
+    /// The peaks of `snap`, Kane's equations solved in `regime`.
+    fn of(stack: &Stack, kernel: &Kernel, regime: &StackRegime, snap: &Snapshot<T>) -> Self {
+        let pose = &snap.pose;
+        let (_, top) = kernel.point_kinematics(
+            regime.interfaces[0].pivot().map(Pivot::sign),
+            (0.0, kernel.height),
+            pose.phi[0].sin_cos(),
+            pose.phi_dot[0],
+            snap.theta_ddot[0],
+            snap.a_g + snap.slip_acc,
+        );
+        let zero = T::from(0.0);
+        let mut loads = [InterfaceLoad {
+            tangential: zero,
+            normal: zero,
+            moment: zero,
+        }; MAX_BLOCKS];
+        for (k, load) in loads.iter_mut().enumerate().take(stack.len()) {
+            *load = stack.interface_load(snap, k);
+        }
+        Self { top, loads }
+    }
+}
+
 impl<O: Observer> Reporter<'_, O> {
     /// The peaks at one instant: the tower's rotation and top acceleration,
     /// the slip, and every interface's friction demand.
     fn instant(&mut self, regime: &StackRegime, state: &StackState, t: f64) {
         let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity());
-        self.instant_of(regime, state, &snap);
+        self.tracker.displacement(state.theta[0], state.slip);
+        self.read(&Peaks::of(self.stack, self.kernel, regime, &snap));
     }
 
-    /// [`Reporter::instant`] with Kane's equations solved there.
-    fn instant_of(&mut self, regime: &StackRegime, state: &StackState, snap: &Snapshot) {
-        self.tracker.displacement(state.theta[0], state.slip);
-        let (_, top) = self.kernel.point_kinematics(
-            regime.interfaces[0].pivot().map(Pivot::sign),
-            (0.0, self.kernel.height),
-            crate::trig::sin_cos(state.theta[0]),
-            state.theta_dot[0],
-            snap.theta_ddot[0],
-            snap.a_g + snap.slip_acc,
-        );
-        self.tracker.top(top);
+    /// Keeps the peaks of one instant.
+    fn read(&mut self, peaks: &Peaks<f64>) {
+        self.tracker.top(peaks.top);
         for k in 0..self.stack.len() {
-            let load = self.stack.interface_load(snap, k);
+            let load = peaks.loads[k];
             if k == 0 {
                 self.tracker.pivot(load.tangential, load.normal);
             }
             self.demand[k] = self.demand[k].max(load.friction_demand());
+        }
+    }
+
+    /// The values of `peaks` on jets.
+    fn values(peaks: &Peaks<Jet>) -> Peaks<f64> {
+        let value = |l: &InterfaceLoad<Jet>| InterfaceLoad {
+            tangential: l.tangential.v,
+            normal: l.normal.v,
+            moment: l.moment.v,
+        };
+        Peaks {
+            top: peaks.top.v,
+            loads: std::array::from_fn(|k| value(&peaks.loads[k])),
+        }
+    }
+
+    /// The peaks inside a step whose ends' peaks are `p0`, `p1`, up to
+    /// where its motion holds: each quantity's extrema located on its exact
+    /// slopes where one could raise what is kept (the tower's rule,
+    /// `engine::peaks`).
+    fn inside(&mut self, regime: &StackRegime, stretch: &Stretch, p0: &Peaks<Jet>, p1: &Peaks<Jet>) {
+        let (t0, t1, reached) = (stretch.t0, stretch.t1, stretch.reached);
+        let h = t1 - t0;
+        let (stack, kernel) = (self.stack, self.kernel);
+        let at = |t: f64| Peaks::of(stack, kernel, regime, &(stretch.inside)(t).snap);
+        let kept = self.tracker.summary.max_top_abs_acceleration;
+        if near_peak(p0.top, p1.top, h, kept) {
+            interior_extrema(t0, p0.top, t1, p1.top, &mut |t| at(t).top, above(kept), &mut |t, v| {
+                if t <= reached {
+                    self.tracker.top(v);
+                }
+            });
+        }
+        for k in 0..stack.len() {
+            if self.demand[k] == f64::INFINITY {
+                // The blocks above have lost contact: the demand has no finite maximum.
+                continue;
+            }
+            let weight = self.stack.gravity() * stack.blocks()[k..].iter().map(|b| b.mass()).sum::<f64>();
+            let (n0, n1) = (p0.loads[k].normal, p1.loads[k].normal);
+            let mut lost = false;
+            if hermite_range_reaches(n0, n1, h, |(lo, _)| lo <= PEAK_MARGIN * weight) {
+                interior_extrema(t0, n0, t1, n1, &mut |t| at(t).loads[k].normal, |(lo, _)| lo <= 0.0, &mut |t, v| {
+                    lost |= t <= reached && v <= 0.0;
+                });
+            }
+            if lost {
+                self.demand[k] = f64::INFINITY;
+                if k == 0 {
+                    self.tracker.reaction_lost();
+                }
+                continue;
+            }
+            if n0.v <= 0.0 || n1.v <= 0.0 {
+                continue;
+            }
+            // Near N = 0 the demand has a pole close by: every extremum matters there.
+            let low = n0.v.min(n1.v) < 0.5 * weight;
+            let ratio = |l: &InterfaceLoad<Jet>| l.tangential / l.normal;
+            let (r0, r1) = (ratio(&p0.loads[k]), ratio(&p1.loads[k]));
+            let kept = self.demand[k];
+            let searched = if low { may_have_extremum(r0, r1, h) } else { near_peak(r0, r1, h, kept) };
+            if searched {
+                let mut found = arrayvec::ArrayVec::<f64, 4>::new();
+                interior_extrema(
+                    t0,
+                    r0,
+                    t1,
+                    r1,
+                    &mut |t| ratio(&at(t).loads[k]),
+                    |range| low || above(kept)(range),
+                    &mut |t, _| {
+                        if t <= reached && !found.is_full() {
+                            found.push(t);
+                        }
+                    },
+                );
+                for t in found {
+                    let load = at(t).loads[k];
+                    let load = InterfaceLoad {
+                        tangential: load.tangential.v,
+                        normal: load.normal.v,
+                        moment: load.moment.v,
+                    };
+                    if k == 0 {
+                        self.tracker.pivot(load.tangential, load.normal);
+                    }
+                    self.demand[k] = self.demand[k].max(load.friction_demand());
+                }
+            }
         }
     }
 
@@ -236,22 +355,30 @@ impl<O: Observer> Reporter<'_, O> {
 }
 
 impl<O: Observer> Hook for Reporter<'_, O> {
-    fn step(&mut self, regime: &StackRegime, at: &dyn Fn(f64) -> StackState, t0: f64, t1: f64, instants: Option<&[Instant]>) -> Flow {
-        self.tracker.time(project(regime).motion(), t1 - t0);
-        match instants {
-            Some(instants) => {
-                for i in instants {
-                    self.instant_of(regime, &i.state, &i.snap);
-                }
-            }
-            None => {
-                for j in 1..=PARTS {
-                    let t = part(t0, t1, j);
-                    self.instant(regime, &at(t), t);
-                }
+    fn wants_instants(&self) -> bool {
+        true
+    }
+
+    fn step(&mut self, regime: &StackRegime, stretch: &Stretch) -> Flow {
+        let (t0, reached) = (stretch.t0, stretch.reached);
+        self.tracker.time(project(regime).motion(), reached - t0);
+        if let Some((start, end)) = stretch.ends {
+            let (p0, p1) = (
+                Peaks::of(self.stack, self.kernel, regime, &start.snap),
+                Peaks::of(self.stack, self.kernel, regime, &end.snap),
+            );
+            self.inside(regime, stretch, &p0, &p1);
+            if reached >= stretch.t1 {
+                self.tracker.displacement(end.state.theta[0], end.state.slip);
+                self.read(&Self::values(&p1));
             }
         }
-        self.last = (t1, *regime, at(t1));
+        if reached < stretch.t1 {
+            // The motion ends at a transition inside the step: its last instant.
+            self.instant(regime, &(stretch.at)(reached), reached);
+        }
+        let at = stretch.at;
+        self.last = (reached, *regime, at(reached));
         if self.observer.wants_steps() {
             let (stack, kernel, ground) = (self.stack, self.kernel, self.ground);
             let sampler = |t: f64| sample(stack, kernel, ground, regime, &at(t), t);
@@ -261,7 +388,7 @@ impl<O: Observer> Hook for Reporter<'_, O> {
                 vpiece: Piece::Constant(0.0),
                 interpolant: Interpolant::Constant(State::default()),
                 t0,
-                t1,
+                t1: reached,
                 regime: project(regime),
                 stack: Some(StackSampler(&sampler)),
             };
