@@ -19,7 +19,10 @@ use crate::site::Role;
 use crate::town::IDENTITY;
 use crate::RecordSet;
 use rocking_codes::LimitState;
-use rocking_scenario::{set_dotted, set_named_key, AssessmentFile, Cases, Cell, Code, GridCache, RecordCache, Row, SECTIONS};
+use rocking_scenario::{
+    block_names, closest, named_block_keys, set_dotted, set_named_key, AssessmentFile, BlockNames, Cases, Cell, Code, ErrorKind, GridCache, RecordCache, Row,
+    ASSESSMENT_KEY_DOCS, BLOCK, SCENARIO_KEYS, SECTIONS,
+};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -157,9 +160,36 @@ fn coordinate(row: &Line, file: &Path, name: &str, limit: f64) -> Result<f64, St
     })
 }
 
+/// The keys a column can set under `head` (a section of the scenario, or a
+/// block by its name): `tower.width`, …, `belfry.width`, … (`block`: every
+/// block's); `None` where `head` is another section (`assessment`, whose
+/// keys its parser checks) or none.
+fn keys_under(head: &str, blocks: &BlockNames) -> Option<Vec<String>> {
+    if head == BLOCK {
+        return Some(blocks.iter().flat_map(named_block_keys).collect());
+    }
+    if blocks.position(head).is_some() {
+        return Some(named_block_keys(head));
+    }
+    SECTIONS
+        .contains(&head)
+        .then(|| SCENARIO_KEYS.iter().filter(|k| k.section() == Some(head)).map(|k| k.key.to_string()).collect())
+}
+
+/// Every key a column can set in the assessment file (the scenario's but
+/// `[ground]`'s, its blocks' by their names, `[assessment]`'s): the
+/// candidates of a misspelt column's "did you mean".
+fn column_keys(blocks: &BlockNames) -> Vec<String> {
+    let sections = SECTIONS.iter().filter(|s| **s != "ground").filter_map(|s| keys_under(s, blocks));
+    let assessment = ASSESSMENT_KEY_DOCS.iter().map(|k| k.key).filter(|k| k.starts_with("assessment."));
+    sections.flatten().chain(assessment.map(String::from)).collect()
+}
+
 /// The assessment file's table with the row's cells set in it.
 fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
     let mut table = base.clone();
+    // The assessment file is valid by itself ([`Inventory::from_table`]): its blocks are well formed.
+    let blocks = block_names(base).unwrap_or_default();
     let site = match table.entry("site").or_insert_with(|| Value::Table(Table::new())) {
         Value::Table(t) => t,
         _ => return Err(row.fault(file, "site", "the assessment file's site is not a table")),
@@ -198,16 +228,25 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
         if !known && key.ends_with(".name") {
             return Err(row.fault(file, &given.name, "a block's name cannot be set per tower: its outputs are named by it"));
         }
+        // A misspelt key of a section or a block: the column's name suggested as the column would be written.
+        if let Some(valid) = keys_under(head, &blocks).filter(|v| !v.is_empty()) {
+            if !valid.iter().any(|k| k == key) {
+                return Err(row.fault(file, &given.name, ErrorKind::unknown_key(key, &valid)));
+            }
+        }
         if set_named_key(&mut table, key, value.clone()) {
             continue;
         }
         if !known {
+            let candidates = column_keys(&blocks);
+            let suggestion = closest(key, &candidates.iter().map(String::as_str).collect::<Vec<_>>()).map(|c| format!("; did you mean `{c}`?"));
             return Err(row.fault(
                 file,
                 &given.name,
                 format!(
-                    "`{head}` is no section of the assessment file ({}, site, assessment) and no block on its tower (a block's key is its name and the key: belfry.width)",
-                    SECTIONS.join(", ")
+                    "`{head}` is no section of the assessment file ({}, site, assessment) and no block on its tower (a block's key is its name and the key: belfry.width){}",
+                    SECTIONS.join(", "),
+                    suggestion.unwrap_or_default()
                 ),
             ));
         }

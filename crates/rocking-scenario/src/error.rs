@@ -87,17 +87,17 @@ pub enum ErrorKind {
     #[error("unknown key{}; valid keys: {}", did_you_mean(.suggestion), .valid.join(", "))]
     UnknownKey {
         /// The closest valid key, if one is close.
-        suggestion: Option<&'static str>,
-        /// The keys the section takes.
-        valid: Vec<&'static str>,
+        suggestion: Option<String>,
+        /// The keys the section takes (a block's by its name: `belfry.width`).
+        valid: Vec<String>,
     },
     /// A section the scenario does not have.
     #[error("unknown section{}; valid sections: {}", did_you_mean(.suggestion), .valid.join(", "))]
     UnknownSection {
         /// The closest valid section, if one is close.
-        suggestion: Option<&'static str>,
+        suggestion: Option<String>,
         /// The sections a scenario takes.
-        valid: Vec<&'static str>,
+        valid: Vec<String>,
     },
     /// A required key or section is absent.
     #[error("{0}")]
@@ -133,8 +133,27 @@ pub enum ErrorKind {
     Simulation(rocking::Error),
 }
 
-fn did_you_mean(s: &Option<&'static str>) -> String {
-    s.map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+impl ErrorKind {
+    /// `word` is none of the keys `valid`: the closest of them suggested, if one is close.
+    pub fn unknown_key<S: AsRef<str>>(word: &str, valid: &[S]) -> Self {
+        let (suggestion, valid) = suggested(word, valid);
+        Self::UnknownKey { suggestion, valid }
+    }
+    /// `word` is none of the sections `valid`: the closest of them suggested, if one is close.
+    pub fn unknown_section<S: AsRef<str>>(word: &str, valid: &[S]) -> Self {
+        let (suggestion, valid) = suggested(word, valid);
+        Self::UnknownSection { suggestion, valid }
+    }
+}
+
+/// The closest of `valid` to `word`, and `valid`, owned.
+fn suggested<S: AsRef<str>>(word: &str, valid: &[S]) -> (Option<String>, Vec<String>) {
+    let valid: Vec<&str> = valid.iter().map(AsRef::as_ref).collect();
+    (closest(word, &valid).map(str::to_string), valid.iter().map(|s| s.to_string()).collect())
+}
+
+fn did_you_mean(s: &Option<String>) -> String {
+    s.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
 }
 
 /// The scenario key of each parameter of the library: the key whose
@@ -181,8 +200,9 @@ pub(crate) fn io_reason(e: &std::io::Error) -> String {
     }
 }
 
-/// The closest of `candidates` to `word` within two edits, for "did you mean".
-pub(crate) fn closest(word: &str, candidates: &[&'static str]) -> Option<&'static str> {
+/// The closest of `candidates` to `word` within two edits (and fewer than the
+/// candidate's length), for "did you mean"; the first of the closest on a tie.
+pub fn closest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
     candidates
         .iter()
         .map(|&c| (edit_distance(word, c), c))

@@ -731,6 +731,17 @@ pub(crate) fn block_axis_key(key: &str, names: &crate::block::BlockNames) -> Opt
     Some(format!("{}.{rest}", crate::block::BLOCK))
 }
 
+/// The keys of the block named `name` as a sweep's axis or an inventory's
+/// column gives them (`belfry.width`), in table order; not its `name`, which
+/// names its outputs and cannot be set so.
+pub fn named_block_keys(name: &str) -> Vec<String> {
+    SCENARIO_KEYS
+        .iter()
+        .filter(|k| k.section() == Some(crate::block::BLOCK) && k.is_sweepable() && k.name() != "name")
+        .map(|k| format!("{name}.{}", k.name()))
+        .collect()
+}
+
 /// The keys a sweep can vary, in table order: the scalar keys (every one but
 /// lists and tables), those of `[ground]` again for the vertical motion where
 /// the table `ground.vertical` stands.

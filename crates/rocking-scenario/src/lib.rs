@@ -110,11 +110,11 @@ pub use assessment::{
     DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS,
     KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, SITE_KEYS,
 };
-pub use block::{set_named_key, BlockNames, BLOCK, MAX_ABOVE};
+pub use block::{names as block_names, set_named_key, BlockNames, BLOCK, MAX_ABOVE};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
-pub use error::{key_of, Error, ErrorKind, Fault};
+pub use error::{closest, key_of, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordCache, RecordInfo, ACCELERATION_UNITS};
-pub use keys::{describe_key, keys_json, keys_markdown, KeyDoc, KeyKind, KeyRef, SCENARIO_KEYS, VERTICAL_PREFIX};
+pub use keys::{describe_key, keys_json, keys_markdown, named_block_keys, KeyDoc, KeyKind, KeyRef, SCENARIO_KEYS, VERTICAL_PREFIX};
 pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};

@@ -3,7 +3,7 @@
 //! Every getter names the dotted key in its error; integers are accepted where
 //! a number is expected (`width = 4`).
 
-use crate::error::{closest, ErrorKind, Fault};
+use crate::error::{ErrorKind, Fault};
 use toml::{Table, Value};
 
 /// One table of the scenario (`[tower]`), read key by key.
@@ -59,13 +59,7 @@ impl<'a> Section<'a> {
     /// Rejects every key not in `valid`, naming it and listing the valid ones.
     pub(crate) fn only(&self, valid: &[&'static str]) -> Result<(), Fault> {
         match self.table.keys().find(|k| !valid.contains(&k.as_str())) {
-            Some(k) => Err(Fault::new(
-                self.key(k),
-                ErrorKind::UnknownKey {
-                    suggestion: closest(k, valid),
-                    valid: valid.to_vec(),
-                },
-            )),
+            Some(k) => Err(Fault::new(self.key(k), ErrorKind::unknown_key(k, valid))),
             None => Ok(()),
         }
     }

@@ -112,17 +112,11 @@ impl Scenario {
                 continue;
             }
             let kind = if value.is_table() {
-                ErrorKind::UnknownSection {
-                    suggestion: crate::error::closest(key, SECTIONS),
-                    valid: SECTIONS.to_vec(),
-                }
+                ErrorKind::unknown_section(key, SECTIONS)
             } else {
                 let mut valid = TOP_LEVEL_KEYS.to_vec();
                 valid.extend(SECTIONS.iter().copied());
-                ErrorKind::UnknownKey {
-                    suggestion: crate::error::closest(key, &valid),
-                    valid,
-                }
+                ErrorKind::unknown_key(key, &valid)
             };
             return Err(Fault::new(key, kind));
         }

@@ -15,7 +15,7 @@ pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, Spect
 pub use keys::ASSESSMENT_KEY_DOCS;
 pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
 
-use crate::error::{closest, ErrorKind, Fault};
+use crate::error::{ErrorKind, Fault};
 use crate::read::{as_number, non_negative, positive, with_article, Section};
 use crate::{Error, DEFAULT_G};
 use rocking::{CsvOptions, Record, RecordFormat};
@@ -136,13 +136,7 @@ impl AssessmentFile {
         valid.extend(crate::TOP_LEVEL_KEYS.iter().copied());
         valid.extend(ASSESSMENT_SECTIONS);
         if let Some(k) = table.keys().find(|k| !valid.contains(&k.as_str())) {
-            return Err(Fault::new(
-                k.clone(),
-                ErrorKind::UnknownSection {
-                    suggestion: closest(k, &valid),
-                    valid,
-                },
-            ));
+            return Err(Fault::new(k.clone(), ErrorKind::unknown_section(k, &valid)));
         }
         let site = match table.remove("site") {
             Some(v) => site::parse(&v, &folder, grids)?,
@@ -366,13 +360,7 @@ fn given_records(items: &[Value]) -> Result<Vec<SetEntry>, Fault> {
             ));
         };
         if let Some(k) = t.keys().find(|k| !["name", "text"].contains(&k.as_str())) {
-            return Err(Fault::new(
-                format!("{key}.{k}"),
-                ErrorKind::UnknownKey {
-                    suggestion: closest(k, &["name", "text"]),
-                    valid: vec!["name", "text"],
-                },
-            ));
+            return Err(Fault::new(format!("{key}.{k}"), ErrorKind::unknown_key(k, &["name", "text"])));
         }
         let string = |k: &str| match t.get(k) {
             None => Err(Fault::new(

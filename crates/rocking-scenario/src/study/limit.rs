@@ -3,7 +3,7 @@
 //! the number of limit states × levels, not cases.
 
 use super::fit::{fit_until, Fit, Stripe};
-use crate::error::{closest, ErrorKind, Fault};
+use crate::error::{ErrorKind, Fault};
 use crate::read::{as_number, with_article};
 use crate::{Cell, Row};
 use std::sync::atomic::AtomicBool;
@@ -132,13 +132,7 @@ pub(crate) fn parse(value: Option<&Value>, template: &[(String, Cell)]) -> Resul
             ));
         };
         if let Some(k) = t.keys().find(|k| !KEYS.contains(&k.as_str())) {
-            return Err(Fault::new(
-                at(k),
-                ErrorKind::UnknownKey {
-                    suggestion: closest(k, KEYS),
-                    valid: KEYS.to_vec(),
-                },
-            ));
+            return Err(Fault::new(at(k), ErrorKind::unknown_key(k, KEYS)));
         }
         let string = |k: &str| match t.get(k) {
             Some(Value::String(s)) if !s.is_empty() => Ok(s.clone()),

@@ -125,13 +125,7 @@ impl Study {
             )));
         }
         if let Some(k) = study.keys().find(|k| !STUDY_KEYS.contains(&k.as_str())) {
-            return Err(fail(Fault::new(
-                format!("study.{k}"),
-                ErrorKind::UnknownKey {
-                    suggestion: closest(k, STUDY_KEYS),
-                    valid: STUDY_KEYS.to_vec(),
-                },
-            )));
+            return Err(fail(Fault::new(format!("study.{k}"), ErrorKind::unknown_key(k, STUDY_KEYS))));
         }
         // The fields of the study's runs: with blocks on the tower, the stack's and each block's.
         let layout = crate::columns::Layout {

@@ -2,7 +2,7 @@
 //! or as an evenly spaced range (docs/src/reference/keys.md, "[sweep]"); the rules are on [`AxisSpec`].
 
 use crate::block::BlockNames;
-use crate::error::{closest, ErrorKind, Fault};
+use crate::error::{ErrorKind, Fault};
 use crate::keys::KeyKind;
 use crate::read::{as_number, with_article};
 use std::sync::LazyLock;
@@ -130,6 +130,10 @@ pub(crate) fn check_key(key: &str) -> Result<KeyType, Fault> {
 /// As [`check_key`], taking also the keys of the blocks named in `blocks`
 /// (`belfry.width`), but not their names.
 pub(crate) fn check_key_with(key: &str, blocks: &BlockNames) -> Result<KeyType, Fault> {
+    // `block.width` would be every block's width and none: a block's key is its name's.
+    if key.split_once('.').is_some_and(|(s, _)| s == crate::block::BLOCK) {
+        return Err(unknown_key(key, blocks));
+    }
     let described = crate::keys::block_axis_key(key, blocks);
     if described.as_deref() == Some("block.name") {
         return Err(Fault::invalid(axis_name(key), "a block's name cannot be swept (its outputs are named by it)"));
@@ -152,22 +156,33 @@ pub(crate) fn check_key_with(key: &str, blocks: &BlockNames) -> Result<KeyType, 
             ErrorKind::Invalid(format!("is a section, not a scalar key: sweep one of its keys (\"{key}.…\")")),
         ));
     }
-    let section = key.split_once('.').map(|(s, _)| s);
-    let valid: Vec<&'static str> = match section {
-        Some(s) if crate::scenario::SECTIONS.contains(&s) => SWEEPABLE_KEYS
+    Err(unknown_key(key, blocks))
+}
+
+/// `key` is no key a sweep can vary on a tower carrying `blocks`: the keys of
+/// the section or the block it names, else every key (the blocks' after the
+/// tower's, as the key reference orders them), with the closest suggested.
+fn unknown_key(key: &str, blocks: &BlockNames) -> Fault {
+    let of_blocks = || blocks.iter().flat_map(crate::keys::named_block_keys);
+    let valid: Vec<String> = match key.split_once('.').map(|(s, _)| s) {
+        Some(crate::block::BLOCK) if !blocks.is_empty() => of_blocks().collect(),
+        Some(s) if s != crate::block::BLOCK && crate::scenario::SECTIONS.contains(&s) => SWEEPABLE_KEYS
             .iter()
-            .copied()
             .filter(|k| k.split_once('.').is_some_and(|(p, _)| p == s))
+            .map(|k| k.to_string())
             .collect(),
-        _ => SWEEPABLE_KEYS.to_vec(),
+        Some(s) if blocks.position(s).is_some() => crate::keys::named_block_keys(s),
+        _ => {
+            let (tower, others): (Vec<&str>, Vec<&str>) = SWEEPABLE_KEYS.iter().partition(|k| **k == "name" || k.starts_with("tower."));
+            tower
+                .into_iter()
+                .map(String::from)
+                .chain(of_blocks())
+                .chain(others.into_iter().map(String::from))
+                .collect()
+        }
     };
-    Err(Fault::new(
-        name,
-        ErrorKind::UnknownKey {
-            suggestion: closest(key, &valid),
-            valid,
-        },
-    ))
+    Fault::new(axis_name(key), ErrorKind::unknown_key(key, &valid))
 }
 
 impl AxisSpec {
@@ -182,13 +197,7 @@ impl AxisSpec {
             Value::Table(t) => {
                 const FIELDS: &[&str] = &["from", "to", "steps", "step"];
                 if let Some(k) = t.keys().find(|k| !FIELDS.contains(&k.as_str())) {
-                    return Err(Fault::new(
-                        format!("{name}.{k}"),
-                        ErrorKind::UnknownKey {
-                            suggestion: closest(k, FIELDS),
-                            valid: FIELDS.to_vec(),
-                        },
-                    ));
+                    return Err(Fault::new(format!("{name}.{k}"), ErrorKind::unknown_key(k, FIELDS)));
                 }
                 let number = |field: &str| -> Result<f64, Fault> {
                     let fkey = format!("{name}.{field}");
