@@ -203,7 +203,7 @@ pub(crate) enum OnZero {
 impl OnZero {
     /// How `c` is taken on zero at a step's start; `fell_back`: the tower
     /// fell straight back at that instant.
-    pub(super) fn of(c: Condition, fell_back: bool) -> Self {
+    pub(crate) fn of(c: Condition, fell_back: bool) -> Self {
         if c.departs_from_zero() {
             OnZero::Departs
         } else if fell_back && c.lifts() {

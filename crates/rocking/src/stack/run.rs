@@ -265,34 +265,38 @@ enum Watch {
 }
 
 impl Watch {
+    /// The tower's condition of the same kind (an uplift or a slip whatever
+    /// its side: the stack watches `|M_k|` and `|F_req|`), whose rules it
+    /// follows: which conditions are of θ alone, and which depart from zero.
+    fn kind(self) -> Condition {
+        match self {
+            Watch::Impact(_) => Condition::Impact,
+            Watch::Overturn(_) => Condition::Overturn,
+            Watch::Uplift(_) => Condition::UpliftPositive,
+            Watch::Slip => Condition::SlipPositive,
+            Watch::Stop => Condition::SlipStop,
+        }
+    }
+
     /// The condition as one of `θ_k` alone, if it is: the tower's impact or
     /// overturning ([`Condition::theta_margin`]) on the corner `s_k` the
     /// interface rocks on.
     fn of_theta(self, regime: &StackRegime) -> Option<(usize, OfTheta)> {
-        let (k, condition) = match self {
-            Watch::Impact(k) => (k, Condition::Impact),
-            Watch::Overturn(k) => (k, Condition::Overturn),
-            _ => return None,
-        };
+        let (Watch::Impact(k) | Watch::Overturn(k)) = self else { return None };
         let s = regime.interfaces[k].pivot().map_or(0.0, Pivot::sign);
-        Some((k, OfTheta { condition, s }))
+        Some((k, OfTheta { condition: self.kind(), s }))
     }
 
     /// Whether the condition needs Kane's equations (it is read on the
-    /// [`Instant`]s of a step).
+    /// [`Instant`]s of a step): neither of θ alone nor the end of a slip.
     fn sampled(self) -> bool {
-        matches!(self, Watch::Uplift(_) | Watch::Slip)
+        !self.kind().of_theta() && self != Watch::Stop
     }
 
-    /// How the condition is taken on zero at a step's start: the impact
-    /// (`θ_k = 0` after an uplift or an impact) and the end of a slip (`u̇ = 0`
-    /// when it starts) depart from zero, as the tower's
-    /// ([`crate::condition::Condition::departs_from_zero`]).
+    /// How the condition is taken on zero at a step's start: as the tower's
+    /// ([`OnZero::of`]; a stacked block never falls straight back).
     fn on_zero(self) -> OnZero {
-        match self {
-            Watch::Impact(_) | Watch::Stop => OnZero::Departs,
-            _ => OnZero::Grows,
-        }
+        OnZero::of(self.kind(), false)
     }
 }
 
