@@ -39,18 +39,18 @@ use arrayvec::ArrayVec;
 /// The kinematics of one instant in one set of coordinates: the pose, and for
 /// each block `∂G_i/∂q`, `∂φ_i/∂q` and the velocity-squared part of `G̈_i`.
 #[derive(Debug, Clone)]
-pub struct Frame<T = f64> {
+pub struct Frame<'p, T = f64> {
     /// The coordinates.
     pub coords: Coordinates,
     /// Where the blocks are.
-    pub pose: Pose<T>,
+    pub pose: &'p Pose<T>,
     pub(crate) quad: [Vec2<T>; MAX_BLOCKS],
 }
 
-impl<T: Real> Frame<T> {
+impl<'p, T: Real> Frame<'p, T> {
     /// The frame of `pose` in `coords`.
     #[inline(always)]
-    pub(crate) fn new(coords: Coordinates, pose: Pose<T>) -> Self {
+    pub(crate) fn new(coords: Coordinates, pose: &'p Pose<T>) -> Self {
         let mut quad = [[real(0.0); 2]; MAX_BLOCKS];
         for (i, q) in quad.iter_mut().enumerate().take(pose.len()) {
             *q = pose.point_quadratic(i, pose.centre[i]);
@@ -58,8 +58,9 @@ impl<T: Real> Frame<T> {
         Self { coords, pose, quad }
     }
 
-    /// `∂G_i/∂q_a`. Computed where it is used: a few operations, cheaper
-    /// than storing a table of them at every evaluation.
+    /// `∂G_i/∂q_a` (0 for `a ≥ coords.moving(i)`). Computed where it is
+    /// used: a few operations, cheaper than storing a table of them at every
+    /// evaluation.
     #[inline(always)]
     pub(crate) fn jac(&self, i: usize, a: usize) -> Vec2<T> {
         self.pose.point_jacobian(i, self.pose.centre[i], self.coords.list()[a])
@@ -139,20 +140,21 @@ impl InterfaceLoad {
 impl Stack {
     /// Mass matrix and forces `M q̈ = f` of Kane's equations for `frame`,
     /// including the foundation's kinetic friction when `coords` has the slip
-    /// (`sigma` its direction).
+    /// (`sigma` its direction), in the leading `n × n` block of matrices of
+    /// order `C ≥ n` (`n` the number of coordinates). Block `i` enters only
+    /// the rows and columns of the coordinates that move it: the others'
+    /// partials are exact zeros.
     #[inline]
-    pub(crate) fn kane_system<T: Real>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T, m: &mut Matrix<T>, f: &mut [T; MAX_COORDINATES]) {
-        let coords = frame.coords.list();
-        let n = coords.len();
-        for row in m.iter_mut().take(n) {
-            row[..n].fill(real(0.0));
-        }
-        f[..n].fill(real(0.0));
+    pub(crate) fn kane_system<T: Real, const C: usize>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T) -> (Matrix<T, C>, [T; C]) {
+        let n = frame.coords.len();
+        let mut m: Matrix<T, C> = [[real(0.0); C]; C];
+        let mut f = [real(0.0); C];
         let m1 = self.building_mass();
         for (i, block) in self.blocks.iter().enumerate() {
             let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
-            for a in 0..n {
-                for b in a..n {
+            let moving = frame.coords.moving(i);
+            for a in 0..moving {
+                for b in a..moving {
                     let inertia: T = real(block.inertia_centre * frame.rot(i, a) * frame.rot(i, b));
                     m[a][b] = m[a][b] + (dot(frame.jac(i, a), frame.jac(i, b)) * block.mass + inertia);
                 }
@@ -173,7 +175,7 @@ impl Stack {
                 let mut rest = weight;
                 for (i, block) in self.blocks.iter().enumerate() {
                     rest = rest + frame.quad[i][1] * block.mass;
-                    for b in 0..n {
+                    for b in 0..frame.coords.moving(i) {
                         m[u][b] = m[u][b] + frame.jac(i, b)[1] * (friction * block.mass);
                     }
                 }
@@ -182,6 +184,7 @@ impl Stack {
                 f[u] = f[u] - weight * friction;
             }
         }
+        (m, f)
     }
 
     pub(crate) fn dynamic_normal_force(&self) -> bool {
@@ -197,10 +200,29 @@ impl Stack {
             BuildingRegime::Slip(d) => d.sign(),
             BuildingRegime::Stick => 0.0,
         };
-        let mut m: Matrix<T> = [[real(0.0); MAX_COORDINATES]; MAX_COORDINATES];
-        let mut q_ddot = [real(0.0); MAX_COORDINATES];
-        self.kane_system(frame, sigma, a_g, g_e, &mut m, &mut q_ddot);
-        if solve(&mut m, &mut q_ddot, frame.coords.len()) > 0.0 {
+        // The system's order as a constant, so that its loops are unrolled and
+        // free of bounds checks: a third fewer instructions per evaluation of
+        // two rocking blocks than one padded system for every order.
+        match frame.coords.len() {
+            0 => [real(0.0); MAX_COORDINATES],
+            1 => self.solve_kane_of::<T, 1>(frame, sigma, a_g, g_e),
+            2 => self.solve_kane_of::<T, 2>(frame, sigma, a_g, g_e),
+            3 => self.solve_kane_of::<T, 3>(frame, sigma, a_g, g_e),
+            4 => self.solve_kane_of::<T, 4>(frame, sigma, a_g, g_e),
+            5 => self.solve_kane_of::<T, 5>(frame, sigma, a_g, g_e),
+            6 => self.solve_kane_of::<T, 6>(frame, sigma, a_g, g_e),
+            _ => self.solve_kane_of::<T, MAX_COORDINATES>(frame, sigma, a_g, g_e),
+        }
+    }
+
+    /// [`Stack::solve_kane`] in matrices of order `C` (the number of
+    /// coordinates or more), `q̈` padded with zeros.
+    #[inline]
+    fn solve_kane_of<T: Real, const C: usize>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
+        let (mut m, mut q) = self.kane_system::<T, C>(frame, sigma, a_g, g_e);
+        if solve(&mut m, &mut q, frame.coords.len()) > 0.0 {
+            let mut q_ddot = [real(0.0); MAX_COORDINATES];
+            q_ddot[..C].copy_from_slice(&q);
             q_ddot
         } else {
             [real(f64::NAN); MAX_COORDINATES]
@@ -212,7 +234,8 @@ impl Stack {
     /// [`Stack::snapshot`].
     #[inline]
     pub fn accelerations(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
-        let frame = Frame::new(Coordinates::of(self, regime), Pose::new(self, regime, state));
+        let pose = Pose::new(self, regime, state);
+        let frame = Frame::new(Coordinates::of(self, regime), &pose);
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
         split(&frame.coords, &q_ddot)
     }
@@ -231,15 +254,15 @@ impl Stack {
     /// the motion.
     #[inline]
     pub(crate) fn snapshot_of<T: Real>(&self, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> Snapshot<T> {
-        let frame = Frame::new(Coordinates::of(self, regime), Pose::of(self, regime, theta, theta_dot));
-        let n = frame.coords.len();
+        let pose = Pose::of(self, regime, theta, theta_dot);
+        let frame = Frame::new(Coordinates::of(self, regime), &pose);
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
         let (theta_ddot, slip_acc) = split(&frame.coords, &q_ddot);
         let mut centre_acc = [[real(0.0); 2]; MAX_BLOCKS];
         let mut rotation_acc = [real(0.0); MAX_BLOCKS];
         for i in 0..self.len() {
             let mut acc = [a_g + frame.quad[i][0], frame.quad[i][1]];
-            for a in 0..n {
+            for a in 0..frame.coords.moving(i) {
                 acc[0] = acc[0] + frame.jac(i, a)[0] * q_ddot[a];
                 acc[1] = acc[1] + frame.jac(i, a)[1] * q_ddot[a];
                 rotation_acc[i] = rotation_acc[i] + q_ddot[a] * frame.rot(i, a);
@@ -247,7 +270,7 @@ impl Stack {
             centre_acc[i] = acc;
         }
         Snapshot {
-            pose: frame.pose,
+            pose,
             theta_ddot,
             slip_acc,
             centre_acc,

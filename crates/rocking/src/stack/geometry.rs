@@ -99,6 +99,8 @@ pub enum Coordinate {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Coordinates {
     list: ArrayVec<Coordinate, MAX_COORDINATES>,
+    /// How many of them (the first ones) move block `i`.
+    moving: [usize; MAX_BLOCKS],
 }
 
 impl Coordinates {
@@ -112,6 +114,7 @@ impl Coordinates {
     #[inline]
     pub fn with_slip(stack: &Stack, regime: &StackRegime, slip: bool) -> Self {
         let mut list = ArrayVec::new();
+        let mut moving = [0; MAX_BLOCKS];
         if slip {
             list.push(Coordinate::Slip);
         }
@@ -119,8 +122,9 @@ impl Coordinates {
             if regime.interfaces[k].pivot().is_some() {
                 list.push(Coordinate::Theta(k));
             }
+            moving[k] = list.len();
         }
-        Self { list }
+        Self { list, moving }
     }
 
     /// The coordinates in order.
@@ -134,6 +138,11 @@ impl Coordinates {
     /// No coordinate: everything moves with the ground.
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
+    }
+    /// How many of them move block `i`: the first ones, the slip and the
+    /// `θ_k` with `k ≤ i`. The partials of the others on block `i` vanish.
+    pub(crate) fn moving(&self, i: usize) -> usize {
+        self.moving[i]
     }
     /// The index of `c`, if it is one of them.
     pub fn index(&self, c: Coordinate) -> Option<usize> {

@@ -151,10 +151,10 @@ impl Stack {
     /// `u` where there is a building), and the friction decision.
     fn momentum_balance(&self, after: &StackRegime, at: &StackState, before: &Velocities) -> Balance {
         let has_building = self.building.is_some();
-        let frame = Frame::new(Coordinates::with_slip(self, after, has_building), Pose::new(self, after, at));
+        let pose = Pose::new(self, after, at);
+        let frame = Frame::new(Coordinates::with_slip(self, after, has_building), &pose);
         let n = frame.coords.len();
-        let mut m: Matrix = [[0.0; MAX_COORDINATES]; MAX_COORDINATES];
-        self.kane_system(&frame, 0.0, 0.0, 0.0, &mut m, &mut [0.0; MAX_COORDINATES]);
+        let (mut m, _) = self.kane_system::<f64, MAX_COORDINATES>(&frame, 0.0, 0.0, 0.0);
         // Generalised momenta before, the vertical momentum before, and the
         // vertical momentum per unit of each new velocity.
         let mut p = [0.0; MAX_COORDINATES];

@@ -6,16 +6,17 @@
 use super::geometry::MAX_COORDINATES;
 use crate::jet::Real;
 
-/// A square matrix of order `n <= MAX_COORDINATES`, row-major, padded.
-pub(crate) type Matrix<T = f64> = [[T; MAX_COORDINATES]; MAX_COORDINATES];
+/// A square matrix of order `C`, row-major (padded where it holds a system of
+/// a lower order).
+pub(crate) type Matrix<T = f64, const C: usize = MAX_COORDINATES> = [[T; C]; C];
 
-/// Solves `a x = b` for the leading `n × n` block by elimination with partial
+/// Solves `a x = b` for the leading `n × n` block (`n ≤ C`) by elimination with partial
 /// pivoting, in place: `b` becomes `x`, `a` is overwritten. Returns the
 /// determinant of `a` (0 where a pivot vanishes, and then `x` is NaN). On
 /// [`Jet`](crate::jet::Jet)s the pivots are chosen on the values, and `x`
 /// carries the derivative of the solution; the determinant is the values'.
 #[inline]
-pub(crate) fn solve<T: Real>(a: &mut Matrix<T>, b: &mut [T; MAX_COORDINATES], n: usize) -> f64 {
+pub(crate) fn solve<T: Real, const C: usize>(a: &mut Matrix<T, C>, b: &mut [T; C], n: usize) -> f64 {
     let mut det = 1.0;
     for col in 0..n {
         let mut best = col;
@@ -25,7 +26,7 @@ pub(crate) fn solve<T: Real>(a: &mut Matrix<T>, b: &mut [T; MAX_COORDINATES], n:
             }
         }
         if a[best][col].value() == 0.0 || !a[best][col].value().is_finite() {
-            *b = [T::from(f64::NAN); MAX_COORDINATES];
+            *b = [T::from(f64::NAN); C];
             return 0.0;
         }
         if best != col {
