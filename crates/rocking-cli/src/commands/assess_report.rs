@@ -25,7 +25,7 @@ pub(crate) const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,sans-serif;
 h1{font-size:17pt}h2{font-size:13pt;border-bottom:1px solid #999;margin-top:1.4em}h3{font-size:11pt}\
 table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left;vertical-align:top}\
 th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
-.wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}@media print{.wide{overflow:visible}table{font-size:8.5pt}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
+.wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}table.records td:first-child{overflow-wrap:anywhere}@media print{.wide{overflow:visible}table{font-size:8.5pt}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
 figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width:100%;height:auto;display:block}figcaption{font-size:9.5pt;color:#444}\
 code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
 
@@ -450,7 +450,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         if stacked {
             let _ = writeln!(
                 out,
-                "<p>Each mechanism reads the same runs: its control point is its own block's rotation θ on the block below, over its own capacity (R, α); a record makes it collapse when its block or one under it overturns. An overturning ends the run, so that the blocks under the one that fell give their largest d* up to then.</p>"
+                "<p>Each mechanism reads the same runs: its control point is its own block's rotation θ on the block below, over its own capacity (R, α); a record makes it collapse when its block or one under it overturns. An overturning ends the run, so that the blocks under the one that fell give their largest d* up to then. The tables give each mechanism's largest d* in its column, or <span class=\"fails\">fell</span> where the record made it collapse.</p>"
             );
         }
         for (i, d) in dynamic.iter().enumerate() {
@@ -466,29 +466,54 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                 COMPATIBILITY_UPPER
             );
             let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
-            let mut head = "<div class=\"wide\"><table class=\"records\"><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th>".to_string();
-            for m in &mechanisms[1..] {
-                let _ = write!(head, "<th>{0}: max d* (m)</th><th>{0} fell</th>", esc(m.name));
-            }
-            let _ = writeln!(out, "{head}<th>max slip of the building (m)</th><th>error</th></tr>");
-            for (k, ((r, s), resp)) in set.records.iter().zip(&d.fitted.scales).zip(&d.at_one.responses).enumerate() {
-                let cells = |resp: &Result<rocking_assess::RecordResponse, String>| match resp {
-                    Ok(x) => (x.max_displacement.map_or("—".into(), |v| sig(v, 4)), x.overturned.to_string()),
-                    Err(_) => (String::new(), String::new()),
-                };
-                let (dm, ov) = cells(resp);
-                let mut blocks = String::new();
-                for m in &mechanisms[1..] {
-                    let (bd, bo) = cells(&m.dynamic[i].at_one.responses[k]);
-                    let _ = write!(blocks, "<td class=\"n\">{bd}</td><td>{bo}</td>");
+            // A stack's table: one max d* column per mechanism under a shared
+            // head, a fall marked in its cell, so that the five blocks a tower
+            // may carry fit the printed page's width as the tower alone does.
+            let cells = |resp: &Result<rocking_assess::RecordResponse, String>| match resp {
+                Ok(x) => (x.max_displacement.map_or("—".into(), |v| sig(v, 4)), x.overturned),
+                Err(_) => (String::new(), false),
+            };
+            if stacked {
+                let _ = write!(
+                    out,
+                    "<div class=\"wide\"><table class=\"records\"><tr><th rowspan=\"2\">record</th><th rowspan=\"2\">scale</th><th colspan=\"{}\">max d* (m)</th><th rowspan=\"2\">max slip of the building (m)</th><th rowspan=\"2\">error</th></tr><tr>",
+                    mechanisms.len()
+                );
+                for m in &mechanisms {
+                    let _ = write!(out, "<th>{}</th>", esc(m.name));
                 }
+                let _ = writeln!(out, "</tr>");
+            } else {
+                let _ = writeln!(
+                    out,
+                    "<div class=\"wide\"><table class=\"records\"><tr><th>record</th><th>scale</th><th>max d* (m)</th><th>overturned</th><th>max slip of the building (m)</th><th>error</th></tr>"
+                );
+            }
+            for (k, ((r, s), resp)) in set.records.iter().zip(&d.fitted.scales).zip(&d.at_one.responses).enumerate() {
+                let responses = if stacked {
+                    let mut row = String::new();
+                    for m in &mechanisms {
+                        // A mechanism that collapsed has no d* (its block or one under it fell).
+                        let (dm, fell) = cells(&m.dynamic[i].at_one.responses[k]);
+                        let _ = write!(
+                            row,
+                            "<td class=\"n\">{}</td>",
+                            if fell { "<span class=\"fails\">fell</span>".into() } else { dm }
+                        );
+                    }
+                    row
+                } else {
+                    let (dm, overturned) = cells(resp);
+                    let overturned = if resp.is_ok() { overturned.to_string() } else { String::new() };
+                    format!("<td class=\"n\">{dm}</td><td>{overturned}</td>")
+                };
                 let (slip, err) = match resp {
                     Ok(x) => (x.max_slip.map_or("—".into(), |v| sig(v, 4)), String::new()),
                     Err(e) => (String::new(), esc(e)),
                 };
                 let _ = writeln!(
                     out,
-                    "<tr><td title=\"{}\">{}</td><td class=\"n\">{}</td><td class=\"n\">{dm}</td><td>{ov}</td>{blocks}<td class=\"n\">{slip}</td><td>{err}</td></tr>",
+                    "<tr><td title=\"{}\">{}</td><td class=\"n\">{}</td>{responses}<td class=\"n\">{slip}</td><td>{err}</td></tr>",
                     esc(&r.path),
                     esc(file_name(&r.path)),
                     sig(*s, 4)
