@@ -4,7 +4,8 @@
 //! sweep or a study stops its cases under way at their next event and keeps
 //! the rows finished (the command then exits 130). A second signal ends the
 //! process at once with 130, after removing the staging folders of the
-//! output folders being written ([`Registered`]), so that nothing of the
+//! output folders being written ([`Registered`]) and the output folders the
+//! run created for them (if still empty), so that nothing of the
 //! interrupted run is left behind; a commit under way (the moves of
 //! `output::Staging::commit`) is let finish first, so that the folder holds
 //! one run's files whatever the moment of the signal.
@@ -16,8 +17,9 @@ use std::sync::{Mutex, MutexGuard, Once, PoisonError};
 /// Set by the first signal.
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
-/// The staging folders to remove when a second signal ends the process.
-static STAGING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+/// The staging folders to remove when a second signal ends the process, each
+/// with the folders created for it (the outermost first), removed after it if empty.
+static STAGING: Mutex<Vec<(PathBuf, Vec<PathBuf>)>> = Mutex::new(Vec::new());
 
 /// Installs the handler (once; later calls do nothing) and returns the flag the first signal sets.
 pub fn interrupted() -> &'static AtomicBool {
@@ -26,8 +28,14 @@ pub fn interrupted() -> &'static AtomicBool {
         // Without a handler (another one is set) a signal simply ends the process.
         let _ = ctrlc::set_handler(|| {
             if INTERRUPTED.swap(true, Ordering::SeqCst) {
-                for dir in staging().drain(..) {
+                for (dir, created) in staging().drain(..) {
                     let _ = std::fs::remove_dir_all(dir);
+                    // `remove_dir` removes only an empty folder: one holding another run's files stays.
+                    for folder in created.iter().rev() {
+                        if std::fs::remove_dir(folder).is_err() {
+                            break;
+                        }
+                    }
                 }
                 eprintln!("interrupted twice: stopping now, nothing written");
                 std::process::exit(130);
@@ -37,7 +45,7 @@ pub fn interrupted() -> &'static AtomicBool {
     &INTERRUPTED
 }
 
-fn staging() -> MutexGuard<'static, Vec<PathBuf>> {
+fn staging() -> MutexGuard<'static, Vec<(PathBuf, Vec<PathBuf>)>> {
     STAGING.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
@@ -46,20 +54,20 @@ fn staging() -> MutexGuard<'static, Vec<PathBuf>> {
 pub struct Registered(PathBuf);
 
 impl Registered {
-    /// Registers `dir`.
-    pub fn new(dir: &Path) -> Self {
-        staging().push(dir.to_path_buf());
+    /// Registers `dir`, and `created`, the folders made for it (the outermost first).
+    pub fn new(dir: &Path, created: &[PathBuf]) -> Self {
+        staging().push((dir.to_path_buf(), created.to_vec()));
         Self(dir.to_path_buf())
     }
 
     /// Holds off the second signal's exit while the guard lives (a commit's moves).
-    pub fn hold(&self) -> MutexGuard<'static, Vec<PathBuf>> {
+    pub fn hold(&self) -> MutexGuard<'static, Vec<(PathBuf, Vec<PathBuf>)>> {
         staging()
     }
 }
 
 impl Drop for Registered {
     fn drop(&mut self) {
-        staging().retain(|d| *d != self.0);
+        staging().retain(|(d, _)| *d != self.0);
     }
 }

@@ -2,7 +2,8 @@
 //! behind, empty: `rocking assess` whose record set holds an empty record (or
 //! one with a NaN), read only once the assessment starts; `rocking run` whose
 //! vertical motion exceeds gravity, found only by the run; `rocking merge`
-//! with a truncated shard. The output folder a run creates, and any parent it
+//! with a truncated shard; and a second Ctrl-C, which ends the process at
+//! once. The output folder a run creates, and any parent it
 //! had to create, are now removed again when it fails (if still empty); a
 //! folder that was there before is left as it was, with its files.
 
@@ -106,4 +107,52 @@ fn a_refused_merge_leaves_no_output_folder() {
     let out = dir.path().join("merged");
     refused(&merge(&[&one, &two], &out), &["sweep.csv", "truncated"]);
     assert!(!out.exists(), "{:?}", names(dir.path()));
+}
+
+/// A second Ctrl-C ends the process at once: its staging folder was removed,
+/// the output folder it had made was left, empty. Both go now.
+#[cfg(unix)]
+#[test]
+fn a_second_ctrl_c_leaves_no_output_folder() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let dir = tempdir();
+    synthetic_records(dir.path(), "records");
+    // A λ scan of 800 values over three records at two limit states: 4,800
+    // runs, minutes for the one tower, which the first Ctrl-C lets finish.
+    let text = tower_on_b() + "records = [\"records/*.AT2\"]\nlambda = { from = 0.01, to = 8.0, step = 0.01 }\n";
+    let assess = write(dir.path(), "assess.toml", &text);
+    let towers = write(dir.path(), "towers.csv", "id,lon,lat\nA,14.4,41.0\n");
+    let out = dir.path().join("new/out");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(["inventory", arg(&towers), "--assess", arg(&assess), "--out", arg(&out), "--threads", "1"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("cannot start rocking: {e}"));
+    let limit = Duration::from_secs(60);
+    assert!(crate::util::staging_folder(&out, limit).is_some(), "no staging folder in {limit:?}");
+    for _ in 0..2 {
+        let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
+        assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
+            break status;
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap_or_default();
+            panic!("the second SIGINT did not end the process in {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    if let Some(mut pipe) = child.stderr.take() {
+        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
+    }
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted twice: stopping now, nothing written"), "{stderr}");
+    assert!(!dir.path().join("new").exists(), "{:?}", names(dir.path()));
 }

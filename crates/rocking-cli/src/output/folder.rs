@@ -98,7 +98,7 @@ impl Staging {
             .with_context(|| format!("cannot write into the output folder {}", dir.display()))?;
         Ok(Self {
             dir: dir.to_path_buf(),
-            registered: Registered::new(staging.path()),
+            registered: Registered::new(staging.path(), &created.0),
             staging,
             inputs: inputs.to_vec(),
             created,
