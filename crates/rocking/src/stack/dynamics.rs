@@ -166,7 +166,7 @@ impl Stack {
                 m[a][b] = m[b][a];
             }
         }
-        if let Some(u) = frame.coords.index(Coordinate::Slip) {
+        if let Some(u) = frame.coords.slip() {
             m[u][u] = m[u][u] + m1;
             f[u] = f[u] - a_g * m1;
             let friction = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
@@ -323,8 +323,8 @@ impl Stack {
             moment = moment + (cross(sub(pose.centre[i], pose.base[k]), f) - snap.rotation_acc[i] * block.inertia_centre);
         }
         InterfaceLoad {
-            tangential: dot(force, pose.tangent[k]),
-            normal: dot(force, pose.normal[k]),
+            tangential: dot(force, pose.tangent(k)),
+            normal: dot(force, pose.normal(k)),
             moment,
         }
     }

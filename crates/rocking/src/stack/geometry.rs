@@ -144,6 +144,10 @@ impl Coordinates {
     pub(crate) fn moving(&self, i: usize) -> usize {
         self.moving[i]
     }
+    /// The index of the slip, if it is one of them: 0, the slip comes first.
+    pub(crate) fn slip(&self) -> Option<usize> {
+        (self.list.first() == Some(&Coordinate::Slip)).then_some(0)
+    }
     /// The index of `c`, if it is one of them.
     pub fn index(&self, c: Coordinate) -> Option<usize> {
         self.list.iter().position(|&x| x == c)
@@ -172,10 +176,9 @@ pub struct Pose<T = f64> {
     pub(crate) phi: [T; MAX_BLOCKS],
     /// `φ̇_k`.
     pub(crate) phi_dot: [T; MAX_BLOCKS],
-    /// The unit normal `R(φ_{k−1}) e_y` of the surface block `k` stands on.
-    pub(crate) normal: [Vec2<T>; MAX_BLOCKS],
-    /// The unit tangent `R(φ_{k−1}) e_x` of that surface.
-    pub(crate) tangent: [Vec2<T>; MAX_BLOCKS],
+    /// `(sin φ_{k−1}, cos φ_{k−1})`: the rotation of the surface block `k`
+    /// stands on.
+    support: [(T, T); MAX_BLOCKS],
     /// `C_k`.
     pub(crate) base: [Vec2<T>; MAX_BLOCKS],
     /// `G_k`.
@@ -230,8 +233,7 @@ impl<T: Real> Pose<T> {
             pivots: [None; MAX_BLOCKS],
             phi: [zero; MAX_BLOCKS],
             phi_dot: [zero; MAX_BLOCKS],
-            normal: [[zero, one]; MAX_BLOCKS],
-            tangent: [[one, zero]; MAX_BLOCKS],
+            support: [(zero, one); MAX_BLOCKS],
             base: [[zero; 2]; MAX_BLOCKS],
             centre: [[zero; 2]; MAX_BLOCKS],
             corner: [[zero; 2]; MAX_BLOCKS],
@@ -241,8 +243,7 @@ impl<T: Real> Pose<T> {
         let mut base_below = [zero, zero];
         let mut height_below = 0.0;
         for (k, block) in stack.blocks.iter().enumerate() {
-            pose.normal[k] = rotate(rot_below, [zero, one]);
-            pose.tangent[k] = rotate(rot_below, [one, zero]);
+            pose.support[k] = rot_below;
             let (phi, phi_dot, rot, base) = match regime.interfaces[k].pivot() {
                 Some(p) => {
                     let s = p.sign();
@@ -281,6 +282,15 @@ impl<T: Real> Pose<T> {
     /// Never true.
     pub fn is_empty(&self) -> bool {
         self.n == 0
+    }
+
+    /// The unit normal `R(φ_{k−1}) e_y` of the surface block `k` stands on.
+    pub(crate) fn normal(&self, k: usize) -> Vec2<T> {
+        rotate(self.support[k], [real(0.0), real(1.0)])
+    }
+    /// The unit tangent `R(φ_{k−1}) e_x` of that surface.
+    pub(crate) fn tangent(&self, k: usize) -> Vec2<T> {
+        rotate(self.support[k], [real(1.0), real(0.0)])
     }
 
     /// `∂P/∂q_c` for a point `p` of block `i`.

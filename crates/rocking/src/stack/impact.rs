@@ -246,7 +246,7 @@ impl Stack {
             impulse[1] += di[1];
             moment += cross(sub(pose.centre[i], pose.base[j]), di) - block.inertia_centre * (after.rotation[i] - before.rotation[i]);
         }
-        let normal = dot(impulse, pose.normal[j]);
+        let normal = dot(impulse, pose.normal(j));
         let capacity = normal * self.blocks[j].width / 2.0;
         if capacity > 0.0 {
             moment.abs() / capacity
