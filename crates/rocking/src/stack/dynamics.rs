@@ -153,12 +153,17 @@ impl Stack {
         for (i, block) in self.blocks.iter().enumerate() {
             let load = [a_g + frame.quad[i][0], g_e + frame.quad[i][1]];
             let moving = frame.coords.moving(i);
+            // Block `i`'s partials, once for all the pairs they enter.
+            let (mut jac, mut rot) = ([[real(0.0); 2]; C], [0.0; C]);
+            for a in 0..moving {
+                (jac[a], rot[a]) = (frame.jac(i, a), frame.rot(i, a));
+            }
             for a in 0..moving {
                 for b in a..moving {
-                    let inertia: T = real(block.inertia_centre * frame.rot(i, a) * frame.rot(i, b));
-                    m[a][b] = m[a][b] + (dot(frame.jac(i, a), frame.jac(i, b)) * block.mass + inertia);
+                    let inertia: T = real(block.inertia_centre * rot[a] * rot[b]);
+                    m[a][b] = m[a][b] + (dot(jac[a], jac[b]) * block.mass + inertia);
                 }
-                f[a] = f[a] - dot(frame.jac(i, a), load) * block.mass;
+                f[a] = f[a] - dot(jac[a], load) * block.mass;
             }
         }
         for a in 0..n {
