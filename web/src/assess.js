@@ -222,6 +222,8 @@ export class AssessView {
           <progress id="assess-dynamic-progress" value="0" max="1" aria-label="progress of the dynamic checks" hidden></progress>
           <span id="assess-dynamic-label" role="status"></span></div>
         <div id="assess-dynamic-results" hidden>
+          <p id="assess-records-note" class="note" hidden>Each mechanism reads the same runs: the table gives its largest d* (its own block's
+          rotation on the block below), or <b class="fails">fell</b> where the record made it collapse (its block or one under it overturned).</p>
           <div class="scroll" role="region" aria-label="the records' responses" tabindex="0">
             <table id="assess-records"><caption>Each record at its fitted scale (λ = 1)</caption>
               <thead></thead>
@@ -751,22 +753,36 @@ export class AssessView {
     worker.postMessage({ table });
   }
 
-  /** The table of each record's response at its fitted scale (records.csv). */
+  /** The table of each record's response at its fitted scale (records.csv's rows). A tower alone
+   * has its d* and whether it overturned; a stack, as the command's report.html, one d* column per
+   * mechanism under a shared head and `fell` in the cell of a mechanism the record made collapse
+   * (its block or one under it overturned), so that the five blocks a tower may carry stay narrow. */
   renderRecords() {
     const num = (x) => (x === null || x === undefined ? "—" : `<span data-value="${x}">${sig(x, 4)}</span>`);
     const rows = this.dynamic.result.responses;
-    // Each block's columns after the building's slip, as records.csv's `<name>_…`.
     const blocks = rows.length ? rows[0].blocks.map((b) => b.name) : [];
-    const head = ["limit state", "record", "scale", "max d* (m)", "overturned", "max slip of the building (m)"];
-    for (const b of blocks) head.push(`${b}: max d* (m)`, `${b}: overturned`);
-    head.push("error");
-    this.panel.querySelector("#assess-records thead").innerHTML = `<tr>${head.map((h) => `<th>${escapeHtml(h)}</th>`).join("")}</tr>`;
+    const th = (h, span = "") => `<th${span}>${escapeHtml(h)}</th>`;
+    const both = ' rowspan="2"';
+    let head;
+    let responses;
+    if (blocks.length) {
+      head =
+        `<tr>${th("limit state", both)}${th("record", both)}${th("scale", both)}${th("max d* (m)", ` colspan="${blocks.length + 1}"`)}` +
+        `${th("max slip of the building (m)", both)}${th("error", both)}</tr><tr>${["tower", ...blocks].map((b) => th(b)).join("")}</tr>`;
+      // A mechanism that collapsed has no d* of its own to give; a record that failed, none at all.
+      const cell = (r, m) => (r.error ? "<td></td>" : m.overturned ? '<td class="num fails">fell</td>' : `<td class="num">${num(m.max_control_displacement_m)}</td>`);
+      responses = (r) => [r, ...r.blocks].map((m) => cell(r, m)).join("");
+    } else {
+      head = `<tr>${["limit state", "record", "scale", "max d* (m)", "overturned", "max slip of the building (m)", "error"].map((h) => th(h)).join("")}</tr>`;
+      responses = (r) => `<td class="num">${num(r.max_control_displacement_m)}</td><td>${r.error ? "" : r.overturned}</td>`;
+    }
+    $("assess-records-note").hidden = blocks.length === 0;
+    $("assess-records").classList.toggle("stack", blocks.length > 0);
+    this.panel.querySelector("#assess-records thead").innerHTML = head;
     this.panel.querySelector("#assess-records tbody").innerHTML = rows
       .map((r) =>
-        `<tr><td>${r.limit_state}</td><td>${escapeHtml(r.record)}</td><td class="num">${num(r.scale)}</td><td class="num">${num(r.max_control_displacement_m)}</td>` +
-        `<td>${r.error ? "" : r.overturned}</td><td class="num">${num(r.max_building_slip_m)}</td>` +
-        r.blocks.map((b) => `<td class="num">${num(b.max_control_displacement_m)}</td><td>${r.error ? "" : b.overturned}</td>`).join("") +
-        `<td>${escapeHtml(r.error ?? "")}</td></tr>`)
+        `<tr><td>${r.limit_state}</td><td>${escapeHtml(r.record)}</td><td class="num">${num(r.scale)}</td>${responses(r)}` +
+        `<td class="num">${num(r.max_building_slip_m)}</td><td>${escapeHtml(r.error ?? "")}</td></tr>`)
       .join("");
   }
 

@@ -29,7 +29,6 @@ BLOCKS = [
     {"name": "belfry", "width": 1.6, "height": 8.0, "mass": 2.0e4},
     {"name": "lantern", "width": 0.8, "height": 2.0, "mass": 2.0e3},
 ]
-BLOCKS_TOML = "".join(f'[[block]]\nname = "{b["name"]}"\nwidth = {b["width"]}\nheight = {b["height"]}\nmass = {b["mass"]}\n' for b in BLOCKS)
 # The page's scenario: the same tower and blocks, with a ground motion for the
 # simulate tab (an assessment takes none).
 SCENARIO = {
@@ -51,12 +50,13 @@ SYNTHETIC = [ROOT / "data" / "records" / "synthetic" / f"kt_0{k}.AT2" for k in (
 DYNAMIC = {"free_after": "2", "lambda.from": "0.5", "lambda.to": "2", "lambda.step": "0.5"}
 
 
-def command(tmp_path, records=False):
+def command(tmp_path, records=False, blocks=BLOCKS):
     """`rocking assess` on tower_on_b.toml with the blocks on its tower
     (and the short record set): assessment.json and records.csv."""
     text = TOWER_ON_B.read_text()
     assert "[site]\n" in text
-    text = text.replace("[site]\n", BLOCKS_TOML + "\n[site]\n", 1)
+    blocks_toml = "".join(f'[[block]]\nname = "{b["name"]}"\nwidth = {b["width"]}\nheight = {b["height"]}\nmass = {b["mass"]}\n' for b in blocks)
+    text = text.replace("[site]\n", blocks_toml + "\n[site]\n", 1)
     if records:
         # [assessment] is the file's last table.
         paths = ", ".join(f'"{p}"' for p in SYNTHETIC)
@@ -69,9 +69,9 @@ def command(tmp_path, records=False):
     return json.loads((out / "assessment.json").read_text()), records_csv
 
 
-def open_stack(browser, server):
+def open_stack(browser, server, blocks=BLOCKS):
     """The page with the stack from a link, the assess tab shown with tower_on_b's site typed in."""
-    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps(SCENARIO)))
+    page = open_page(browser, server + "#" + urllib.parse.quote(json.dumps({**SCENARIO, "block": blocks})))
     page.click("#tab-assess")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
     page.select_option('[name="site.code"]', "ntc2018")
@@ -166,9 +166,12 @@ def test_every_mechanism_of_the_stack_is_the_commands(browser, server, tmp_path)
     page.close()
 
 
-def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server, tmp_path):
-    page = open_stack(browser, server)
-    expected, records_csv = command(tmp_path, records=True)
+def run_dynamic(page, tmp_path, blocks=BLOCKS):
+    """The dynamic checks run on the page and by the command on the short
+    record set: the page's assessment, the command's assessment.json and
+    records.csv (its records named by their file's names, as the page does),
+    the page's and the command's compared."""
+    expected, records_csv = command(tmp_path, records=True, blocks=blocks)
     page.set_input_files("#assess-records-file", [str(p) for p in SYNTHETIC])
     for key, value in DYNAMIC.items():
         page.fill(f'[name="assessment.{key}"]', value)
@@ -183,6 +186,41 @@ def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server,
     for key in ["capacity", "sites", "checks", "governing", "dynamic", "mechanisms"]:
         assert got[key] == expected[key], key
     assert got["records_csv"] == records_csv
+    return got, expected, records_csv
+
+
+def records_table(page):
+    """The records' table: its two head rows' texts and each body row's cells
+    (a number's exact value, from its data-value, or the cell's text)."""
+    head = page.locator("#assess-records thead tr").evaluate_all("rows => rows.map(r => [...r.cells].map(c => c.textContent))")
+    cells = page.locator("#assess-records tbody tr").evaluate_all(
+        "rows => rows.map(r => [...r.cells].map(c => c.querySelector('[data-value]')?.dataset.value ?? c.textContent))"
+    )
+    return head, cells
+
+
+def page_cells(cells):
+    """The mechanisms' cells of the page's records table: `fell`, or a number."""
+    return [c if c == "fell" else float(c) for c in cells]
+
+
+def mechanism_cells(row, names):
+    """What records.csv's row says each mechanism's cell shows: `fell` where
+    the record made it collapse, else its largest d* (the tower's columns
+    unprefixed, a block's prefixed with its name)."""
+    cells = []
+    for name in names:
+        prefix = "" if name == "tower" else f"{name}_"
+        if row[f"{prefix}overturned"] == "true":
+            cells.append("fell")
+        else:
+            cells.append(float(row[f"{prefix}max_control_displacement_m"]))
+    return cells
+
+
+def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server, tmp_path):
+    page = open_stack(browser, server)
+    got, expected, records_csv = run_dynamic(page, tmp_path)
     # Every mechanism has its two dynamic checks, each completed; the scan
     # found a λ where one stops holding (the runs reached the bisection).
     for m in got["mechanisms"]:
@@ -192,20 +230,69 @@ def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server,
     # The table shows every mechanism's rows, dynamic ones too (six per mechanism).
     for m in expected["mechanisms"]:
         expect(page.locator(f'#assess-checks tr[data-mechanism="{m["name"]}"][data-method]')).to_have_count(6)
-    # The records' table: each block's columns after the building's, as records.csv's.
-    head = page.locator("#assess-records thead th").all_text_contents()
-    assert head[-5:] == ["belfry: max d* (m)", "belfry: overturned", "lantern: max d* (m)", "lantern: overturned", "error"]
+    # The records' table: a column per mechanism under one head, as the command's report.html.
+    head, cells = records_table(page)
+    assert head == [["limit state", "record", "scale", "max d* (m)", "max slip of the building (m)", "error"], ["tower", "belfry", "lantern"]]
     rows = list(csv.DictReader(io.StringIO(records_csv)))
-    cells = page.locator("#assess-records tbody tr").evaluate_all(
-        "rows => rows.map(r => [...r.cells].map(c => c.querySelector('[data-value]')?.dataset.value ?? c.textContent))"
-    )
-    number = lambda x: float(x) if x not in ("", "—") else None
-    assert [[c[1], number(c[6]), c[7], number(c[8]), c[9]] for c in cells] == [
-        [r["record"], number(r["belfry_max_control_displacement_m"]), r["belfry_overturned"], number(r["lantern_max_control_displacement_m"]), r["lantern_overturned"]]
-        for r in rows
+    assert [[c[0], c[1], *page_cells(c[3:6])] for c in cells] == [
+        [r["limit_state"], r["record"], *mechanism_cells(r, ["tower", "belfry", "lantern"])] for r in rows
     ]
     expect(page.locator("#assess-dynamic-label")).to_have_text(re.compile(r"Done: \d+ runs of a record in"))
     page.locator("#assess-dynamic").screenshot(path=str(OUT / "assess-blocks-dynamic.png"))
+    assert page.errors == [], page.errors
+    page.close()
+
+
+# The most blocks a tower carries (five): the belfry and the lantern, then a
+# spire, its top and the cross on it, each no wider than the one below. The
+# spire's top and its cross are slender enough that on the short record set
+# the cross falls on some records and not others, and the spire's top with it
+# on one (the command's records.csv says so; the test checks that it does).
+FIVE_BLOCKS = BLOCKS + [
+    {"name": "spire", "width": 0.6, "height": 3.0, "mass": 5.0e2},
+    {"name": "spire_top", "width": 0.3, "height": 2.5, "mass": 1.0e2},
+    {"name": "cross_of_the_spire", "width": 0.2, "height": 1.5, "mass": 5.0e1},
+]
+
+
+def test_the_records_table_of_five_blocks_fits_its_region_and_says_fell_where_the_command_overturned(browser, server, tmp_path):
+    """Regression: the records' table gave each block two columns (its max d*
+    and whether it overturned), so that with these five blocks it was 1,489 px
+    wide in its 872 px region of the desktop page (989 px with three). As the
+    command's report.html, a stack's table has one max d* column per
+    mechanism under one head and `fell` in the cell of a mechanism the record
+    made collapse: it fits its region at desktop width (751 px with three
+    blocks), and on a phone (798 px in 358) it scrolls in its region, the
+    page no wider than the screen."""
+    page = open_stack(browser, server, FIVE_BLOCKS)
+    _, _, records_csv = run_dynamic(page, tmp_path, FIVE_BLOCKS)
+    names = ["tower"] + [b["name"] for b in FIVE_BLOCKS]
+    rows = list(csv.DictReader(io.StringIO(records_csv)))
+    expected = [[r["limit_state"], r["record"], *mechanism_cells(r, names)] for r in rows]
+    # The command's own records make both cases occur: a record where nothing
+    # fell, one where the cross fell, one where the spire's top fell with it.
+    falls = [[c == "fell" for c in row[2:]] for row in expected]
+    assert [False] * 6 in falls and [False] * 5 + [True] in falls and [False] * 4 + [True] * 2 in falls, falls
+
+    head, cells = records_table(page)
+    assert head == [["limit state", "record", "scale", "max d* (m)", "max slip of the building (m)", "error"], names]
+    assert [[c[0], c[1], *page_cells(c[3:9])] for c in cells] == expected
+    expect(page.locator("#assess-records-note")).to_be_visible()
+    expect(page.locator("#assess-records-note")).to_contain_text("fell where the record made it collapse")
+
+    region = "(() => { const t = document.getElementById('assess-records'); return [t.scrollWidth, t.parentElement.clientWidth]; })()"
+    width = page.evaluate(region)
+    assert width[0] <= width[1], width
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.wait_for_timeout(300)
+    width = page.evaluate("[document.documentElement.scrollWidth, document.documentElement.clientWidth]")
+    assert width[0] <= width[1], width
+    # The table is wider than a phone: its region scrolls to show the last mechanism's column.
+    table, shown_width = page.evaluate(region)
+    assert table > shown_width, (table, shown_width)
+    last = page.locator("#assess-records tbody tr:first-child td:nth-child(9)")
+    last.scroll_into_view_if_needed()
+    expect(last).to_be_in_viewport()
     assert page.errors == [], page.errors
     page.close()
 
