@@ -159,6 +159,27 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         !holds_now(w.conditions[0])
     }
 
+    /// Whether the tower, standing at the current instant, would be lifted
+    /// at once on either corner, as `settle` evaluates the uplift.
+    fn lifts_at_once(&self) -> bool {
+        let standing = Regime {
+            tower: TowerRegime::Rest,
+            ..self.regime
+        };
+        let lifts = [Condition::UpliftNegative, Condition::UpliftPositive];
+        let w = watched(
+            self.kernel,
+            standing,
+            &self.input.segment.piece,
+            &self.input.vsegment.piece,
+            &lifts,
+            self.integ.t,
+            &self.integ.y,
+            None,
+        );
+        holds_now(w.conditions[0]) || holds_now(w.conditions[1])
+    }
+
     /// Whether the tower fell straight back at the current instant.
     pub(super) fn fell_back_now(&self) -> bool {
         self.integ.t.to_bits() == self.switches.fell_back.to_bits()
@@ -247,6 +268,15 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     pub(super) fn impact(&mut self) -> Result<(), Error> {
         let TowerRegime::Rocking(pivot) = self.regime.tower else { return Ok(()) };
         if self.integ.y.theta == 0.0 && self.integ.y.theta_dot == 0.0 {
+            return self.fall_straight_back();
+        }
+        if impact_ends_at_rest(self.integ.y.theta_dot) && self.lifts_at_once() {
+            // Back slower than the rest threshold while the pivot line still
+            // lifts it: the impact would seat it and the input lift it again
+            // at this instant, returning by the rounding of the same
+            // derivatives without end (a grazing uplift whose `θ̈` is at
+            // rounding level, of either sign). It fell straight back.
+            self.integ.y.theta_dot = 0.0;
             return self.fall_straight_back();
         }
         let before = self.integ.y;

@@ -82,6 +82,11 @@ pub enum StackEventKind {
     Impact(usize),
     /// Interface `k` came to rest: an impact left it seated.
     Rest(usize),
+    /// Interface `k` was set down without an impact: it lifted and fell
+    /// straight back, never leaving `θ_k = 0` by more than rounding (a
+    /// grazing uplift, the uplift condition met at its peak), as the tower's.
+    /// Its uplift is not taken again until its condition has been negative.
+    SetDown(usize),
     /// Block `k` overturned; the run stopped.
     Overturn(usize),
     /// The building started slipping (or reversed).
@@ -294,9 +299,10 @@ impl Watch {
     }
 
     /// How the condition is taken on zero at a step's start: as the tower's
-    /// ([`OnZero::of`]; a stacked block never falls straight back).
-    fn on_zero(self) -> OnZero {
-        OnZero::of(self.kind(), false)
+    /// ([`OnZero::of`]); `fell_back`: the interface set down at that instant
+    /// ([`StackEventKind::SetDown`]), whose uplift waits.
+    fn on_zero(self, fell_back: Option<usize>) -> OnZero {
+        OnZero::of(self.kind(), matches!(self, Watch::Uplift(k) if fell_back == Some(k)))
     }
 }
 
@@ -314,6 +320,12 @@ impl OfTheta {
         let m = self.condition.theta_margin(self.s, Jet::new(theta, theta_dot));
         (m.v, m.d)
     }
+}
+
+/// The interface set down at `t`, if `fell_back` (the last one set down and
+/// the instant) is at `t`.
+fn set_down_at(fell_back: Option<(usize, f64)>, t: f64) -> Option<usize> {
+    fell_back.filter(|&(_, at)| at.to_bits() == t.to_bits()).map(|(k, _)| k)
 }
 
 struct Runner<'a, const S: usize> {
@@ -457,6 +469,11 @@ impl<const S: usize> Runner<'_, S> {
     fn switch(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> (StackRegime, StackState, StackEventKind, f64) {
         let mut state = *state;
         match watch {
+            Watch::Impact(k) if self.falls_straight_back(regime, k, t, &state) => {
+                state.theta[k] = 0.0;
+                state.theta_dot[k] = 0.0;
+                (regime.with(k, Interface::Stuck), state, StackEventKind::SetDown(k), 0.0)
+            }
             Watch::Impact(k) => {
                 let out = self.stack.impact(regime, &state, k);
                 let (mut regime, mut state) = (out.regime, out.state);
@@ -503,12 +520,27 @@ impl<const S: usize> Runner<'_, S> {
         }
     }
 
+    /// Whether interface `k`, reaching `θ_k = 0` at `t`, fell straight back
+    /// after its uplift rather than landing: it comes back slower than
+    /// [`REST_ANGULAR_VELOCITY`](crate::REST_ANGULAR_VELOCITY), so an impact
+    /// would seat it, while its uplift condition holds, so that it would lift
+    /// again at once and return by the rounding of the same instant's
+    /// derivatives, without end. That is the tower's grazing uplift
+    /// (`fall straight back`): the block is set down, with no impact.
+    fn falls_straight_back(&self, regime: &StackRegime, k: usize, t: f64, state: &StackState) -> bool {
+        let seated = regime.with(k, Interface::Stuck);
+        impact_ends_at_rest(state.theta_dot[k]) && self.value(&seated, &self.ground.segment(t).piece, Watch::Uplift(k), t, state) >= 0.0
+    }
+
     /// The first watched condition that already holds at `t` (one that a
-    /// regime is entered with switches at once).
-    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState) -> Option<Watch> {
+    /// regime is entered with switches at once); `fell_back`: the interface
+    /// set down at this instant ([`StackEventKind::SetDown`]), whose uplift
+    /// is not taken again here.
+    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState, fell_back: Option<usize>) -> Option<Watch> {
         self.watches(regime).into_iter().find(|&w| match w {
             // Crossings, not conditions: they are due only when reached from the other side.
             Watch::Impact(_) | Watch::Stop => false,
+            Watch::Uplift(k) if fell_back == Some(k) => false,
             _ => self.value(regime, &self.ground.segment(t).piece, w, t, state) > 0.0,
         })
     }
@@ -529,7 +561,9 @@ impl<const S: usize> Runner<'_, S> {
 
     /// The earliest crossing of a watched condition inside the step of
     /// `dense`, `theta_points` the extremes of each `θ_k` there, `ends` the
-    /// [`Instant`]s at the step's ends if they were computed.
+    /// [`Instant`]s at the step's ends if they were computed, `fell_back` the
+    /// interface set down at the step's start.
+    #[allow(clippy::too_many_arguments)]
     fn first_crossing(
         &self,
         regime: &StackRegime,
@@ -538,6 +572,7 @@ impl<const S: usize> Runner<'_, S> {
         (t0, t1): (f64, f64),
         theta_points: &[Points; MAX_BLOCKS],
         ends: Option<(&Instant, &Instant)>,
+        fell_back: Option<usize>,
     ) -> Option<(Watch, f64)> {
         let n = self.n();
         let mut best: Option<(Watch, f64)> = None;
@@ -559,7 +594,7 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t1, value(t1)));
                 first_crossing(
                     points.as_slice(),
-                    watch.on_zero(),
+                    watch.on_zero(fell_back),
                     |ta, va, tb, vb| find_crossing_newton(at, ta, va, tb, vb).tb,
                     leaving,
                 )
@@ -571,7 +606,7 @@ impl<const S: usize> Runner<'_, S> {
                     points.push((tb, value(tb)));
                 }
                 points.push((t1, value(t1)));
-                first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
+                first_crossing(points.as_slice(), watch.on_zero(fell_back), regula_falsi, leaving)
             } else {
                 // Kane's conditions: monotone between their extrema, located
                 // on their exact slopes (the instants' jets). Only a maximum
@@ -585,7 +620,7 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t0, c0.v));
                 interior_extrema(t0, c0, t1, c1, &mut |t| inside(t), |(_, hi)| hi >= 0.0, &mut |t, v| points.push((t, v)));
                 points.push((t1, c1.v));
-                first_crossing(points.as_slice(), watch.on_zero(), regula_falsi, leaving)
+                first_crossing(points.as_slice(), watch.on_zero(fell_back), regula_falsi, leaving)
             };
             if let Some(te) = hit {
                 if best.is_none_or(|(_, tb)| te < tb) {
@@ -620,10 +655,12 @@ impl<const S: usize> Runner<'_, S> {
         let mut t = 0.0;
         let mut next_sample = 0usize;
         let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
+        // The interface last set down and the instant ([`StackEventKind::SetDown`]).
+        let mut fell_back: Option<(usize, f64)> = None;
         'run: loop {
             // Switch at once while a condition already holds.
             let mut switches = 0;
-            while let Some(watch) = self.due_now(&regime, t, &state) {
+            while let Some(watch) = self.due_now(&regime, t, &state, set_down_at(fell_back, t)) {
                 switches += 1;
                 if switches > 4 * MAX_BLOCKS + 4 {
                     return Err(Error::Chattering {
@@ -640,15 +677,24 @@ impl<const S: usize> Runner<'_, S> {
             }
             let y = self.pack(&state);
             let current = regime;
-            let piece = self.ground.segment(t).piece;
+            // The input's piece holds up to its next kink, where the run restarts.
+            let segment = self.ground.segment(t);
+            let (piece, kink) = (segment.piece, segment.kink.min(settings.duration));
             let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&current, &piece, t, y);
             stepper.restart(&mut rhs, t, y, settings.duration);
             // The instants at the steps' ends, for the conditions that need
             // Kane's equations and for the hook; each step's end is the next one's start.
-            let wants_instants = hook.wants_instants() || self.watches(&regime).iter().any(|w| w.sampled());
+            let sampled = self.watches(&regime).iter().any(|w| w.sampled());
+            let wants_instants = hook.wants_instants() || sampled;
             let mut start = wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f));
             loop {
-                let bound = self.ground.segment(t).kink.min(settings.duration);
+                // The conditions that need Kane's equations follow the input
+                // itself (at rest, its value alone): their steps end at its
+                // extrema as well, so that the input is monotone on each, as
+                // the tower's static phase moves from one monotone stretch
+                // to the next. A seated stack's uplift is then monotone on a
+                // step, and its ends show it.
+                let bound = if sampled { self.ground.segment(t).end.min(kink) } else { kink };
                 stepper.step(&mut rhs, bound).map_err(|e| match e {
                     StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
                     StepFailure::NonFinite { time } => Error::Singular {
@@ -661,7 +707,7 @@ impl<const S: usize> Runner<'_, S> {
                 let end = wants_instants.then(|| self.instant(&regime, &piece, t1, &stepper.y, &stepper.f));
                 let ends = start.as_ref().zip(end.as_ref());
                 let theta_points = self.theta_extremes(&regime, &dense, t0, t1);
-                let crossing = self.first_crossing(&regime, &piece, &dense, (t0, t1), &theta_points, ends);
+                let crossing = self.first_crossing(&regime, &piece, &dense, (t0, t1), &theta_points, ends, set_down_at(fell_back, t0));
                 let reached = crossing.map_or(t1, |(_, te)| te);
                 self.track_peaks(&mut out, &regime, &dense, t0, reached, &theta_points);
                 let stretch = Stretch {
@@ -690,6 +736,9 @@ impl<const S: usize> Runner<'_, S> {
                     if self.apply(&mut out, &mut regime, &mut state, watch, te, hook)? {
                         break 'run;
                     }
+                    if let Some(StackEventKind::SetDown(k)) = out.events.last().map(|e| e.kind) {
+                        fell_back = Some((k, te));
+                    }
                     continue 'run;
                 }
                 state = self.unpack(&stepper.y);
@@ -697,7 +746,7 @@ impl<const S: usize> Runner<'_, S> {
                 if t >= settings.duration {
                     break 'run;
                 }
-                if bound < settings.duration && t >= bound {
+                if kink < settings.duration && t >= kink {
                     // A kink of the input: restart there (conditions may hold at once).
                     continue 'run;
                 }

@@ -417,6 +417,8 @@ impl<O: Observer> Hook for Reporter<'_, O> {
         match event.kind {
             StackEventKind::Uplift(k) => events.push(one(EventKind::Uplift, k, &event.before, &event.after)),
             StackEventKind::Overturn(k) => events.push(one(EventKind::Overturn, k, &event.before, &event.after)),
+            // As the tower's that falls straight back: a rest, no impact.
+            StackEventKind::SetDown(k) => events.push(one(EventKind::Rest, k, &event.before, &event.after)),
             StackEventKind::Impact(k) | StackEventKind::Rest(k) => {
                 // As the tower's: the impact, the building's change it brings, then the rest.
                 events.push(one(EventKind::Impact, k, &event.before, &event.after));
