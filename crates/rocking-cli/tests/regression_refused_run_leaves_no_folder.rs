@@ -115,7 +115,7 @@ fn a_refused_merge_leaves_no_output_folder() {
 #[test]
 fn a_second_ctrl_c_leaves_no_output_folder() {
     use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let dir = tempdir();
     synthetic_records(dir.path(), "records");
     // A λ scan of 800 values over three records at two limit states: 4,800
@@ -137,22 +137,8 @@ fn a_second_ctrl_c_leaves_no_output_folder() {
         assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
         std::thread::sleep(Duration::from_millis(200));
     }
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
-            break status;
-        }
-        if start.elapsed() > limit {
-            child.kill().unwrap_or_default();
-            panic!("the second SIGINT did not end the process in {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    if let Some(mut pipe) = child.stderr.take() {
-        std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
-    }
-    assert_eq!(status.code(), Some(130), "{stderr}");
+    let (code, stderr) = crate::util::wait_exit(&mut child, limit, "a second SIGINT");
+    assert_eq!(code, Some(130), "{stderr}");
     assert!(stderr.contains("interrupted twice: stopping now, nothing written"), "{stderr}");
     assert!(!dir.path().join("new").exists(), "{:?}", names(dir.path()));
 }

@@ -200,6 +200,16 @@ pub fn interrupted(args: &[&str], out: &Path, signal: &str, limit: std::time::Du
     }
     let kill = Command::new("kill").args([signal, &child.id().to_string()]).status();
     assert!(kill.is_ok_and(|s| s.success()), "cannot send {signal}");
+    let (code, stderr) = wait_exit(&mut child, limit, signal);
+    Interrupted { code, stderr, staging }
+}
+
+/// Waits at most `limit` for `child` to end (else kills it and fails the
+/// test, naming `what` was sent): its exit code (`None` if killed by a
+/// signal) and what it wrote on its standard error.
+#[cfg(unix)]
+pub fn wait_exit(child: &mut std::process::Child, limit: std::time::Duration, what: &str) -> (Option<i32>, String) {
+    use std::time::{Duration, Instant};
     let start = Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().unwrap_or_else(|e| panic!("{e}")) {
@@ -207,7 +217,7 @@ pub fn interrupted(args: &[&str], out: &Path, signal: &str, limit: std::time::Du
         }
         if start.elapsed() > limit {
             child.kill().unwrap_or_default();
-            panic!("{signal}: the run did not stop in {limit:?}");
+            panic!("{what}: the run did not stop in {limit:?}");
         }
         std::thread::sleep(Duration::from_millis(20));
     };
@@ -215,9 +225,5 @@ pub fn interrupted(args: &[&str], out: &Path, signal: &str, limit: std::time::Du
     if let Some(mut pipe) = child.stderr.take() {
         std::io::Read::read_to_string(&mut pipe, &mut stderr).unwrap_or_default();
     }
-    Interrupted {
-        code: status.code(),
-        stderr,
-        staging,
-    }
+    (status.code(), stderr)
 }

@@ -1,7 +1,7 @@
 //! Shared builders for the physics tests.
 #![allow(dead_code, missing_docs, clippy::unwrap_used)]
 
-use rocking::{reference::solid_block, simulate, Building, EventLog, GroundMotion, History, Initial, Model, NormalForce, Settings, Summary, Tower};
+use rocking::{reference::solid_block, simulate, Building, EventLog, GroundMotion, History, Initial, Model, NormalForce, Settings, Step, Summary, Tower};
 
 pub const G: f64 = 9.81;
 
@@ -41,4 +41,30 @@ pub fn run_history(model: &Model, ground: &GroundMotion, initial: Initial, setti
     let mut obs = (History::new(dt, vec![]), EventLog::default());
     let s = simulate(model, ground, initial, settings, &mut obs).unwrap();
     (s, obs.0, obs.1)
+}
+
+/// The largest value of `f` on an observed step: the best of `per_step`
+/// samples, then golden-section search on the bracket around it (a second
+/// method for the peaks a run locates on its own).
+pub fn step_max(step: &Step<'_>, per_step: usize, f: &dyn Fn(f64) -> f64) -> f64 {
+    let h = (step.t1 - step.t0) / per_step as f64;
+    let (mut best_t, mut best) = (step.t0, f(step.t0));
+    for i in 1..=per_step {
+        let t = (step.t0 + i as f64 * h).min(step.t1);
+        let v = f(t);
+        if v > best {
+            (best_t, best) = (t, v);
+        }
+    }
+    let (mut a, mut b) = ((best_t - h).max(step.t0), (best_t + h).min(step.t1));
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..80 {
+        let (c, d) = (b - ratio * (b - a), a + ratio * (b - a));
+        if f(c) > f(d) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    best.max(f(0.5 * (a + b)))
 }

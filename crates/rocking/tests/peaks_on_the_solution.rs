@@ -48,29 +48,9 @@ impl Dense {
         }
     }
 
-    /// The largest value of `f` on the step: the best of `per_step` samples,
-    /// then golden-section search on the bracket around it.
+    /// The largest value of `f` on the step ([`common::step_max`]).
     fn step_max(&self, step: &Step<'_>, f: &dyn Fn(f64) -> f64) -> f64 {
-        let h = (step.t1 - step.t0) / self.per_step as f64;
-        let (mut best_t, mut best) = (step.t0, f(step.t0));
-        for i in 1..=self.per_step {
-            let t = step.t0 + i as f64 * h;
-            let v = f(t.min(step.t1));
-            if v > best {
-                (best_t, best) = (t.min(step.t1), v);
-            }
-        }
-        let (mut a, mut b) = ((best_t - h).max(step.t0), (best_t + h).min(step.t1));
-        let ratio = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..80 {
-            let (c, d) = (b - ratio * (b - a), a + ratio * (b - a));
-            if f(c) > f(d) {
-                b = d;
-            } else {
-                a = c;
-            }
-        }
-        best.max(f(0.5 * (a + b)))
+        common::step_max(step, self.per_step, f)
     }
 }
 
