@@ -25,21 +25,13 @@ struct Dense {
     top: f64,
 }
 
-impl Dense {
-    /// The largest value of `f` on the step ([`common::step_max`]).
-    fn step_max(&self, step: &Step<'_>, f: &dyn Fn(f64) -> f64) -> f64 {
-        common::step_max(step, self.per_step, f)
-    }
-}
-
 impl Observer for Dense {
     fn wants_steps(&self) -> bool {
         true
     }
     fn on_step(&mut self, step: &Step<'_>) -> Flow {
         if step.t1 > step.t0 {
-            let top = self.step_max(step, &|t| step.sample(t).top_abs_acc.abs());
-            self.top = self.top.max(top);
+            self.top = self.top.max(common::step_max(step, self.per_step, &|t| step.sample(t).top_abs_acc.abs()));
         }
         ControlFlow::Continue(())
     }
