@@ -142,42 +142,28 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             Pivot::Negative => Condition::UpliftNegative,
             Pivot::Positive => Condition::UpliftPositive,
         };
-        let standing = Regime {
-            tower: TowerRegime::Rest,
-            ..self.regime
-        };
-        let w = watched(
-            self.kernel,
-            standing,
-            &self.input.segment.piece,
-            &self.input.vsegment.piece,
-            &[lifts],
-            self.integ.t,
-            &self.integ.y,
-            None,
-        );
-        !holds_now(w.conditions[0])
+        !self.lifted_at_once(&[lifts])
     }
 
     /// Whether the tower, standing at the current instant, would be lifted
-    /// at once on either corner, as `settle` evaluates the uplift.
-    fn lifts_at_once(&self) -> bool {
+    /// at once by one of `lifts` (uplift conditions), as `settle` evaluates
+    /// them.
+    fn lifted_at_once(&self, lifts: &[Condition]) -> bool {
         let standing = Regime {
             tower: TowerRegime::Rest,
             ..self.regime
         };
-        let lifts = [Condition::UpliftNegative, Condition::UpliftPositive];
         let w = watched(
             self.kernel,
             standing,
             &self.input.segment.piece,
             &self.input.vsegment.piece,
-            &lifts,
+            lifts,
             self.integ.t,
             &self.integ.y,
             None,
         );
-        holds_now(w.conditions[0]) || holds_now(w.conditions[1])
+        w.conditions[..lifts.len()].iter().any(|&c| holds_now(c))
     }
 
     /// Whether the tower fell straight back at the current instant.
@@ -270,7 +256,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if self.integ.y.theta == 0.0 && self.integ.y.theta_dot == 0.0 {
             return self.fall_straight_back();
         }
-        if impact_ends_at_rest(self.integ.y.theta_dot) && self.lifts_at_once() {
+        if impact_ends_at_rest(self.integ.y.theta_dot) && self.lifted_at_once(&[Condition::UpliftNegative, Condition::UpliftPositive]) {
             // Back slower than the rest threshold while the pivot line still
             // lifts it: the impact would seat it and the input lift it again
             // at this instant, returning by the rounding of the same

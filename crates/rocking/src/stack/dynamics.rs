@@ -122,6 +122,17 @@ fn split<T: Real>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; M
     (theta_ddot, slip_acc)
 }
 
+impl InterfaceLoad<crate::jet::Jet> {
+    /// The load's values, without their time derivatives.
+    pub(crate) fn values(&self) -> InterfaceLoad {
+        InterfaceLoad {
+            tangential: self.tangential.v,
+            normal: self.normal.v,
+            moment: self.moment.v,
+        }
+    }
+}
+
 impl InterfaceLoad {
     /// The friction the interface needs, `|T'| / N'` (along and normal to the
     /// supporting surface): blocks never slide on one another in the model,

@@ -255,14 +255,9 @@ impl<O: Observer> Reporter<'_, O> {
 
     /// The values of `peaks` on jets.
     fn values(peaks: &Peaks<Jet>) -> Peaks<f64> {
-        let value = |l: &InterfaceLoad<Jet>| InterfaceLoad {
-            tangential: l.tangential.v,
-            normal: l.normal.v,
-            moment: l.moment.v,
-        };
         Peaks {
             top: peaks.top.v,
-            loads: std::array::from_fn(|k| value(&peaks.loads[k])),
+            loads: std::array::from_fn(|k| peaks.loads[k].values()),
         }
     }
 
@@ -328,12 +323,7 @@ impl<O: Observer> Reporter<'_, O> {
                     },
                 );
                 for t in found {
-                    let load = at(t).loads[k];
-                    let load = InterfaceLoad {
-                        tangential: load.tangential.v,
-                        normal: load.normal.v,
-                        moment: load.moment.v,
-                    };
+                    let load = at(t).loads[k].values();
                     if k == 0 {
                         self.tracker.pivot(load.tangential, load.normal);
                     }
