@@ -9,7 +9,7 @@ use crate::input::AssessmentInput;
 use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, PoisonError};
 
 /// The outcome of an assessment.
 #[derive(Debug, Clone)]
@@ -73,8 +73,8 @@ impl Assessment {
     }
 
     /// As [`Assessment::run_cached`], `progress(done, most)` told after each
-    /// record's run of the dynamic checks: the runs done, and the most there
-    /// can be ([`most_runs`] of each check).
+    /// record's run of the dynamic checks, in order (`done` is 1, 2, 3, …):
+    /// the runs done, and the most there can be ([`most_runs`] of each check).
     pub fn run_observed(input: &AssessmentInput, cache: &RecordCache, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Self, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
@@ -99,8 +99,15 @@ impl Assessment {
             let roles = [Role::LifeSafety, Role::Collapse];
             let mechanisms: Vec<(usize, &Capacity)> = std::iter::once((0, &capacity)).chain(blocks.iter().map(|b| (b.block, &b.capacity))).collect();
             let most = roles.len() * most_runs_of(set.records.len(), &input.lambda, mechanisms.len());
-            let done = AtomicUsize::new(0);
-            let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, most);
+            // Counted and told under one lock, so that the counts are told in
+            // order even when two runs end at once (a progress bar never
+            // steps back).
+            let done = Mutex::new(0);
+            let tick = || {
+                let mut done = done.lock().unwrap_or_else(PoisonError::into_inner);
+                *done += 1;
+                progress(*done, most);
+            };
             let mut per_role = roles
                 .into_iter()
                 .map(|role| dynamic_checks_ticking(input, &set, &mechanisms, role, &tick))
