@@ -41,7 +41,7 @@ use arrayvec::ArrayVec;
 #[derive(Debug, Clone)]
 pub struct Frame<'p, T = f64> {
     /// The coordinates.
-    pub coords: Coordinates,
+    pub coords: &'p Coordinates,
     /// Where the blocks are.
     pub pose: &'p Pose<T>,
     pub(crate) quad: [Vec2<T>; MAX_BLOCKS],
@@ -50,7 +50,7 @@ pub struct Frame<'p, T = f64> {
 impl<'p, T: Real> Frame<'p, T> {
     /// The frame of `pose` in `coords`.
     #[inline(always)]
-    pub(crate) fn new(coords: Coordinates, pose: &'p Pose<T>) -> Self {
+    pub(crate) fn new(coords: &'p Coordinates, pose: &'p Pose<T>) -> Self {
         let mut quad = [[real(0.0); 2]; MAX_BLOCKS];
         for (i, q) in quad.iter_mut().enumerate().take(pose.len()) {
             *q = pose.point_quadratic(i, pose.centre[i]);
@@ -249,10 +249,17 @@ impl Stack {
     /// [`Stack::snapshot`].
     #[inline]
     pub fn accelerations(&self, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
+        self.accelerations_in(&Coordinates::of(self, regime), regime, state, a_g, g_e)
+    }
+
+    /// [`Stack::accelerations`] with the regime's coordinates built once
+    /// (a run's right-hand side, evaluated a dozen times a step).
+    #[inline]
+    pub(crate) fn accelerations_in(&self, coords: &Coordinates, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
         let pose = Pose::new(self, regime, state);
-        let frame = Frame::new(Coordinates::of(self, regime), &pose);
+        let frame = Frame::new(coords, &pose);
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
-        split(&frame.coords, &q_ddot)
+        split(frame.coords, &q_ddot)
     }
 
     /// Everything about the motion at one instant: `q̈` from Kane's equations
@@ -270,9 +277,10 @@ impl Stack {
     #[inline]
     pub(crate) fn snapshot_of<T: Real>(&self, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> Snapshot<T> {
         let pose = Pose::of(self, regime, theta, theta_dot);
-        let frame = Frame::new(Coordinates::of(self, regime), &pose);
+        let coords = Coordinates::of(self, regime);
+        let frame = Frame::new(&coords, &pose);
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
-        let (theta_ddot, slip_acc) = split(&frame.coords, &q_ddot);
+        let (theta_ddot, slip_acc) = split(frame.coords, &q_ddot);
         let mut centre_acc = [[real(0.0); 2]; MAX_BLOCKS];
         let mut rotation_acc = [real(0.0); MAX_BLOCKS];
         for i in 0..self.len() {

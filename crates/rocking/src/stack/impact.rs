@@ -152,7 +152,8 @@ impl Stack {
     fn momentum_balance(&self, after: &StackRegime, at: &StackState, before: &Velocities) -> Balance {
         let has_building = self.building.is_some();
         let pose = Pose::new(self, after, at);
-        let frame = Frame::new(Coordinates::with_slip(self, after, has_building), &pose);
+        let coords = Coordinates::with_slip(self, after, has_building);
+        let frame = Frame::new(&coords, &pose);
         let n = frame.coords.len();
         let (mut m, _) = self.kane_system::<f64, MAX_COORDINATES>(&frame, 0.0, 0.0, 0.0);
         // Generalised momenta before, the vertical momentum before, and the

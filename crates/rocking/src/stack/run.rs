@@ -36,6 +36,7 @@
 //! peaks. Every step ends at the next kink of the ground motion.
 
 use super::dynamics::Snapshot;
+use super::geometry::Coordinates;
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::condition::Condition;
 use crate::engine::crossing::{extremes, first_crossing, first_root, leaving_point, OnZero, Points};
@@ -360,11 +361,12 @@ impl<const S: usize> Runner<'_, S> {
     }
 
     /// The right-hand side of `regime` at `t`, the ground's acceleration from
-    /// `piece` (the step's: every step ends at the next kink of the input).
-    fn rhs(&self, regime: &StackRegime, piece: &Piece, t: f64, y: &[f64; S]) -> [f64; S] {
+    /// `piece` (the step's: every step ends at the next kink of the input),
+    /// in the regime's coordinates `coords` (built once for it).
+    fn rhs(&self, coords: &Coordinates, regime: &StackRegime, piece: &Piece, t: f64, y: &[f64; S]) -> [f64; S] {
         let n = self.n();
         let state = self.unpack(y);
-        let (theta_ddot, slip_acc) = self.stack.accelerations(regime, &state, piece.eval(t), self.stack.gravity);
+        let (theta_ddot, slip_acc) = self.stack.accelerations_in(coords, regime, &state, piece.eval(t), self.stack.gravity);
         let mut dy = [0.0; S];
         for k in 0..n {
             if regime.interfaces[k] != Interface::Stuck {
@@ -396,7 +398,7 @@ impl<const S: usize> Runner<'_, S> {
     /// The [`Instant`] at `t` inside the step of `dense`.
     fn instant_on(&self, regime: &StackRegime, piece: &Piece, dense: &DenseOutput<S>, t: f64) -> Instant {
         let y = dense.state(t);
-        self.instant(regime, piece, t, &y, &self.rhs(regime, piece, t, &y))
+        self.instant(regime, piece, t, &y, &self.rhs(&Coordinates::of(self.stack, regime), regime, piece, t, &y))
     }
 
     fn watches(&self, regime: &StackRegime) -> arrayvec::ArrayVec<Watch, { 2 * MAX_BLOCKS + 1 }> {
@@ -680,7 +682,8 @@ impl<const S: usize> Runner<'_, S> {
             // The input's piece holds up to its next kink, where the run restarts.
             let segment = self.ground.segment(t);
             let (piece, kink) = (segment.piece, segment.kink.min(settings.duration));
-            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&current, &piece, t, y);
+            let coords = Coordinates::of(self.stack, &current);
+            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&coords, &current, &piece, t, y);
             stepper.restart(&mut rhs, t, y, settings.duration);
             // The instants at the steps' ends, for the conditions that need
             // Kane's equations and for the hook; each step's end is the next one's start.
