@@ -185,11 +185,35 @@ fn column_keys(blocks: &BlockNames) -> Vec<String> {
     sections.flatten().chain(assessment.map(String::from)).collect()
 }
 
+/// What is wrong with a dotted column's key `key` whatever its cells hold,
+/// if anything, in an assessment file whose blocks are `blocks`: a block's
+/// name (which names its outputs, as a sweep cannot vary it either), a
+/// misspelt key of a section or a block, a head that is neither. A misspelt
+/// key gets the column suggested as it would be written (`belfry.width`).
+fn key_fault(key: &str, blocks: &BlockNames) -> Option<String> {
+    let head = key.split('.').next().unwrap_or_default();
+    let known = SECTIONS.contains(&head) || ["site", "assessment"].contains(&head);
+    if !known && key.ends_with(".name") {
+        return Some("a block's name cannot be set per tower: its outputs are named by it".into());
+    }
+    if let Some(valid) = keys_under(head, blocks).filter(|v| !v.is_empty()) {
+        return (!valid.iter().any(|k| k == key)).then(|| ErrorKind::unknown_key(key, &valid).to_string());
+    }
+    if known || blocks.position(head).is_some() {
+        return None;
+    }
+    let candidates = column_keys(blocks);
+    let suggestion = closest(key, &candidates.iter().map(String::as_str).collect::<Vec<_>>()).map(|c| format!("; did you mean `{c}`?"));
+    Some(format!(
+        "`{head}` is no section of the assessment file ({}, site, assessment) and no block on its tower (a block's key is its name and the key: belfry.width){}",
+        SECTIONS.join(", "),
+        suggestion.unwrap_or_default()
+    ))
+}
+
 /// The assessment file's table with the row's cells set in it.
 fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
     let mut table = base.clone();
-    // The assessment file is valid by itself ([`Inventory::from_table`]): its blocks are well formed.
-    let blocks = block_names(base).unwrap_or_default();
     let site = match table.entry("site").or_insert_with(|| Value::Table(Table::new())) {
         Value::Table(t) => t,
         _ => return Err(row.fault(file, "site", "the assessment file's site is not a table")),
@@ -221,34 +245,10 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
         } else {
             cell_value(&given.text)
         };
-        // A block's key by its name (`belfry.width`), as a sweep's axis names it; not its
-        // name, which names its outputs (as a sweep, which cannot vary it either).
-        let head = key.split('.').next().unwrap_or_default();
-        let known = SECTIONS.contains(&head) || ["site", "assessment"].contains(&head);
-        if !known && key.ends_with(".name") {
-            return Err(row.fault(file, &given.name, "a block's name cannot be set per tower: its outputs are named by it"));
-        }
-        // A misspelt key of a section or a block: the column's name suggested as the column would be written.
-        if let Some(valid) = keys_under(head, &blocks).filter(|v| !v.is_empty()) {
-            if !valid.iter().any(|k| k == key) {
-                return Err(row.fault(file, &given.name, ErrorKind::unknown_key(key, &valid)));
-            }
-        }
+        // A block's key by its name (`belfry.width`), as a sweep's axis names
+        // it; the header's names are known keys ([`key_fault`]).
         if set_named_key(&mut table, key, value.clone()) {
             continue;
-        }
-        if !known {
-            let candidates = column_keys(&blocks);
-            let suggestion = closest(key, &candidates.iter().map(String::as_str).collect::<Vec<_>>()).map(|c| format!("; did you mean `{c}`?"));
-            return Err(row.fault(
-                file,
-                &given.name,
-                format!(
-                    "`{head}` is no section of the assessment file ({}, site, assessment) and no block on its tower (a block's key is its name and the key: belfry.width){}",
-                    SECTIONS.join(", "),
-                    suggestion.unwrap_or_default()
-                ),
-            ));
         }
         set_dotted(&mut table, key, value).map_err(|e| row.fault(file, &given.name, e))?;
     }
@@ -323,6 +323,14 @@ impl Inventory {
         let mut reader = csv::ReaderBuilder::new().flexible(true).trim(csv::Trim::All).from_reader(towers);
         let header = reader.headers().map_err(cannot_read)?.clone();
         let columns = columns(&header, input.file.site.code, file).map_err(InventoryError::Towers)?;
+        // A column that names no key is the header's fault, told once (not on every row).
+        // The assessment file is valid by itself (its input was built above): its blocks are well formed.
+        let blocks = block_names(&base).unwrap_or_default();
+        for (name, column) in header.iter().zip(&columns) {
+            if let Some(what) = matches!(column, Column::Key(_)).then(|| key_fault(name, &blocks)).flatten() {
+                return Err(InventoryError::Towers(format!("{}: column {name}: {what}", file.display())));
+            }
+        }
         let rows = reader.records().collect::<Result<Vec<_>, _>>().map_err(cannot_read)?;
         let lines: Vec<Line> = rows
             .iter()
