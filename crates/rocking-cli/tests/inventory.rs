@@ -155,6 +155,8 @@ fn each_bad_row_gets_its_own_error_and_the_others_are_right() {
     assert_eq!(r.code, Some(1), "{}", r.stderr);
     let (header, rows) = inventory_csv(&out);
     assert_eq!(rows.len(), 7);
+    assert!(r.stderr.contains("5 of 7 towers with an error (in the error column of "), "{}", r.stderr);
+    assert!(r.stderr.trim_end().ends_with("; the others are assessed"), "{}", r.stderr);
     let errors: Vec<&str> = rows.iter().map(|row| cell(&header, row, "error")).collect();
     let expect = [
         (1, "(id B), column tower.width (\"-4.0\"):", "-4"),

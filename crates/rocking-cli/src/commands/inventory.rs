@@ -205,8 +205,9 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         for t in &bad {
             eprintln!("{}", t.error);
         }
+        let others = if bad.len() < towers.len() { "; the others are assessed" } else { "" };
         anyhow::bail!(
-            "{} of {} towers with an error (in the error column of {}); the others are assessed",
+            "{} of {} towers with an error (in the error column of {}){others}",
             bad.len(),
             towers.len(),
             dir.join(INVENTORY_CSV).display()
