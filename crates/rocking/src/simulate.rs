@@ -19,6 +19,9 @@ pub const REST_ANGULAR_VELOCITY: f64 = 1e-9;
 /// angular velocity after it, `theta_dot_after` (rad/s), is below
 /// [`REST_ANGULAR_VELOCITY`] sets its block down. The tower's impacts, the
 /// building's slip after one and every interface of a stack ask it here.
+/// The fall back of a grazing uplift asks it of the velocity before the
+/// impact: an impact loses rotational speed, so a block that comes back
+/// slower than the threshold would leave it slower still.
 #[inline]
 pub fn impact_ends_at_rest(theta_dot_after: f64) -> bool {
     theta_dot_after.abs() < REST_ANGULAR_VELOCITY
