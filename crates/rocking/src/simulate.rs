@@ -19,9 +19,10 @@ pub const REST_ANGULAR_VELOCITY: f64 = 1e-9;
 /// angular velocity after it, `theta_dot_after` (rad/s), is below
 /// [`REST_ANGULAR_VELOCITY`] sets its block down. The tower's impacts, the
 /// building's slip after one and every interface of a stack ask it here.
-/// The fall back of a grazing uplift asks it of the velocity before the
-/// impact: an impact loses rotational speed, so a block that comes back
-/// slower than the threshold would leave it slower still.
+/// The fall back of a grazing uplift (a block back slower than the
+/// threshold while the input still lifts it) asks it of the velocity before
+/// the impact, and sets the block down without the impact law: the same
+/// threshold, read one instant earlier.
 #[inline]
 pub fn impact_ends_at_rest(theta_dot_after: f64) -> bool {
     theta_dot_after.abs() < REST_ANGULAR_VELOCITY
