@@ -238,6 +238,7 @@ def test_the_dynamic_checks_of_every_mechanism_are_the_commands(browser, server,
         [r["limit_state"], r["record"], *mechanism_cells(r, ["tower", "belfry", "lantern"])] for r in rows
     ]
     expect(page.locator("#assess-dynamic-label")).to_have_text(re.compile(r"Done: \d+ runs of a record in"))
+    # The docs' figure (docs/src/guide/page-assess-blocks-dynamic.png).
     page.locator("#assess-dynamic").screenshot(path=str(OUT / "assess-blocks-dynamic.png"))
     assert page.errors == [], page.errors
     page.close()
