@@ -20,8 +20,8 @@ use crate::town::IDENTITY;
 use crate::RecordSet;
 use rocking_codes::LimitState;
 use rocking_scenario::{
-    block_names, closest, named_block_keys, set_dotted, set_named_key, AssessmentFile, BlockNames, Cases, Cell, Code, ErrorKind, GridCache, RecordCache, Row,
-    ASSESSMENT_KEY_DOCS, BLOCK, SCENARIO_KEYS, SECTIONS,
+    block_names, closest, named_block_keys, one_line, set_dotted, set_named_key, AssessmentFile, BlockNames, Cases, Cell, Code, ErrorKind, GridCache,
+    RecordCache, Row, ASSESSMENT_KEY_DOCS, BLOCK, SCENARIO_KEYS, SECTIONS,
 };
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -54,6 +54,11 @@ pub enum InventoryError {
     /// The towers' file.
     #[error("{0}")]
     Towers(String),
+}
+
+/// An error of the towers' file (a column's name may hold a line break), on one line.
+fn towers_error(text: String) -> InventoryError {
+    InventoryError::Towers(one_line(&text).into_owned())
 }
 
 /// What a column of the towers' file sets.
@@ -137,15 +142,15 @@ impl Line {
     fn get(&self, name: &str) -> Option<&str> {
         self.cells.iter().find(|c| c.name == name).map(|c| c.text.as_str())
     }
-    /// `TOWERS.csv row N (id X): what`.
+    /// `TOWERS.csv row N (id X): what`, on one line ([`one_line`]: an id may hold a line break).
     fn failure(&self, file: &Path, what: impl std::fmt::Display) -> String {
         let id = self.get("id").map(|id| format!(" (id {id})")).unwrap_or_default();
-        format!("{} row {}{id}: {what}", file.display(), self.number)
+        one_line(&format!("{} row {}{id}: {what}", file.display(), self.number)).into_owned()
     }
-    /// `TOWERS.csv row N (id X), column C: what`.
+    /// `TOWERS.csv row N (id X), column C: what`, on one line.
     fn fault(&self, file: &Path, column: &str, what: impl std::fmt::Display) -> String {
         let id = self.get("id").map(|id| format!(" (id {id})")).unwrap_or_default();
-        format!("{} row {}{id}, column {column}: {what}", file.display(), self.number)
+        one_line(&format!("{} row {}{id}, column {column}: {what}", file.display(), self.number)).into_owned()
     }
 }
 
@@ -319,16 +324,16 @@ impl Inventory {
             checks.extend(DYNAMIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)));
         }
 
-        let cannot_read = |e: csv::Error| InventoryError::Towers(format!("cannot read {}: {e}", file.display()));
+        let cannot_read = |e: csv::Error| towers_error(format!("cannot read {}: {e}", file.display()));
         let mut reader = csv::ReaderBuilder::new().flexible(true).trim(csv::Trim::All).from_reader(towers);
         let header = reader.headers().map_err(cannot_read)?.clone();
-        let columns = columns(&header, input.file.site.code, file).map_err(InventoryError::Towers)?;
+        let columns = columns(&header, input.file.site.code, file).map_err(towers_error)?;
         // A column that names no key is the header's fault, told once (not on every row).
         // The assessment file is valid by itself (its input was built above): its blocks are well formed.
         let blocks = block_names(&base).unwrap_or_default();
         for (name, column) in header.iter().zip(&columns) {
             if let Some(what) = matches!(column, Column::Key(_)).then(|| key_fault(name, &blocks)).flatten() {
-                return Err(InventoryError::Towers(format!("{}: column {name}: {what}", file.display())));
+                return Err(towers_error(format!("{}: column {name}: {what}", file.display())));
             }
         }
         let rows = reader.records().collect::<Result<Vec<_>, _>>().map_err(cannot_read)?;

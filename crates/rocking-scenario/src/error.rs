@@ -1,12 +1,13 @@
 //! Errors of a scenario: each names the file, the dotted key and what is wrong,
 //! on one line (`examples/tower.toml: tower.width: must be a finite number > 0, got -4`).
 
+use std::borrow::Cow;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 /// A scenario that cannot be read, built or run.
 #[derive(Debug, thiserror::Error)]
-#[error("{}: {fault}", .file.display())]
+#[error("{}: {fault}", one_line(&.file.display().to_string()))]
 pub struct Error {
     /// The scenario file (or the origin given for a table or a JSON value).
     pub file: PathBuf,
@@ -34,13 +35,36 @@ pub struct Fault {
     pub kind: ErrorKind,
 }
 
+/// On one line whatever the key and the values it quotes hold ([`one_line`]).
 impl fmt::Display for Fault {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match &self.key {
-            Some(key) => write!(f, "{key}: {}", self.kind),
-            None => write!(f, "{}", self.kind),
+        let text = match &self.key {
+            Some(key) => format!("{key}: {}", self.kind),
+            None => self.kind.to_string(),
+        };
+        f.write_str(&one_line(&text))
+    }
+}
+
+/// `text` on one line: each control character in it (a line break, a tab,
+/// an escape) and the line and paragraph separators written as a Rust
+/// string writes them (`\n`, `\t`, `\u{1b}`, `\u{2028}`), the rest as it
+/// is. An error quotes what the user wrote (a key, a value, a file's name),
+/// which may hold a line break; its message stays one line.
+pub fn one_line(text: &str) -> Cow<'_, str> {
+    let breaks = |c: char| c.is_control() || matches!(c, '\u{2028}' | '\u{2029}');
+    if !text.chars().any(breaks) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if breaks(c) {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
         }
     }
+    Cow::Owned(out)
 }
 
 impl Fault {

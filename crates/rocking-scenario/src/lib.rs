@@ -112,7 +112,7 @@ pub use assessment::{
 };
 pub use block::{names as block_names, set_named_key, BlockNames, BLOCK, MAX_ABOVE};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
-pub use error::{closest, key_of, Error, ErrorKind, Fault};
+pub use error::{closest, key_of, one_line, Error, ErrorKind, Fault};
 pub use ground::{record_format_name, GroundInfo, GroundKind, RecordCache, RecordInfo, ACCELERATION_UNITS};
 pub use keys::{describe_key, keys_json, keys_markdown, named_block_keys, KeyDoc, KeyKind, KeyRef, SCENARIO_KEYS, VERTICAL_PREFIX};
 pub use run::{Outcome, RunOptions};
