@@ -18,6 +18,7 @@
 //! ```
 
 use crate::error::{invalid, Error};
+use crate::outputs::number;
 use rocking::stack::Block;
 use std::f64::consts::PI;
 use std::fmt;
@@ -191,7 +192,9 @@ impl Capacity {
     /// The capacity of a block of mass `mass` (kg, > 0) whose centre of mass is
     /// at `radius` (m, > 0) from the corner at the slenderness `alpha` (rad, in
     /// (0, π/2)), under gravity `g` (m/s², > 0), with confidence factor FC
-    /// (≥ 1) and the curve `curve`.
+    /// (≥ 1) and the curve `curve`. Every number of the capacity is finite,
+    /// a0*, d0 and the secant periods > 0: inputs whose products leave the
+    /// floating-point numbers (g = 1e-310 m/s²) are refused.
     pub fn new(mass: f64, radius: f64, alpha: f64, g: f64, confidence_factor: f64, curve: CurveKind) -> Result<Self, Error> {
         for (name, value) in [("mass", mass), ("radius", radius), ("g", g)] {
             if !(value.is_finite() && value > 0.0) {
@@ -231,6 +234,26 @@ impl Capacity {
         };
         capacity.t_slv = secant_period_slv(d_slv, capacity.acceleration_at(d_slv));
         capacity.t_slc = secant_period_slc(d_slc, capacity.acceleration_at(d_slc));
+        // Valid inputs whose products leave the floating-point numbers: g =
+        // 1e-310 m/s² makes a0* vanish and the secant periods infinite.
+        let numbers = [capacity.a0_star, capacity.d0, capacity.t_slv, capacity.t_slc];
+        if !numbers.iter().all(|x| x.is_finite() && *x > 0.0) {
+            return Err(invalid(
+                "capacity",
+                format!(
+                    "out of the floating-point range (each must be a finite number > 0): a0* = {} m/s², d0 = {} m, T_SLV = {} s, \
+                     T_SLC = {} s, from g = {} m/s², R = {} m, α = {} rad, FC = {}",
+                    number(capacity.a0_star),
+                    number(capacity.d0),
+                    number(capacity.t_slv),
+                    number(capacity.t_slc),
+                    number(g),
+                    number(radius),
+                    number(alpha),
+                    number(confidence_factor)
+                ),
+            ));
+        }
         Ok(capacity)
     }
 

@@ -147,6 +147,15 @@ impl Check {
     }
 }
 
+impl Check {
+    /// Whether its numbers (demand, capacity, `ag`, `a_g,capacity`, ζ_E) are all finite.
+    pub fn is_finite(&self) -> bool {
+        [self.demand, self.capacity, self.ag, self.ag_capacity.value(), self.zeta_e]
+            .iter()
+            .all(|x| x.is_finite())
+    }
+}
+
 /// The governing check: the least ζ_E (the first such in order), `None` for no checks.
 pub fn governing(checks: &[Check]) -> Option<&Check> {
     checks.iter().reduce(|best, c| if c.zeta_e < best.zeta_e { c } else { best })

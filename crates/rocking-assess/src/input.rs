@@ -6,7 +6,8 @@
 //! collapse limit states all given; FC ≥ 1; a record set of 0 or at least 3.
 
 use crate::capacity::{Capacity, CurveKind};
-use crate::check::Check;
+use crate::check::{Check, Method};
+use crate::outputs::number;
 use crate::site::{Role, Site};
 use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario, SetEntry};
 use std::path::{Path, PathBuf};
@@ -180,9 +181,41 @@ impl AssessmentInput {
         Capacity::of_block(self.model(), k, self.file.confidence_factor, self.curve()).map_err(|e| Fault::invalid(key, e.to_string()).in_file(self.origin()))
     }
 
-    /// The kinematic checks ([`crate::kinematic_checks`]): activation, linear, non-linear (two).
+    /// The kinematic checks ([`crate::kinematic_checks`]): activation, linear,
+    /// non-linear (two), each with finite numbers. A check whose numbers leave
+    /// the floating-point range is refused, naming the key: the limit state's
+    /// site (an `ag` of 1e-320 g, whose ζ_E = a_g,capacity / a_g overflows; an
+    /// `F0` of 1e308, whose demand does), or `assessment.q` (a `q` of 1e308).
     pub fn kinematic_checks(&self, capacity: &Capacity) -> Result<Vec<Check>, Error> {
-        crate::kinematic_checks(capacity, &self.site, self.file.q).map_err(|e| Fault::invalid("assessment.q", e.to_string()).in_file(self.origin()))
+        let checks =
+            crate::kinematic_checks(capacity, &self.site, self.file.q).map_err(|e| Fault::invalid("assessment.q", e.to_string()).in_file(self.origin()))?;
+        match checks.iter().find(|c| !c.is_finite()) {
+            None => Ok(checks),
+            Some(c) => {
+                // The linear check's capacity is q times the activation's: q is at fault when the check would be finite with q = 1.
+                let q_at_fault = c.method == Method::LinearKinematic && (c.capacity / self.file.q / c.ag).is_finite();
+                let key = if q_at_fault {
+                    "assessment.q".to_string()
+                } else {
+                    format!("site.{}", c.limit_state)
+                };
+                let unit = c.unit.as_str();
+                Err(Fault::invalid(
+                    key,
+                    format!(
+                        "the {} {} check leaves the floating-point range: demand {} {unit}, capacity {} {unit}, ζ_E {}, at ag = {} g (q = {})",
+                        c.limit_state,
+                        c.method,
+                        number(c.demand),
+                        number(c.capacity),
+                        number(c.zeta_e),
+                        number(c.ag),
+                        number(self.file.q)
+                    ),
+                )
+                .in_file(self.origin()))
+            }
+        }
     }
 }
 

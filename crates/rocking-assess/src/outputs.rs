@@ -225,7 +225,8 @@ fn field(text: &str) -> String {
     }
 }
 
-fn number(x: f64) -> String {
+/// `x` in the fewest digits that read back to it (`0.155`, `5e-324`, `inf`).
+pub(crate) fn number(x: f64) -> String {
     ryu::Buffer::new().format(x).to_string()
 }
 
