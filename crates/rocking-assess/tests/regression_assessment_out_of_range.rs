@@ -9,7 +9,7 @@
 //! naming the file and the key at fault (found by the extremes of each key,
 //! tried beside fuzzing the assessment file, whose target asks for finite numbers).
 
-use rocking_assess::{AssessmentInput, Assessment};
+use rocking_assess::{Assessment, AssessmentInput};
 use std::path::Path;
 
 /// The error of the tests' tower (tests/data/tower_on_b.toml) with `from` replaced by `to`.
@@ -35,7 +35,10 @@ fn a_gravity_whose_capacity_vanishes_is_refused() {
 fn an_ag_whose_ratio_overflows_is_refused() {
     // The SLD's activation capacity is 0.207 g (the unchanged tower), over 5e-324 g: ζ_E = ∞.
     let e = refused("ag = 0.062", "ag = 5e-324");
-    assert!(e.starts_with("assess.toml: site.SLD: the SLD activation check leaves the floating-point range"), "{e}");
+    assert!(
+        e.starts_with("assess.toml: site.SLD: the SLD activation check leaves the floating-point range"),
+        "{e}"
+    );
     assert!(e.contains("ζ_E inf, at ag = 5e-324 g"), "{e}");
     let e = refused("ag = 0.155", "ag = 5e-324");
     assert!(e.starts_with("assess.toml: site.SLV: the SLV linear_kinematic check"), "{e}");
@@ -45,12 +48,18 @@ fn an_ag_whose_ratio_overflows_is_refused() {
 fn a_q_whose_capacity_overflows_is_refused() {
     // q times 0.207 g over 0.155 g exceeds the largest double: q's fault, as q = 1 would be finite.
     let e = refused("q = 2.0", "q = 1.7e308");
-    assert!(e.starts_with("assess.toml: assessment.q: the SLV linear_kinematic check leaves the floating-point range"), "{e}");
+    assert!(
+        e.starts_with("assess.toml: assessment.q: the SLV linear_kinematic check leaves the floating-point range"),
+        "{e}"
+    );
     assert!(e.ends_with("ζ_E inf, at ag = 0.155 g (q = 1.7e308)"), "{e}");
 }
 
 #[test]
 fn an_f0_whose_demand_overflows_is_refused() {
     let e = refused("F0 = 2.47", "F0 = 1.7e308");
-    assert!(e.starts_with("assess.toml: site.SLV: the SLV nonlinear_kinematic check leaves the floating-point range: demand inf m"), "{e}");
+    assert!(
+        e.starts_with("assess.toml: site.SLV: the SLV nonlinear_kinematic check leaves the floating-point range: demand inf m"),
+        "{e}"
+    );
 }
