@@ -329,6 +329,36 @@ fn set_down_at(fell_back: Option<(usize, f64)>, t: f64) -> Option<usize> {
     fell_back.filter(|&(_, at)| at.to_bits() == t.to_bits()).map(|(k, _)| k)
 }
 
+/// The regime switches counted at one instant.
+#[derive(Debug, Default)]
+struct Switches {
+    /// The instant (s).
+    time: f64,
+    /// How many there were at it.
+    count: usize,
+}
+
+impl Switches {
+    /// The most switches at one instant.
+    const MAX: usize = 4 * MAX_BLOCKS + 4;
+
+    /// Counts a switch at `t`: an error past [`Switches::MAX`] at one instant.
+    fn count(&mut self, t: f64) -> Result<(), Error> {
+        if t.to_bits() == self.time.to_bits() {
+            self.count += 1;
+        } else {
+            *self = Self { time: t, count: 1 };
+        }
+        if self.count > Self::MAX {
+            return Err(Error::Chattering {
+                time: t,
+                last: "stack transition",
+            });
+        }
+        Ok(())
+    }
+}
+
 struct Runner<'a, const S: usize> {
     stack: &'a Stack,
     ground: &'a GroundMotion,
@@ -466,6 +496,26 @@ impl<const S: usize> Runner<'_, S> {
         }
     }
 
+    /// The side a slip of the sticking building starts towards at `t`: the
+    /// demand reached μs N, and the building slips against it, even where
+    /// the root lies exactly on the equality. Where the demand itself is
+    /// zero (a building without friction, μs = 0, under an input that starts
+    /// from zero) its sign says nothing: the slip starts against its growth,
+    /// the sign of its time derivative, as the tower's slip condition of the
+    /// side it grows towards is the one that holds (`engine::transition`).
+    fn slip_side(&self, regime: &StackRegime, t: f64, state: &StackState) -> SlipDirection {
+        let piece = self.ground.segment(t).piece;
+        let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity);
+        let demand = self.stack.friction_force(&snap);
+        if demand != 0.0 {
+            return SlipDirection::of_sign(-demand);
+        }
+        let y = self.pack(state);
+        let rate = self.rhs(&Coordinates::of(self.stack, regime), regime, &piece, t, &y);
+        let growth = self.stack.friction_force(&self.instant(regime, &piece, t, &y, &rate).snap).d;
+        SlipDirection::of_sign(-growth)
+    }
+
     /// The transition of `watch`, due at `t`: the new regime and state, the
     /// event's kind and the seat impulse ratio of an impact.
     fn switch(&self, regime: &StackRegime, watch: Watch, t: f64, state: &StackState) -> (StackRegime, StackState, StackEventKind, f64) {
@@ -503,10 +553,7 @@ impl<const S: usize> Runner<'_, S> {
                 )
             }
             Watch::Slip => {
-                // The demand reached μs N: the building slips against it, even
-                // where the root lies exactly on the equality.
-                let snap = self.stack.snapshot(regime, &state, self.ground.acceleration(t), self.stack.gravity);
-                let building = BuildingRegime::Slip(SlipDirection::of_sign(-self.stack.friction_force(&snap)));
+                let building = BuildingRegime::Slip(self.slip_side(regime, t, &state));
                 (regime.with_building(building), state, StackEventKind::Slip, 0.0)
             }
             Watch::Stop => {
@@ -622,7 +669,12 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t0, c0.v));
                 interior_extrema(t0, c0, t1, c1, &mut |t| inside(t), |(_, hi)| hi >= 0.0, &mut |t, v| points.push((t, v)));
                 points.push((t1, c1.v));
-                first_crossing(points.as_slice(), watch.on_zero(fell_back), regula_falsi, leaving)
+                // Zero at two consecutive points, monotone between: zero all
+                // along (the demand of a building at rest without friction,
+                // |F| = μs N = 0). It has not grown there: the search starts
+                // where it last is zero, which the motion may leave.
+                let stays = points.as_slice().windows(2).take_while(|w| w[0].1 == 0.0 && w[1].1 == 0.0).count();
+                first_crossing(&points.as_slice()[stays..], watch.on_zero(fell_back), regula_falsi, leaving)
             };
             if let Some(te) = hit {
                 if best.is_none_or(|(_, tb)| te < tb) {
@@ -659,17 +711,14 @@ impl<const S: usize> Runner<'_, S> {
         let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
         // The interface last set down and the instant ([`StackEventKind::SetDown`]).
         let mut fell_back: Option<(usize, f64)> = None;
+        // The regime switches at one instant: those that hold at once and the
+        // crossings a step finds at its very start, which do not advance the
+        // time either. Beyond a few per interface they do not settle.
+        let mut switches = Switches::default();
         'run: loop {
             // Switch at once while a condition already holds.
-            let mut switches = 0;
             while let Some(watch) = self.due_now(&regime, t, &state, set_down_at(fell_back, t)) {
-                switches += 1;
-                if switches > 4 * MAX_BLOCKS + 4 {
-                    return Err(Error::Chattering {
-                        time: t,
-                        last: "stack transition",
-                    });
-                }
+                switches.count(t)?;
                 if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
                     break 'run;
                 }
@@ -735,6 +784,7 @@ impl<const S: usize> Runner<'_, S> {
                 }
                 t = reached;
                 if let Some((watch, te)) = crossing {
+                    switches.count(te)?;
                     state = self.unpack(&dense.state(te));
                     if self.apply(&mut out, &mut regime, &mut state, watch, te, hook)? {
                         break 'run;
