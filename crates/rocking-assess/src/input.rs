@@ -184,7 +184,7 @@ impl AssessmentInput {
     /// The kinematic checks ([`crate::kinematic_checks`]): activation, linear,
     /// non-linear (two), each with finite numbers. A check whose numbers leave
     /// the floating-point range is refused, naming the key: the limit state's
-    /// site (an `ag` of 1e-320 g, whose ζ_E = a_g,capacity / a_g overflows; an
+    /// `ag` (1e-320 g, whose ζ_E = a_g,capacity / a_g overflows), its site (an
     /// `F0` of 1e308, whose demand does), or `assessment.q` (a `q` of 1e308).
     pub fn kinematic_checks(&self, capacity: &Capacity) -> Result<Vec<Check>, Error> {
         let checks =
@@ -192,10 +192,14 @@ impl AssessmentInput {
         match checks.iter().find(|c| !c.is_finite()) {
             None => Ok(checks),
             Some(c) => {
-                // The linear check's capacity is q times the activation's: q is at fault when the check would be finite with q = 1.
+                // The linear check's capacity is q times the activation's: q is at
+                // fault when the check would be finite with q = 1. Else a ζ_E alone
+                // out of range is its ag's fault (too small), a demand the spectrum's.
                 let q_at_fault = c.method == Method::LinearKinematic && (c.capacity / self.file.q / c.ag).is_finite();
                 let key = if q_at_fault {
                     "assessment.q".to_string()
+                } else if c.demand.is_finite() && c.capacity.is_finite() {
+                    format!("site.{}.ag", c.limit_state)
                 } else {
                     format!("site.{}", c.limit_state)
                 };

@@ -36,12 +36,12 @@ fn an_ag_whose_ratio_overflows_is_refused() {
     // The SLD's activation capacity is 0.207 g (the unchanged tower), over 5e-324 g: ζ_E = ∞.
     let e = refused("ag = 0.062", "ag = 5e-324");
     assert!(
-        e.starts_with("assess.toml: site.SLD: the SLD activation check leaves the floating-point range"),
+        e.starts_with("assess.toml: site.SLD.ag: the SLD activation check leaves the floating-point range"),
         "{e}"
     );
     assert!(e.contains("ζ_E inf, at ag = 5e-324 g"), "{e}");
     let e = refused("ag = 0.155", "ag = 5e-324");
-    assert!(e.starts_with("assess.toml: site.SLV: the SLV linear_kinematic check"), "{e}");
+    assert!(e.starts_with("assess.toml: site.SLV.ag: the SLV linear_kinematic check"), "{e}");
 }
 
 #[test]
