@@ -726,6 +726,17 @@ impl<const S: usize> Runner<'_, S> {
             if t >= settings.duration {
                 break;
             }
+            if Coordinates::of(self.stack, &regime).is_empty() {
+                // Nothing moves relative to the ground: no integration.
+                let (reached, met) = self.at_rest(&mut out, &regime, &state, t, set_down_at(fell_back, t), &mut next_sample, hook)?;
+                t = reached;
+                if let Some(watch) = met {
+                    if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
+                        break 'run;
+                    }
+                }
+                continue 'run;
+            }
             let y = self.pack(&state);
             let current = regime;
             // The input's piece holds up to its next kink, where the run restarts.
@@ -773,15 +784,7 @@ impl<const S: usize> Runner<'_, S> {
                 if let ControlFlow::Break(halt) = hook.step(&regime, &stretch) {
                     return Err(Error::halted(halt, t0));
                 }
-                while (next_sample as f64) * settings.sample_interval <= reached && (next_sample as f64) * settings.sample_interval <= settings.duration {
-                    let ts = next_sample as f64 * settings.sample_interval;
-                    out.samples.push(StackSample {
-                        time: ts,
-                        state: self.unpack(&dense.state(ts)),
-                        regime,
-                    });
-                    next_sample += 1;
-                }
+                self.take_samples(&mut out, &regime, &mut next_sample, reached, |ts| self.unpack(&dense.state(ts)));
                 t = reached;
                 if let Some((watch, te)) = crossing {
                     switches.count(te)?;
@@ -807,6 +810,96 @@ impl<const S: usize> Runner<'_, S> {
         }
         out.evaluations = stepper.evaluations;
         Ok(out)
+    }
+
+    /// The samples due up to `reached` (and the duration), the state at each
+    /// from `at`.
+    fn take_samples(&self, out: &mut StackRun, regime: &StackRegime, next_sample: &mut usize, reached: f64, at: impl Fn(f64) -> StackState) {
+        let settings = self.settings;
+        while (*next_sample as f64) * settings.sample_interval <= reached && (*next_sample as f64) * settings.sample_interval <= settings.duration {
+            let ts = *next_sample as f64 * settings.sample_interval;
+            out.samples.push(StackSample {
+                time: ts,
+                state: at(ts),
+                regime: *regime,
+            });
+            *next_sample += 1;
+        }
+    }
+
+    /// The stack at rest from `t` (every interface stuck, the building
+    /// sticking or none), up to the first watched condition met, or the end
+    /// of the run: nothing moves relative to the ground, so the state is
+    /// constant and each condition follows the input alone. Every block
+    /// moves with the ground, so `M_k`, the loads along the surfaces and
+    /// `F_req` are affine in `a_g` and the normal forces constant: each
+    /// interface's uplift `|M_k| − N_k B_k/2` and the building's slip
+    /// `|F_req| − μs N` are convex in `a_g`. On a monotone stretch of the
+    /// input such a condition is at most its larger end, and crosses zero at
+    /// most once upwards. As the tower's static phase, the run moves from one
+    /// stretch to the next, or to the first crossing on the way, with no
+    /// integration; `fell_back`: the interface set down at `t`. Returns where
+    /// it stopped and the condition met there, if one was.
+    #[allow(clippy::too_many_arguments)]
+    fn at_rest(
+        &self,
+        out: &mut StackRun,
+        regime: &StackRegime,
+        state: &StackState,
+        mut t: f64,
+        mut fell_back: Option<usize>,
+        next_sample: &mut usize,
+        hook: &mut dyn Hook,
+    ) -> Result<(f64, Option<Watch>), Error> {
+        let y = self.pack(state);
+        let watches = self.watches(regime);
+        while t < self.settings.duration {
+            let segment = self.ground.segment(t);
+            let (piece, t1) = (segment.piece, segment.end.min(self.settings.duration));
+            let instant = |t: f64| self.instant(regime, &piece, t, &y, &[0.0; S]);
+            let (start, end) = (instant(t), instant(t1));
+            let mut met: Option<(Watch, f64)> = None;
+            for &watch in &watches {
+                let (v0, v1) = (self.condition(watch, &start.snap).v, self.condition(watch, &end.snap).v);
+                // Above zero at the start (the input jumped there): met at once.
+                let at_once = v0 > 0.0 && !matches!(watch, Watch::Uplift(k) if fell_back == Some(k));
+                let value = |t: f64| self.value(regime, &piece, watch, t, state);
+                let hit = if at_once {
+                    Some(t)
+                } else {
+                    first_crossing(
+                        &[(t, v0), (t1, v1)],
+                        watch.on_zero(fell_back),
+                        |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
+                        |ta, tb| leaving_point(&value, ta, tb),
+                    )
+                };
+                if let Some(te) = hit {
+                    if met.is_none_or(|(_, tb)| te < tb) {
+                        met = Some((watch, te));
+                    }
+                }
+            }
+            let reached = met.map_or(t1, |(_, te)| te);
+            let stretch = Stretch {
+                t0: t,
+                t1,
+                reached,
+                at: &|_| *state,
+                ends: Some((&start, &end)),
+                inside: &instant,
+            };
+            if let ControlFlow::Break(halt) = hook.step(regime, &stretch) {
+                return Err(Error::halted(halt, t));
+            }
+            self.take_samples(out, regime, next_sample, reached, |_| *state);
+            t = reached;
+            if let Some((watch, _)) = met {
+                return Ok((t, Some(watch)));
+            }
+            fell_back = None;
+        }
+        Ok((t, None))
     }
 
     /// Raises each rocking block's largest `|θ_k|` to the extremes of the
