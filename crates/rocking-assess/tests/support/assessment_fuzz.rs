@@ -1,6 +1,6 @@
 // What the `assessment` fuzz target does with one input, shared by the target
 // (`fuzz/fuzz_targets/assessment.rs`, through `include!`) and the stable
-// replay of the kept inputs (`tests/assessment_fuzz_corpus.rs`): the input is
+// replay of the kept inputs (`tests/fuzz_corpora.rs`): the input is
 // an assessment file's text, parsed and validated as `rocking assess` does,
 // then the tower's capacity and its kinematic checks, and those of each block
 // on it. The file may be refused with one line naming it, never a panic; what

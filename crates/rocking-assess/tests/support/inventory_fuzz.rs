@@ -1,6 +1,6 @@
 // What the `inventory` fuzz target does with one input, shared by the target
 // (`fuzz/fuzz_targets/inventory.rs`, through `include!`) and the stable
-// replay of the kept inputs (`tests/inventory_fuzz_corpus.rs`): the first
+// replay of the kept inputs (`tests/fuzz_corpora.rs`): the first
 // byte picks the assessment file the towers start from, the rest is the
 // towers' CSV. An even byte: the tests' tower on subsoil B
 // (`tests/data/tower_on_b.toml`, its site's parameters given) with a belfry
