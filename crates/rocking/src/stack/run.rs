@@ -329,6 +329,17 @@ fn set_down_at(fell_back: Option<(usize, f64)>, t: f64) -> Option<usize> {
     fell_back.filter(|&(_, at)| at.to_bits() == t.to_bits()).map(|(k, _)| k)
 }
 
+/// `points` of a Kane condition (ordered, the condition monotone between
+/// consecutive ones) from the last of those at its start that are zero:
+/// zero at two consecutive points is zero all along (the demand of a
+/// building at rest without friction, `|F| = μs N = 0`). It has not grown
+/// there: the search starts where it last is zero, which the motion may
+/// leave.
+fn from_last_zero(points: &[(f64, f64)]) -> &[(f64, f64)] {
+    let stays = points.windows(2).take_while(|w| w[0].1 == 0.0 && w[1].1 == 0.0).count();
+    &points[stays..]
+}
+
 /// The regime switches counted at one instant, and within a short window.
 #[derive(Debug, Default)]
 struct Switches {
@@ -689,12 +700,7 @@ impl<const S: usize> Runner<'_, S> {
                 points.push((t0, c0.v));
                 interior_extrema(t0, c0, t1, c1, &mut |t| inside(t), |(_, hi)| hi >= 0.0, &mut |t, v| points.push((t, v)));
                 points.push((t1, c1.v));
-                // Zero at two consecutive points, monotone between: zero all
-                // along (the demand of a building at rest without friction,
-                // |F| = μs N = 0). It has not grown there: the search starts
-                // where it last is zero, which the motion may leave.
-                let stays = points.as_slice().windows(2).take_while(|w| w[0].1 == 0.0 && w[1].1 == 0.0).count();
-                first_crossing(&points.as_slice()[stays..], watch.on_zero(fell_back), regula_falsi, leaving)
+                first_crossing(from_last_zero(points.as_slice()), watch.on_zero(fell_back), regula_falsi, leaving)
             };
             if let Some(te) = hit {
                 if best.is_none_or(|(_, tb)| te < tb) {
@@ -751,6 +757,7 @@ impl<const S: usize> Runner<'_, S> {
                 let (reached, met) = self.at_rest(&mut out, &regime, &state, t, set_down_at(fell_back, t), &mut next_sample, hook)?;
                 t = reached;
                 if let Some(watch) = met {
+                    switches.count(t)?;
                     if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
                         break 'run;
                     }
@@ -888,7 +895,7 @@ impl<const S: usize> Runner<'_, S> {
                     Some(t)
                 } else {
                     first_crossing(
-                        &[(t, v0), (t1, v1)],
+                        from_last_zero(&[(t, v0), (t1, v1)]),
                         watch.on_zero(fell_back),
                         |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb,
                         |ta, tb| leaving_point(&value, ta, tb),
