@@ -765,7 +765,7 @@ pub const SUMMARY: &[Field] = &[
         name: "max_seat_impulse_ratio",
         kind: Kind::Number,
         unit: "",
-        meaning: "(with `[[block]]`) the largest ratio of the impulsive moment a seated interface carried through an impact elsewhere to the most its base can carry, V_imp B/2: the model keeps it seated, and above 1 that assumption is violated (the block would tip)",
+        meaning: "(with `[[block]]`) the largest ratio of the impulsive moment a seated interface carried through an impact elsewhere to the most its base can carry, V_imp B/2: the model keeps it seated, and above 1 that assumption is violated (the block would tip); empty where a seat would have had to pull the blocks above it down (V_imp ≤ 0: they would have been thrown off it, an infinite ratio)",
         present: stacked,
         read: |o| float(o.summary.stack.map(|s| s.max_seat_impulse_ratio)),
     },
