@@ -778,12 +778,12 @@ impl<const S: usize> Runner<'_, S> {
             let wants_instants = hook.wants_instants() || sampled;
             let mut start = wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f));
             loop {
-                // The conditions that need Kane's equations follow the input
-                // itself (at rest, its value alone): their steps end at its
-                // extrema as well, so that the input is monotone on each, as
-                // the tower's static phase moves from one monotone stretch
-                // to the next. A seated stack's uplift is then monotone on a
-                // step, and its ends show it.
+                // While a condition that needs Kane's equations is watched (a
+                // seated block under a rocking one, a sticking building),
+                // steps end at the input's extrema as well, so that the
+                // input is monotone on each; a seated block's uplift inside
+                // one is searched on its exact slopes. (A stack wholly at
+                // rest is not stepped: `at_rest`.)
                 let bound = if sampled { self.ground.segment(t).end.min(kink) } else { kink };
                 stepper.step(&mut rhs, bound).map_err(|e| match e {
                     StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
