@@ -122,6 +122,57 @@ fn split<T: Real>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; M
     (theta_ddot, slip_acc)
 }
 
+/// `σ` of a slipping building whose slip is one of `coords`, `None` otherwise.
+fn slip_direction(coords: &Coordinates, regime: &StackRegime) -> Option<f64> {
+    match (coords.slip(), regime.building) {
+        (Some(_), BuildingRegime::Slip(d)) => Some(d.sign()),
+        _ => None,
+    }
+}
+
+/// The arms of two rocking blocks that [`Stack::two_rocking`] reads:
+/// `r_1 = G_1 − O_1`, `d = O_2 − O_1`, `r_2 = G_2 − O_2` (so that `G_2 −
+/// O_1 = d + r_2`), and the absolute angular velocities `φ̇_1`, `φ̇_2`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TwoArms<T> {
+    r1: Vec2<T>,
+    d: Vec2<T>,
+    r2: Vec2<T>,
+    w1: T,
+    w2: T,
+}
+
+impl TwoArms<f64> {
+    /// The arms at `θ`, `θ̇` on the corners `s` (geometry.rs's positions,
+    /// without the rest of the pose: the right-hand side needs no more).
+    #[inline(always)]
+    fn of(stack: &Stack, s: [f64; 2], theta: [f64; 2], theta_dot: [f64; 2]) -> Self {
+        let [lower, upper] = [&stack.blocks[0], &stack.blocks[1]];
+        let (rot1, rot2) = (crate::trig::sin_cos(theta[0]), crate::trig::sin_cos(theta[0] + theta[1]));
+        Self {
+            r1: rotate(rot1, [-s[0] * lower.width / 2.0, lower.height / 2.0]),
+            d: rotate(rot1, [(s[1] * upper.width - s[0] * lower.width) / 2.0, lower.height]),
+            r2: rotate(rot2, [-s[1] * upper.width / 2.0, upper.height / 2.0]),
+            w1: theta_dot[0],
+            w2: theta_dot[0] + theta_dot[1],
+        }
+    }
+}
+
+impl<T: Real> TwoArms<T> {
+    /// The arms read from a pose of two rocking blocks.
+    #[inline]
+    fn in_pose(pose: &Pose<T>) -> Self {
+        Self {
+            r1: sub(pose.centre[0], pose.corner[0]),
+            d: sub(pose.corner[1], pose.corner[0]),
+            r2: sub(pose.centre[1], pose.corner[1]),
+            w1: pose.phi_dot[0],
+            w2: pose.phi_dot[1],
+        }
+    }
+}
+
 impl InterfaceLoad<crate::jet::Jet> {
     /// The load's values, without their time derivatives.
     pub(crate) fn values(&self) -> InterfaceLoad {
@@ -221,6 +272,18 @@ impl Stack {
         // and free of bounds checks: a third fewer instructions per
         // evaluation of two rocking blocks than one padded system for every
         // order. Larger systems, rarer, share one padded code.
+        if self.len() == 2 && frame.pose.pivots[0].is_some() && frame.pose.pivots[1].is_some() {
+            let sigma = slip_direction(frame.coords, regime);
+            let ([t1, t2], slip_acc) = self.two_rocking(&TwoArms::in_pose(frame.pose), sigma, a_g, g_e);
+            let mut q_ddot = [real(0.0); MAX_COORDINATES];
+            // In the coordinates' order: the slip first, if it is one.
+            let first = match sigma {
+                Some(_) => [slip_acc, t1, t2],
+                None => [t1, t2, real(0.0)],
+            };
+            q_ddot[..3].copy_from_slice(&first);
+            return q_ddot;
+        }
         match frame.coords.len() {
             0 => [real(0.0); MAX_COORDINATES],
             1 => self.solve_kane_of::<T, 1>(frame, sigma, a_g, g_e),
@@ -246,13 +309,12 @@ impl Stack {
 
     /// Kane's equations of two blocks that both rock ([`Stack::kane_system`]
     /// solved, written out; the right-hand side of most of a belfry's run),
-    /// on the corners `s = (s_1, s_2)`, at `θ = (θ_1, θ_2)`, `θ̇`, the
-    /// building slipping towards `sigma` or not at all: `(θ̈_1, θ̈_2)` and
-    /// `ü` (0 without the slip), NaN where the system has no solution.
+    /// from the arms `arms` of the pose, the building slipping towards
+    /// `sigma` or not at all: `(θ̈_1, θ̈_2)` and `ü` (0 without the slip), NaN
+    /// where the system has no solution.
     ///
-    /// With `r_1 = G_1 − O_1`, `d = O_2 − O_1`, `r_2 = G_2 − O_2` and
-    /// `e = G_2 − O_1 = d + r_2`, the partials are `∂G_1/∂θ_1 = J(r_1)`,
-    /// `∂G_2/∂θ_1 = J(e)`, `∂G_2/∂θ_2 = J(r_2)`, every `∂φ/∂θ` is 1 or 0, and
+    /// With the partials `∂G_1/∂θ_1 = J(r_1)`, `∂G_2/∂θ_1 = J(e)`,
+    /// `∂G_2/∂θ_2 = J(r_2)` ([`TwoArms`]), every `∂φ/∂θ` 1 or 0, and
     /// `J(w)·J(v) = w·v`, `J(w)·l = l × w`:
     ///
     /// ```text
@@ -270,45 +332,43 @@ impl Stack {
     /// c·A⁻¹b)`, and the system is singular where that denominator is not
     /// positive (the full determinant is `det A` times it), as
     /// [`Stack::kane_system`]'s solve says. Tested against it (`tests`).
-    #[inline]
-    pub(crate) fn two_rocking(&self, s: [f64; 2], theta: [f64; 2], theta_dot: [f64; 2], sigma: Option<f64>, a_g: f64, g_e: f64) -> ([f64; 2], f64) {
+    #[inline(always)]
+    pub(crate) fn two_rocking<T: Real>(&self, arms: &TwoArms<T>, sigma: Option<f64>, a_g: T, g_e: T) -> ([T; 2], T) {
         let [lower, upper] = [&self.blocks[0], &self.blocks[1]];
         let (m1, m2) = (lower.mass, upper.mass);
-        let (rot1, rot2) = (crate::trig::sin_cos(theta[0]), crate::trig::sin_cos(theta[0] + theta[1]));
-        let (w1, w2) = (theta_dot[0], theta_dot[0] + theta_dot[1]);
-        let r1 = rotate(rot1, [-s[0] * lower.width / 2.0, lower.height / 2.0]);
-        let d = rotate(rot1, [(s[1] * upper.width - s[0] * lower.width) / 2.0, lower.height]);
-        let r2 = rotate(rot2, [-s[1] * upper.width / 2.0, upper.height / 2.0]);
+        let TwoArms { r1, d, r2, w1, w2 } = *arms;
         let e = add(d, r2);
-        let c1 = scale(r1, -w1 * w1);
-        let c2 = sub(scale(d, -w1 * w1), scale(r2, w2 * w2));
+        let c1 = scale(r1, -(w1 * w1));
+        let c2 = sub(scale(d, -(w1 * w1)), scale(r2, w2 * w2));
         let (l1, l2) = ([a_g + c1[0], g_e + c1[1]], [a_g + c2[0], g_e + c2[1]]);
-        let a11 = m1 * dot(r1, r1) + lower.inertia_centre + m2 * dot(e, e) + upper.inertia_centre;
-        let a12 = m2 * dot(e, r2) + upper.inertia_centre;
-        let a22 = m2 * dot(r2, r2) + upper.inertia_centre;
-        let f = [-(m1 * cross(l1, r1) + m2 * cross(l2, e)), -(m2 * cross(l2, r2))];
+        let a11 = dot(r1, r1) * m1 + lower.inertia_centre + dot(e, e) * m2 + upper.inertia_centre;
+        let a12 = dot(e, r2) * m2 + upper.inertia_centre;
+        let a22 = dot(r2, r2) * m2 + upper.inertia_centre;
+        let f = [-(cross(l1, r1) * m1 + cross(l2, e) * m2), -(cross(l2, r2) * m2)];
         let det = a11 * a22 - a12 * a12;
-        let solve_a = |v: [f64; 2]| [(v[0] * a22 - a12 * v[1]) / det, (a11 * v[1] - a12 * v[0]) / det];
-        if det <= 0.0 {
-            return ([f64::NAN; 2], f64::NAN);
+        let nan = real::<T>(f64::NAN);
+        if det.value() <= 0.0 {
+            return ([nan; 2], nan);
         }
+        let solve_a = |v: [T; 2]| [(v[0] * a22 - a12 * v[1]) / det, (a11 * v[1] - a12 * v[0]) / det];
         let x = solve_a(f);
-        let Some(sigma) = sigma else { return (x, 0.0) };
+        let Some(sigma) = sigma else { return (x, real(0.0)) };
         let mu = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
-        let b = [m1 * r1[1] + m2 * e[1], m2 * r2[1]];
+        let b = [r1[1] * m1 + e[1] * m2, r2[1] * m2];
         let weight = g_e * self.total_mass();
+        let pushed = -(a_g * self.building_mass() + l1[0] * m1 + l2[0] * m2);
         let (c, f_u) = if self.dynamic_normal_force() {
             (
-                [b[0] - mu * (m1 * r1[0] + m2 * e[0]), b[1] - mu * m2 * r2[0]],
-                -(self.building_mass() * a_g + m1 * l1[0] + m2 * l2[0]) - mu * (weight + m1 * c1[1] + m2 * c2[1]),
+                [b[0] - (r1[0] * m1 + e[0] * m2) * mu, b[1] - r2[0] * (m2 * mu)],
+                pushed - (weight + c1[1] * m1 + c2[1] * m2) * mu,
             )
         } else {
-            (b, -(self.building_mass() * a_g + m1 * l1[0] + m2 * l2[0]) - mu * weight)
+            (b, pushed - weight * mu)
         };
         let y = solve_a(b);
-        let schur = self.total_mass() - dot(c, y);
-        if schur <= 0.0 || !schur.is_finite() {
-            return ([f64::NAN; 2], f64::NAN);
+        let schur = real::<T>(self.total_mass()) - dot(c, y);
+        if schur.value() <= 0.0 || !schur.value().is_finite() {
+            return ([nan; 2], nan);
         }
         let slip_acc = (f_u - dot(c, x)) / schur;
         ([x[0] - y[0] * slip_acc, x[1] - y[1] * slip_acc], slip_acc)
@@ -327,18 +387,13 @@ impl Stack {
     #[inline]
     pub(crate) fn accelerations_in(&self, coords: &Coordinates, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
         if let (2, [Some(p1), Some(p2), ..]) = (self.len(), regime.interfaces.map(|i| i.pivot())) {
-            let sigma = match (coords.slip(), regime.building) {
-                (Some(_), BuildingRegime::Slip(d)) => Some(d.sign()),
-                _ => None,
-            };
-            let ([t1, t2], slip_acc) = self.two_rocking(
+            let arms = TwoArms::of(
+                self,
                 [p1.sign(), p2.sign()],
                 [state.theta[0], state.theta[1]],
                 [state.theta_dot[0], state.theta_dot[1]],
-                sigma,
-                a_g,
-                g_e,
             );
+            let ([t1, t2], slip_acc) = self.two_rocking(&arms, slip_direction(coords, regime), a_g, g_e);
             let mut theta_ddot = [0.0; MAX_BLOCKS];
             (theta_ddot[0], theta_ddot[1]) = (t1, t2);
             return (theta_ddot, slip_acc);
@@ -514,6 +569,7 @@ impl Stack {
 mod tests {
     use super::*;
     use crate::body::Building;
+    use crate::jet::Jet;
     use crate::regime::{Pivot, SlipDirection};
     use crate::stack::{Block, Interface};
 
@@ -528,11 +584,14 @@ mod tests {
 
     /// `θ̈` and `ü` of [`Stack::kane_system`] solved by elimination: the
     /// generic path, which the written-out [`Stack::two_rocking`] replaces.
-    fn generic(stack: &Stack, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
-        let pose = Pose::new(stack, regime, state);
+    fn generic<T: Real>(stack: &Stack, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> ([T; MAX_BLOCKS], T) {
+        let pose = Pose::of(stack, regime, theta, theta_dot);
         let coords = Coordinates::of(stack, regime);
         let frame = Frame::new(&coords, &pose);
-        split(&coords, &stack.solve_kane(&frame, regime, a_g, g_e))
+        split(
+            &coords,
+            &stack.solve_kane_of::<T, MAX_COORDINATES>(&frame, slip_direction(&coords, regime).unwrap_or(0.0), a_g, g_e),
+        )
     }
 
     /// Both interfaces rocking, on every pair of corners, on a fixed base and
@@ -575,8 +634,20 @@ mod tests {
                                 for g_e in [G, G + 2.5] {
                                     let coords = Coordinates::of(&stack, &regime);
                                     let (fast, fast_u) = stack.accelerations_in(&coords, &regime, &state, a_g, g_e);
-                                    let (slow, slow_u) = generic(&stack, &regime, &state, a_g, g_e);
-                                    for (a, b) in [(fast[0], slow[0]), (fast[1], slow[1]), (fast_u, slow_u)] {
+                                    let (slow, slow_u) = generic(&stack, &regime, &state.theta, &state.theta_dot, a_g, g_e);
+                                    // On jets (θ with θ̇, θ̇ with θ̈, a_g with a rate): the
+                                    // snapshot's solve, values and time derivatives.
+                                    let jets =
+                                        |x: &[f64; MAX_BLOCKS], dx: &[f64; MAX_BLOCKS]| -> [Jet; MAX_BLOCKS] { std::array::from_fn(|k| Jet::new(x[k], dx[k])) };
+                                    let (theta, theta_dot) = (jets(&state.theta, &state.theta_dot), jets(&state.theta_dot, &slow));
+                                    let (a_g_jet, g_e_jet) = (Jet::new(a_g, 25.0), Jet::from(g_e));
+                                    let snap = stack.snapshot_of(&regime, &theta, &theta_dot, a_g_jet, g_e_jet);
+                                    let (jet, jet_u) = generic(&stack, &regime, &theta, &theta_dot, a_g_jet, g_e_jet);
+                                    let mut pairs = vec![(fast[0], slow[0]), (fast[1], slow[1]), (fast_u, slow_u)];
+                                    for (a, b) in [(snap.theta_ddot[0], jet[0]), (snap.theta_ddot[1], jet[1]), (snap.slip_acc, jet_u)] {
+                                        pairs.extend([(a.v, b.v), (a.d, b.d)]);
+                                    }
+                                    for (a, b) in pairs {
                                         assert!(
                                             (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0),
                                             "{regime:?} {state:?} a_g={a_g} g_e={g_e}: {a} vs {b}"
@@ -611,7 +682,7 @@ mod tests {
             let state = StackState::default();
             let coords = Coordinates::of(&stack, &regime);
             let (fast, _) = stack.accelerations_in(&coords, &regime, &state, 0.0, G);
-            let (slow, _) = generic(&stack, &regime, &state, 0.0, G);
+            let (slow, _) = generic(&stack, &regime, &state.theta, &state.theta_dot, 0.0, G);
             assert_eq!(fast[0].is_nan(), slow[0].is_nan(), "μk = {mu_k}: {fast:?} vs {slow:?}");
             if slow[0].is_nan() {
                 singular += 1;
