@@ -19,6 +19,7 @@
 //! every step and at every event (its extremes are the ends of a slip).
 
 use super::dynamics::{InterfaceLoad, Snapshot};
+use super::geometry::Coordinates;
 use super::run::{run_with, BlockSummary, Hook, RunSettings, StackEvent, StackEventKind, Stretch};
 use super::{Interface, Stack, StackRegime, StackState, MAX_BLOCKS};
 use crate::equations::Kernel;
@@ -172,9 +173,9 @@ struct Reporter<'a, O: Observer> {
 
 /// The response at `t` in `regime` and `state`, as the tower's sample with
 /// every interface's state.
-fn sample(stack: &Stack, kernel: &Kernel, ground: &GroundMotion, regime: &StackRegime, state: &StackState, t: f64) -> Sample {
-    let a_g = ground.acceleration(t);
-    let (theta_ddot, slip_acc) = stack.accelerations(regime, state, a_g, stack.gravity());
+/// `a_g`: the ground's acceleration there; `coords`: the regime's coordinates.
+fn sample(stack: &Stack, kernel: &Kernel, a_g: f64, coords: &Coordinates, regime: &StackRegime, state: &StackState, t: f64) -> Sample {
+    let (theta_ddot, slip_acc) = stack.accelerations_in(coords, regime, state, a_g, stack.gravity());
     let pivot = regime.interfaces[0].pivot();
     let (top_dx, top_abs_acc) = kernel.point_kinematics(
         pivot.map(Pivot::sign),
@@ -370,11 +371,15 @@ impl<O: Observer> Hook for Reporter<'_, O> {
         let at = stretch.at;
         self.last = (reached, *regime, at(reached));
         if self.observer.wants_steps() {
-            let (stack, kernel, ground) = (self.stack, self.kernel, self.ground);
-            let sampler = |t: f64| sample(stack, kernel, ground, regime, &at(t), t);
+            let (stack, kernel, ground, segment) = (self.stack, self.kernel, self.ground, self.ground.segment(t0));
+            let coords = Coordinates::of(stack, regime);
+            // The step's piece of the input holds up to its next kink, where
+            // the input's next piece starts (and a jump takes its value).
+            let a_g = |t: f64| if t < segment.kink { segment.piece.eval(t) } else { ground.acceleration(t) };
+            let sampler = |t: f64| sample(stack, kernel, a_g(t), &coords, regime, &at(t), t);
             let step = Step {
                 kernel: self.kernel,
-                piece: self.ground.segment(t0).piece,
+                piece: segment.piece,
                 vpiece: Piece::Constant(0.0),
                 interpolant: Interpolant::Constant(State::default()),
                 t0,
