@@ -13,15 +13,15 @@
 //! shared machine whose speed drifts by a factor of two from one minute to
 //! the next, the pair sees the same drift, and two runs of criterion do not.
 
-use rocking::stack::run::{run, RunSettings};
+use rocking::reference::stack_bench;
+use rocking::stack::run::run;
 use rocking::stack::{Block, Stack, StackState};
-use rocking::{reference::solid_block, simulate, Building, GroundMotion, Harmonic, Initial, Model, NormalForce, Settings};
+use rocking::{simulate, Initial, Model};
 use rocking_scenario::{Case, RunOptions, Scenario};
 use std::hint::black_box;
 use std::path::Path;
 use std::time::Instant;
 
-const G: f64 = 9.81;
 const BELFRY: &str = include_str!("../../../examples/belfry-on-church.toml");
 
 /// The median of `times` (s).
@@ -65,37 +65,26 @@ fn main() -> Result<(), String> {
         None => 200,
     };
     println!("{:<58} {:>12} {:>12} {:>7}", "pair (medians of the rounds)", "first", "second", "ratio");
-    let ground = GroundMotion::Harmonic(Harmonic::new(0.5 * G, 2.0, 20.0, 0.0).map_err(|e| e.to_string())?);
-    let settings = Settings {
-        duration: 20.0,
-        rtol: 1e-8,
-        atol: 1e-10,
-    };
-    let stack_settings = RunSettings {
-        duration: 20.0,
-        rtol: 1e-8,
-        atol: 1e-10,
-        sample_interval: 20.0,
-    };
-    let tower = solid_block(0.5, 2.0);
-    let upper = Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6).map_err(|e| e.to_string())?;
-    let sliding = Building::new(2.0e4, 0.4, 0.35, NormalForce::Dynamic).map_err(|e| e.to_string())?;
-    for (name, building) in [("fixed base", None), ("sliding building", Some(sliding))] {
-        let one = Model::new(Some(tower), building, G).map_err(|e| e.to_string())?;
+    let bench = stack_bench();
+    let (ground, settings, stack_settings) = (&bench.ground, &bench.settings, &bench.stack_settings);
+    let (tower, upper, gravity) = (bench.tower, bench.upper, bench.gravity);
+    for (name, building) in bench.bases {
+        let name = name.replace('_', " ");
+        let one = Model::new(Some(tower), building, gravity).map_err(|e| e.to_string())?;
         let two = one.clone().with_blocks(&[upper]).map_err(|e| e.to_string())?;
         let engine = || {
-            black_box(simulate(&one, &ground, Initial::default(), &settings, &mut ()).ok());
+            black_box(simulate(&one, ground, Initial::default(), settings, &mut ()).ok());
         };
         let stacked = || {
-            black_box(simulate(&two, &ground, Initial::default(), &settings, &mut ()).ok());
+            black_box(simulate(&two, ground, Initial::default(), settings, &mut ()).ok());
         };
         report(&format!("{name}: engine, one block / simulate, two"), pair(rounds, engine, stacked));
         let (stack_one, stack_two) = (
-            Stack::new(&[Block::from_tower(&tower)], building, G).map_err(|e| e.to_string())?,
-            Stack::new(&[Block::from_tower(&tower), upper], building, G).map_err(|e| e.to_string())?,
+            Stack::new(&[Block::from_tower(&tower)], building, gravity).map_err(|e| e.to_string())?,
+            Stack::new(&[Block::from_tower(&tower), upper], building, gravity).map_err(|e| e.to_string())?,
         );
         let by_stack = |s: &Stack| {
-            black_box(run(s, &ground, &StackState::default(), &stack_settings).ok());
+            black_box(run(s, ground, &StackState::default(), stack_settings).ok());
         };
         report(
             &format!("{name}: stack's stepper, one block / two"),

@@ -17,12 +17,11 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rocking::stack::run::{run, RunSettings};
+use rocking::reference::{stack_bench, StackBench};
+use rocking::stack::run::run;
 use rocking::stack::{Block, Stack, StackState};
-use rocking::{reference::solid_block, simulate, Building, GroundMotion, Harmonic, Initial, Model, NormalForce, Settings};
+use rocking::{simulate, Initial, Model};
 use std::hint::black_box;
-
-const G: f64 = 9.81;
 
 fn ok<T, E: std::fmt::Display>(r: Result<T, E>) -> T {
     match r {
@@ -32,41 +31,31 @@ fn ok<T, E: std::fmt::Display>(r: Result<T, E>) -> T {
 }
 
 fn stacks(c: &mut Criterion) {
-    let ground = GroundMotion::Harmonic(ok(Harmonic::new(0.5 * G, 2.0, 20.0, 0.0)));
-    let settings = Settings {
-        duration: 20.0,
-        rtol: 1e-8,
-        atol: 1e-10,
-    };
-    // Samples only at the start and the end: the engine's run records nothing either.
-    let stack_settings = RunSettings {
-        duration: 20.0,
-        rtol: 1e-8,
-        atol: 1e-10,
-        sample_interval: 20.0,
-    };
-    let tower = solid_block(0.5, 2.0);
+    let StackBench {
+        ground,
+        settings,
+        stack_settings,
+        tower,
+        upper,
+        bases,
+        gravity,
+    } = stack_bench();
     let lower = Block::from_tower(&tower);
-    // Density of the 0.5 m × 2 m block of 1000 kg, 1000 kg/m² in the plane.
-    let upper = ok(Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6));
-    for (name, building) in [
-        ("fixed_base", None),
-        ("sliding_building", Some(ok(Building::new(2.0e4, 0.4, 0.35, NormalForce::Dynamic)))),
-    ] {
-        let model = ok(Model::new(Some(tower), building, G));
+    for (name, building) in bases {
+        let model = ok(Model::new(Some(tower), building, gravity));
         c.bench_function(&format!("engine_one_block_{name}"), |b| {
             b.iter(|| simulate(black_box(&model), black_box(&ground), Initial::default(), &settings, &mut ()).map(|s| s.max_abs_theta()))
         });
-        let one = ok(Stack::new(&[lower], building, G));
+        let one = ok(Stack::new(&[lower], building, gravity));
         c.bench_function(&format!("stack_one_block_{name}"), |b| {
             b.iter(|| run(black_box(&one), black_box(&ground), &StackState::default(), &stack_settings).map(|r| r.events.len()))
         });
-        let two = ok(Stack::new(&[lower, upper], building, G));
+        let two = ok(Stack::new(&[lower, upper], building, gravity));
         c.bench_function(&format!("stack_two_blocks_{name}"), |b| {
             b.iter(|| run(black_box(&two), black_box(&ground), &StackState::default(), &stack_settings).map(|r| r.events.len()))
         });
         // The user's path: the same two blocks through `simulate`, with the summary kept.
-        let stacked = ok(ok(Model::new(Some(tower), building, G)).with_blocks(&[upper]));
+        let stacked = ok(ok(Model::new(Some(tower), building, gravity)).with_blocks(&[upper]));
         c.bench_function(&format!("simulate_two_blocks_{name}"), |b| {
             b.iter(|| simulate(black_box(&stacked), black_box(&ground), Initial::default(), &settings, &mut ()).map(|s| s.max_abs_theta()))
         });

@@ -128,3 +128,59 @@ mod tests {
         assert_relative_eq!(v, 2f64.powi(10) / 10.0, max_relative = 1e-14);
     }
 }
+
+/// The benchmark of a block carrying another (`benches/stack.rs`, and the
+/// interleaved ratios of `rocking-scenario`'s example `stack_ratios`): the
+/// 0.5 m × 2 m [`solid_block`] under 20 s of 0.5 g at 2 Hz (rtol 1e-8,
+/// atol 1e-10), carrying a 0.3 m × 0.6 m block of the same density, on a
+/// fixed base and on a sliding building (2 × 10⁴ kg, μs = 0.4, μk = 0.35,
+/// dynamic normal force). Both blocks rock in both cases.
+#[derive(Debug, Clone)]
+pub struct StackBench {
+    /// The input.
+    pub ground: crate::GroundMotion,
+    /// The engine's settings.
+    pub settings: crate::Settings,
+    /// The stack's stepper's: the same tolerances, samples only at the start
+    /// and the end (the engine's run records nothing either).
+    pub stack_settings: crate::stack::run::RunSettings,
+    /// The lower block, the tower.
+    pub tower: Tower,
+    /// The block it carries.
+    pub upper: crate::stack::Block,
+    /// The bases, by name: none (fixed) and the sliding building.
+    pub bases: [(&'static str, Option<crate::Building>); 2],
+    /// Gravity (m/s²).
+    pub gravity: f64,
+}
+
+/// The [`StackBench`] case.
+///
+/// # Panics
+/// If one of its constants were refused (a setup error, as [`solid_block`]'s).
+pub fn stack_bench() -> StackBench {
+    const G: f64 = 9.81;
+    let valid = |what: &str, e: &dyn std::fmt::Display| -> ! { panic!("the stack benchmark's {what} is invalid: {e}") };
+    let harmonic = crate::Harmonic::new(0.5 * G, 2.0, 20.0, 0.0).unwrap_or_else(|e| valid("input", &e));
+    // Density of the 0.5 m × 2 m block of 1000 kg: 1000 kg/m² in the plane.
+    let upper = crate::stack::Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6).unwrap_or_else(|e| valid("upper block", &e));
+    let building = crate::Building::new(2.0e4, 0.4, 0.35, crate::NormalForce::Dynamic).unwrap_or_else(|e| valid("building", &e));
+    StackBench {
+        ground: crate::GroundMotion::Harmonic(harmonic),
+        settings: crate::Settings {
+            duration: 20.0,
+            rtol: 1e-8,
+            atol: 1e-10,
+        },
+        stack_settings: crate::stack::run::RunSettings {
+            duration: 20.0,
+            rtol: 1e-8,
+            atol: 1e-10,
+            sample_interval: 20.0,
+        },
+        tower: solid_block(0.5, 2.0),
+        upper,
+        bases: [("fixed_base", None), ("sliding_building", Some(building))],
+        gravity: G,
+    }
+}
