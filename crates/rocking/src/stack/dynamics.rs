@@ -122,12 +122,14 @@ fn split<T: Real>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; M
     (theta_ddot, slip_acc)
 }
 
-/// `σ` of a slipping building whose slip is one of `coords`, `None` otherwise.
+/// When the slip is one of `coords`, the direction `σ` its kinetic friction
+/// opposes (0 if `regime`'s building sticks, as [`Stack::kane_system`] takes
+/// it); `None` without the slip.
 fn slip_direction(coords: &Coordinates, regime: &StackRegime) -> Option<f64> {
-    match (coords.slip(), regime.building) {
-        (Some(_), BuildingRegime::Slip(d)) => Some(d.sign()),
-        _ => None,
-    }
+    coords.slip().map(|_| match regime.building {
+        BuildingRegime::Slip(d) => d.sign(),
+        BuildingRegime::Stick => 0.0,
+    })
 }
 
 /// The arms of two rocking blocks that [`Stack::two_rocking`] reads:
@@ -267,23 +269,24 @@ impl Stack {
             BuildingRegime::Slip(d) => d.sign(),
             BuildingRegime::Stick => 0.0,
         };
-        // The system's order as a constant where it is small (one or two
-        // blocks, with the slip or without), so that its loops are unrolled
-        // and free of bounds checks: a third fewer instructions per
-        // evaluation of two rocking blocks than one padded system for every
-        // order. Larger systems, rarer, share one padded code.
+        // Two rocking blocks: the equations written out.
         if self.len() == 2 && frame.pose.pivots[0].is_some() && frame.pose.pivots[1].is_some() {
-            let sigma = slip_direction(frame.coords, regime);
-            let ([t1, t2], slip_acc) = self.two_rocking(&TwoArms::in_pose(frame.pose), sigma, a_g, g_e);
+            let slip = slip_direction(frame.coords, regime);
+            let ([t1, t2], slip_acc) = self.two_rocking(&TwoArms::in_pose(frame.pose), slip, a_g, g_e);
             let mut q_ddot = [real(0.0); MAX_COORDINATES];
             // In the coordinates' order: the slip first, if it is one.
-            let first = match sigma {
+            let first = match slip {
                 Some(_) => [slip_acc, t1, t2],
                 None => [t1, t2, real(0.0)],
             };
             q_ddot[..3].copy_from_slice(&first);
             return q_ddot;
         }
+        // The system's order as a constant where it is small (one or two
+        // blocks, with the slip or without), so that its loops are unrolled
+        // and free of bounds checks: a third fewer instructions per
+        // evaluation of two rocking blocks than one padded system for every
+        // order. Larger systems, rarer, share one padded code.
         match frame.coords.len() {
             0 => [real(0.0); MAX_COORDINATES],
             1 => self.solve_kane_of::<T, 1>(frame, sigma, a_g, g_e),
@@ -309,9 +312,10 @@ impl Stack {
 
     /// Kane's equations of two blocks that both rock ([`Stack::kane_system`]
     /// solved, written out; the right-hand side of most of a belfry's run),
-    /// from the arms `arms` of the pose, the building slipping towards
-    /// `sigma` or not at all: `(θ̈_1, θ̈_2)` and `ü` (0 without the slip), NaN
-    /// where the system has no solution.
+    /// from the arms `arms` of the pose, with the slip as a coordinate when
+    /// `sigma` is given (its kinetic friction opposing `σ`, 0 while the
+    /// building sticks) or without it: `(θ̈_1, θ̈_2)` and `ü` (0 without the
+    /// slip), NaN where the system has no solution.
     ///
     /// With the partials `∂G_1/∂θ_1 = J(r_1)`, `∂G_2/∂θ_1 = J(e)`,
     /// `∂G_2/∂θ_2 = J(r_2)` ([`TwoArms`]), every `∂φ/∂θ` 1 or 0, and
@@ -585,13 +589,23 @@ mod tests {
     /// `θ̈` and `ü` of [`Stack::kane_system`] solved by elimination: the
     /// generic path, which the written-out [`Stack::two_rocking`] replaces.
     fn generic<T: Real>(stack: &Stack, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> ([T; MAX_BLOCKS], T) {
+        generic_in(stack, &Coordinates::of(stack, regime), regime, theta, theta_dot, a_g, g_e)
+    }
+
+    /// [`generic`] in the coordinates `coords`.
+    fn generic_in<T: Real>(
+        stack: &Stack,
+        coords: &Coordinates,
+        regime: &StackRegime,
+        theta: &[T; MAX_BLOCKS],
+        theta_dot: &[T; MAX_BLOCKS],
+        a_g: T,
+        g_e: T,
+    ) -> ([T; MAX_BLOCKS], T) {
         let pose = Pose::of(stack, regime, theta, theta_dot);
-        let coords = Coordinates::of(stack, regime);
-        let frame = Frame::new(&coords, &pose);
-        split(
-            &coords,
-            &stack.solve_kane_of::<T, MAX_COORDINATES>(&frame, slip_direction(&coords, regime).unwrap_or(0.0), a_g, g_e),
-        )
+        let frame = Frame::new(coords, &pose);
+        let sigma = slip_direction(coords, regime).unwrap_or(0.0);
+        split(coords, &stack.solve_kane_of::<T, MAX_COORDINATES>(&frame, sigma, a_g, g_e))
     }
 
     /// Both interfaces rocking, on every pair of corners, on a fixed base and
@@ -697,6 +711,30 @@ mod tests {
             let (slow, slow_u) = generic(&stack, &regime, &state.theta, &state.theta_dot, a_g, G);
             for (a, b) in [(fast[0], slow[0]), (fast[1], slow[1]), (fast_u, slow_u)] {
                 proptest::prop_assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0), "{regime:?} {state:?}: {a} vs {b}");
+            }
+        }
+    }
+
+    /// With the slip among the coordinates while the building sticks (no
+    /// kinetic friction: `σ = 0`, as an impact's coordinates have it), the
+    /// written-out equations put `ü` first, as the generic solve does, and
+    /// equal it (to 1e-12 of the value, as above).
+    #[test]
+    fn two_rocking_blocks_written_out_take_the_slip_of_a_sticking_building() {
+        for normal in [NormalForce::Constant, NormalForce::Dynamic] {
+            let stack = stack(Some(Building::new(4.0e5, 0.5, 0.4, normal).unwrap()));
+            let regime = StackRegime::REST
+                .with(0, Interface::Rocking(Pivot::Positive))
+                .with(1, Interface::Rocking(Pivot::Negative));
+            let coords = Coordinates::with_slip(&stack, &regime, true);
+            let mut state = StackState::default();
+            (state.theta[0], state.theta[1], state.theta_dot[0], state.theta_dot[1]) = (0.05, -0.1, 0.4, -0.9);
+            let (fast, fast_u) = stack.accelerations_in(&coords, &regime, &state, 2.0, G);
+            let (slow, slow_u) = generic_in(&stack, &coords, &regime, &state.theta, &state.theta_dot, 2.0, G);
+            // The building moves: its acceleration is not the ground's.
+            assert!(slow_u.abs() > 1e-6, "{slow_u}");
+            for (a, b) in [(fast[0], slow[0]), (fast[1], slow[1]), (fast_u, slow_u)] {
+                assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0), "{normal:?}: {a} vs {b}");
             }
         }
     }
