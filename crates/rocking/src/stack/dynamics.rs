@@ -265,13 +265,8 @@ impl Stack {
     /// light building under high friction).
     #[inline]
     fn solve_kane<T: Real>(&self, frame: &Frame<T>, regime: &StackRegime, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
-        let sigma = match regime.building {
-            BuildingRegime::Slip(d) => d.sign(),
-            BuildingRegime::Stick => 0.0,
-        };
-        // Two rocking blocks: the equations written out.
-        if self.len() == 2 && frame.pose.pivots[0].is_some() && frame.pose.pivots[1].is_some() {
-            let slip = slip_direction(frame.coords, regime);
+        let slip = slip_direction(frame.coords, regime);
+        if self.rocking_pair(regime).is_some() {
             let ([t1, t2], slip_acc) = self.two_rocking(&TwoArms::in_pose(frame.pose), slip, a_g, g_e);
             let mut q_ddot = [real(0.0); MAX_COORDINATES];
             // In the coordinates' order: the slip first, if it is one.
@@ -282,6 +277,8 @@ impl Stack {
             q_ddot[..3].copy_from_slice(&first);
             return q_ddot;
         }
+        // Without the slip among the coordinates, its friction is not read.
+        let sigma = slip.unwrap_or(0.0);
         // The system's order as a constant where it is small (one or two
         // blocks, with the slip or without), so that its loops are unrolled
         // and free of bounds checks: a third fewer instructions per
@@ -307,6 +304,16 @@ impl Stack {
             q_ddot
         } else {
             [real(f64::NAN); MAX_COORDINATES]
+        }
+    }
+
+    /// The corners `(s_1, s_2)` when the stack is two blocks that both rock
+    /// in `regime`: where [`Stack::two_rocking`] replaces the generic solve.
+    #[inline]
+    fn rocking_pair(&self, regime: &StackRegime) -> Option<[f64; 2]> {
+        match (self.len(), regime.interfaces[0].pivot(), regime.interfaces[1].pivot()) {
+            (2, Some(lower), Some(upper)) => Some([lower.sign(), upper.sign()]),
+            _ => None,
         }
     }
 
@@ -390,13 +397,8 @@ impl Stack {
     /// (a run's right-hand side, evaluated a dozen times a step).
     #[inline]
     pub(crate) fn accelerations_in(&self, coords: &Coordinates, regime: &StackRegime, state: &StackState, a_g: f64, g_e: f64) -> ([f64; MAX_BLOCKS], f64) {
-        if let (2, [Some(p1), Some(p2), ..]) = (self.len(), regime.interfaces.map(|i| i.pivot())) {
-            let arms = TwoArms::of(
-                self,
-                [p1.sign(), p2.sign()],
-                [state.theta[0], state.theta[1]],
-                [state.theta_dot[0], state.theta_dot[1]],
-            );
+        if let Some(corners) = self.rocking_pair(regime) {
+            let arms = TwoArms::of(self, corners, [state.theta[0], state.theta[1]], [state.theta_dot[0], state.theta_dot[1]]);
             let ([t1, t2], slip_acc) = self.two_rocking(&arms, slip_direction(coords, regime), a_g, g_e);
             let mut theta_ddot = [0.0; MAX_BLOCKS];
             (theta_ddot[0], theta_ddot[1]) = (t1, t2);
