@@ -13,29 +13,14 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rocking_scenario::{Case, RunOptions, Scenario};
+use rocking_scenario::RunOptions;
 use std::hint::black_box;
-use std::path::Path;
 
-const BELFRY: &str = include_str!("../../../examples/belfry-on-church.toml");
-
-/// The example without its `[[block]]` table: the tower alone on the same church.
-fn tower_alone() -> String {
-    match (BELFRY.find("[[block]]"), BELFRY.find("[building]")) {
-        (Some(from), Some(to)) if from < to => format!("{}{}", &BELFRY[..from], &BELFRY[to..]),
-        _ => panic!("belfry-on-church.toml has no [[block]] before its [building]"),
-    }
-}
-
-/// The case of a scenario's text, built once (its inputs read and checked).
-fn case(text: &str) -> Case {
-    Scenario::from_toml_str(text, Path::new("belfry-on-church.toml"))
-        .and_then(|s| s.build())
-        .unwrap_or_else(|e| panic!("{e}"))
-}
+#[path = "support/belfry_cases.rs"]
+mod support;
 
 fn belfry(c: &mut Criterion) {
-    let cases = [("tower_alone", case(&tower_alone())), ("with_belfry", case(BELFRY))];
+    let cases = support::belfry_cases().unwrap_or_else(|e| panic!("{e}"));
     for (what, options) in [("run", RunOptions::ALL), ("summary", RunOptions::SUMMARY)] {
         for (name, case) in &cases {
             c.bench_function(&format!("{what}_{name}"), |b| {

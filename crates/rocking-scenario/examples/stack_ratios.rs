@@ -17,12 +17,12 @@ use rocking::reference::stack_bench;
 use rocking::stack::run::run;
 use rocking::stack::{Block, Stack, StackState};
 use rocking::{simulate, Initial, Model};
-use rocking_scenario::{Case, RunOptions, Scenario};
+use rocking_scenario::{Case, RunOptions};
 use std::hint::black_box;
-use std::path::Path;
 use std::time::Instant;
 
-const BELFRY: &str = include_str!("../../../examples/belfry-on-church.toml");
+#[path = "../benches/support/belfry_cases.rs"]
+mod support;
 
 /// The median of `times` (s).
 fn median(mut times: Vec<f64>) -> f64 {
@@ -46,13 +46,6 @@ fn pair(rounds: usize, mut a: impl FnMut(), mut b: impl FnMut()) -> (f64, f64) {
 
 fn report(what: &str, (one, two): (f64, f64)) {
     println!("{what:<58} {:>9.1} µs {:>9.1} µs {:>6.2}×", one * 1e6, two * 1e6, two / one);
-}
-
-/// The case of a scenario's text (its inputs read and checked).
-fn case(text: &str) -> Result<Case, String> {
-    Scenario::from_toml_str(text, Path::new("belfry-on-church.toml"))
-        .and_then(|s| s.build())
-        .map_err(|e| e.to_string())
 }
 
 fn main() -> Result<(), String> {
@@ -91,11 +84,7 @@ fn main() -> Result<(), String> {
             pair(rounds, || by_stack(&stack_one), || by_stack(&stack_two)),
         );
     }
-    let alone = match (BELFRY.find("[[block]]"), BELFRY.find("[building]")) {
-        (Some(from), Some(to)) if from < to => format!("{}{}", &BELFRY[..from], &BELFRY[to..]),
-        _ => return Err("belfry-on-church.toml has no [[block]] before its [building]".into()),
-    };
-    let (alone, belfry) = (case(&alone)?, case(BELFRY)?);
+    let [(_, alone), (_, belfry)] = support::belfry_cases()?;
     for (what, options) in [("as rocking run", RunOptions::ALL), ("as a sweep (summary)", RunOptions::SUMMARY)] {
         let go = |c: &Case| drop(black_box(c.run(options).ok()));
         report(
