@@ -211,6 +211,8 @@ pub(crate) struct Stretch<'a> {
     pub(crate) t1: f64,
     /// Where the motion of the regime ends in it (s).
     pub(crate) reached: f64,
+    /// The state there.
+    pub(crate) last: StackState,
     /// The state at any instant of the step.
     pub(crate) at: &'a dyn Fn(f64) -> StackState,
     /// The instants at the step's two ends, when the hook asked for them
@@ -640,7 +642,8 @@ impl<const S: usize> Runner<'_, S> {
     }
 
     /// The earliest crossing of a watched condition inside the step of
-    /// `dense`, `theta_points` the extremes of each `θ_k` there, `ends` the
+    /// `dense`, `edges` the states it gives at the step's ends,
+    /// `theta_points` the extremes of each `θ_k` there, `ends` the
     /// [`Instant`]s at the step's ends if they were computed, `fell_back` the
     /// interface set down at the step's start.
     #[allow(clippy::too_many_arguments)]
@@ -650,6 +653,7 @@ impl<const S: usize> Runner<'_, S> {
         piece: &Piece,
         dense: &DenseOutput<S>,
         (t0, t1): (f64, f64),
+        edges: (&StackState, &StackState),
         theta_points: &[Points; MAX_BLOCKS],
         ends: Option<(&Instant, &Instant)>,
         fell_back: Option<usize>,
@@ -658,6 +662,8 @@ impl<const S: usize> Runner<'_, S> {
         let mut best: Option<(Watch, f64)> = None;
         for watch in self.watches(regime) {
             let value = |t: f64| self.value(regime, piece, watch, t, &self.unpack(&dense.state(t)));
+            // Its values at the step's ends, where it is not read on the instants.
+            let at_edges = || (self.value(regime, piece, watch, t0, edges.0), self.value(regime, piece, watch, t1, edges.1));
             let regula_falsi = |ta, va, tb, vb| find_crossing(value, ta, va, tb, vb, 0.0).tb;
             let leaving = |ta, tb| leaving_point(&value, ta, tb);
             let mut points = Points::default();
@@ -667,11 +673,12 @@ impl<const S: usize> Runner<'_, S> {
                     let y = dense.state(t);
                     c.margin(y[k], y[n + k])
                 };
-                points.push((t0, value(t0)));
+                let (start, end) = at_edges();
+                points.push((t0, start));
                 for &(t, theta) in theta_points[k].as_slice() {
                     points.push((t, c.margin(theta, 0.0).0));
                 }
-                points.push((t1, value(t1)));
+                points.push((t1, end));
                 first_crossing(
                     points.as_slice(),
                     watch.on_zero(fell_back),
@@ -680,12 +687,13 @@ impl<const S: usize> Runner<'_, S> {
                 )
             } else if watch == Watch::Stop {
                 // `−σ u̇`: of one sign up to the first root of u̇.
-                points.push((t0, value(t0)));
+                let (start, end) = at_edges();
+                points.push((t0, start));
                 if let Some((ta, tb)) = first_root(dense, 2 * n + 1, t0, t1) {
                     points.push((ta, value(ta)));
                     points.push((tb, value(tb)));
                 }
-                points.push((t1, value(t1)));
+                points.push((t1, end));
                 first_crossing(points.as_slice(), watch.on_zero(fell_back), regula_falsi, leaving)
             } else {
                 // Kane's conditions: monotone between their extrema, located
@@ -796,14 +804,30 @@ impl<const S: usize> Runner<'_, S> {
                 let (t0, t1) = (stepper.t_old, stepper.t);
                 let end = wants_instants.then(|| self.instant(&regime, &piece, t1, &stepper.y, &stepper.f));
                 let ends = start.as_ref().zip(end.as_ref());
+                // The step's ends as its dense output gives them, read once.
+                let edges = (self.unpack(&dense.state(t0)), self.unpack(&dense.state(t1)));
                 let theta_points = self.theta_extremes(&regime, &dense, t0, t1);
-                let crossing = self.first_crossing(&regime, &piece, &dense, (t0, t1), &theta_points, ends, set_down_at(fell_back, t0));
+                let crossing = self.first_crossing(
+                    &regime,
+                    &piece,
+                    &dense,
+                    (t0, t1),
+                    (&edges.0, &edges.1),
+                    &theta_points,
+                    ends,
+                    set_down_at(fell_back, t0),
+                );
                 let reached = crossing.map_or(t1, |(_, te)| te);
-                self.track_peaks(&mut out, &regime, &dense, t0, reached, &theta_points);
+                let last = match crossing {
+                    Some((_, te)) => self.unpack(&dense.state(te)),
+                    None => edges.1,
+                };
+                self.track_peaks(&mut out, &regime, (&edges.0, &last), reached, &theta_points);
                 let stretch = Stretch {
                     t0,
                     t1,
                     reached,
+                    last,
                     at: &|t| self.unpack(&dense.state(t)),
                     ends,
                     inside: &|t| self.instant_on(&regime, &piece, &dense, t),
@@ -815,7 +839,7 @@ impl<const S: usize> Runner<'_, S> {
                 t = reached;
                 if let Some((watch, te)) = crossing {
                     switches.count(te)?;
-                    state = self.unpack(&dense.state(te));
+                    state = last;
                     if self.apply(&mut out, &mut regime, &mut state, watch, te, hook)? {
                         break 'run;
                     }
@@ -912,6 +936,7 @@ impl<const S: usize> Runner<'_, S> {
                 t0: t,
                 t1,
                 reached,
+                last: *state,
                 at: &|_| *state,
                 ends: Some((&start, &end)),
                 inside: &instant,
@@ -930,15 +955,15 @@ impl<const S: usize> Runner<'_, S> {
     }
 
     /// Raises each rocking block's largest `|θ_k|` to the extremes of the
-    /// step `[t0, t1]`: its ends and the extremes of `θ_k` before `t1`.
-    fn track_peaks(&self, out: &mut StackRun, regime: &StackRegime, dense: &DenseOutput<S>, t0: f64, t1: f64, theta_points: &[Points; MAX_BLOCKS]) {
-        let (y0, y1) = (dense.state(t0), dense.state(t1));
+    /// step up to `t1`: its states at its start and at `t1`, `edges`, and
+    /// the extremes of `θ_k` before `t1`.
+    fn track_peaks(&self, out: &mut StackRun, regime: &StackRegime, edges: (&StackState, &StackState), t1: f64, theta_points: &[Points; MAX_BLOCKS]) {
         for k in 0..self.n() {
             if regime.interfaces[k] == Interface::Stuck {
                 continue;
             }
-            out.blocks[k].reach(y0[k]);
-            out.blocks[k].reach(y1[k]);
+            out.blocks[k].reach(edges.0.theta[k]);
+            out.blocks[k].reach(edges.1.theta[k]);
             for &(t, theta) in theta_points[k].as_slice() {
                 if t <= t1 {
                     out.blocks[k].reach(theta);

@@ -366,17 +366,16 @@ impl<O: Observer> Hook for Reporter<'_, O> {
         }
         if reached < stretch.t1 {
             // The motion ends at a transition inside the step: its last instant.
-            self.instant(regime, &(stretch.at)(reached), reached);
+            self.instant(regime, &stretch.last, reached);
         }
-        let at = stretch.at;
-        self.last = (reached, *regime, at(reached));
+        self.last = (reached, *regime, stretch.last);
         if self.observer.wants_steps() {
             let (stack, kernel, ground, segment) = (self.stack, self.kernel, self.ground, self.ground.segment(t0));
             let coords = Coordinates::of(stack, regime);
             // The step's piece of the input holds up to its next kink, where
             // the input's next piece starts (and a jump takes its value).
             let a_g = |t: f64| if t < segment.kink { segment.piece.eval(t) } else { ground.acceleration(t) };
-            let sampler = |t: f64| sample(stack, kernel, a_g(t), &coords, regime, &at(t), t);
+            let sampler = |t: f64| sample(stack, kernel, a_g(t), &coords, regime, &(stretch.at)(t), t);
             let step = Step {
                 kernel: self.kernel,
                 piece: segment.piece,
