@@ -175,6 +175,57 @@ impl<T: Real> TwoArms<T> {
     }
 }
 
+/// The arm of the blocks `k … N` turning as one body about the corner `O_k`
+/// of block `k` (every other interface stuck), which [`Stack::one_rocking`]
+/// reads: `r = G − O_k`, `G` their centre of mass, and `φ̇_k`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OneArm<T> {
+    r: Vec2<T>,
+    w: T,
+}
+
+impl OneArm<f64> {
+    /// The arm at `θ_k`, `θ̇_k` on the corner `s` (every interface below `k`
+    /// stuck: block `k`'s base is level, `φ_k = θ_k`).
+    #[inline(always)]
+    fn of(stack: &Stack, k: usize, s: f64, theta: f64, theta_dot: f64) -> Self {
+        let body = stack.body_above(k);
+        Self {
+            r: rotate(crate::trig::sin_cos(theta), [-s * stack.blocks[k].width / 2.0, body.centre_height]),
+            w: theta_dot,
+        }
+    }
+}
+
+impl<T: Real> OneArm<T> {
+    /// The arm read from a pose where only interface `k` rocks.
+    #[inline]
+    fn in_pose(stack: &Stack, pose: &Pose<T>, k: usize) -> Self {
+        let mut moment = [real::<T>(0.0); 2];
+        for (i, block) in stack.blocks.iter().enumerate().skip(k) {
+            moment = add(moment, scale(sub(pose.centre[i], pose.corner[k]), real::<T>(block.mass)));
+        }
+        Self {
+            r: scale(moment, real::<T>(1.0 / stack.body_above(k).mass)),
+            w: pose.phi_dot[k],
+        }
+    }
+}
+
+/// The blocks `k … N` taken as one rigid body, seated on one another.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Body {
+    /// Their mass (kg).
+    pub(crate) mass: f64,
+    /// The height of their centre of mass above block `k`'s base (m); it lies
+    /// on block `k`'s axis, every block being centred on the one below.
+    pub(crate) centre_height: f64,
+    /// Their moment of inertia about either corner of block `k`'s base
+    /// (kg·m²): `Σ_i J_i + m_i ((B_k/2)² + z_i²)`, `z_i` block `i`'s centre
+    /// height above that base.
+    pub(crate) inertia_corner: f64,
+}
+
 impl InterfaceLoad<crate::jet::Jet> {
     /// The load's values, without their time derivatives.
     pub(crate) fn values(&self) -> InterfaceLoad {
@@ -275,6 +326,16 @@ impl Stack {
                 None => [t1, t2, real(0.0)],
             };
             q_ddot[..3].copy_from_slice(&first);
+            return q_ddot;
+        }
+        if let Some((k, _)) = self.rocking_one(regime) {
+            let (theta_ddot, slip_acc) = self.one_rocking(k, &OneArm::in_pose(self, frame.pose, k), slip, a_g, g_e);
+            let mut q_ddot = [real(0.0); MAX_COORDINATES];
+            // In the coordinates' order: the slip first, if it is one.
+            match slip {
+                Some(_) => (q_ddot[0], q_ddot[1]) = (slip_acc, theta_ddot),
+                None => q_ddot[0] = theta_ddot,
+            }
             return q_ddot;
         }
         // Without the slip among the coordinates, its friction is not read.
@@ -385,6 +446,89 @@ impl Stack {
         ([x[0] - y[0] * slip_acc, x[1] - y[1] * slip_acc], slip_acc)
     }
 
+    /// The blocks `k … N` as one rigid body ([`Body`]).
+    pub(crate) fn body_above(&self, k: usize) -> Body {
+        let half = self.blocks[k].width / 2.0;
+        let (mut mass, mut moment, mut inertia, mut base) = (0.0, 0.0, 0.0, 0.0);
+        for block in &self.blocks[k..] {
+            let z = base + block.height / 2.0;
+            mass += block.mass;
+            moment += block.mass * z;
+            inertia += block.inertia_centre + block.mass * (half * half + z * z);
+            base += block.height;
+        }
+        Body {
+            mass,
+            centre_height: moment / mass,
+            inertia_corner: inertia,
+        }
+    }
+
+    /// The interface `k` and its corner `s_k` when it is the only one that
+    /// rocks in `regime`: where [`Stack::one_rocking`] replaces the generic
+    /// solve.
+    #[inline]
+    pub(crate) fn rocking_one(&self, regime: &StackRegime) -> Option<(usize, f64)> {
+        let mut rocking = (0..self.len()).filter_map(|k| regime.interfaces[k].pivot().map(|p| (k, p.sign())));
+        let one = rocking.next()?;
+        rocking.next().is_none().then_some(one)
+    }
+
+    /// Kane's equations where interface `k` alone rocks ([`Stack::kane_system`]
+    /// solved, written out): the blocks `k … N` turn as one rigid body about
+    /// the corner `O_k` ([`Body`]: its mass `m`, its moment of inertia `I_O`
+    /// about the corner) and those below move with the building. From the
+    /// arm `r = G − O_k` to the body's centre of mass ([`OneArm`]), with the
+    /// slip as a coordinate when `sigma` is given (as in
+    /// [`Stack::two_rocking`]): `(θ̈_k, ü)`, NaN where the system has no
+    /// solution.
+    ///
+    /// Every block of the body has `∂G_i/∂θ_k = J(G_i − O_k)` and
+    /// `∂φ_i/∂θ_k = 1`, and its velocity-squared part `−φ̇_k² (G_i − O_k)`
+    /// crosses its own arm to zero; summed over the body, with the load `l =
+    /// (a_g − φ̇_k² r_x, g_e − φ̇_k² r_y)` of its centre of mass:
+    ///
+    /// ```text
+    /// I_O θ̈_k = −m l × r
+    /// ```
+    ///
+    /// (for one block on a fixed base, (T)). The slip adds the row `M ü + c
+    /// θ̈_k = f_u` (`M` everything the building carries and itself) and the
+    /// column `b ü`, `b = m r_y`, `c = b` less `μk σ m r_x` for the dynamic
+    /// normal force, `f_u = −a_g (M − m) − m l_x` less the friction:
+    /// `ü = (f_u − c x) / (M − c y)` with `x = −m l × r / I_O`, `y = b / I_O`,
+    /// singular where that denominator is not positive. Tested against the
+    /// generic solve (`tests`).
+    #[inline(always)]
+    pub(crate) fn one_rocking<T: Real>(&self, k: usize, arm: &OneArm<T>, sigma: Option<f64>, a_g: T, g_e: T) -> (T, T) {
+        let body = self.body_above(k);
+        let m = body.mass;
+        let OneArm { r, w } = *arm;
+        let quadratic = scale(r, -(w * w));
+        let load = [a_g + quadratic[0], g_e + quadratic[1]];
+        let per_inertia = 1.0 / body.inertia_corner;
+        let x = -(cross(load, r) * (m * per_inertia));
+        let Some(sigma) = sigma else { return (x, real(0.0)) };
+        let mu = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
+        let total = self.total_mass();
+        let b = r[1] * m;
+        let weight = g_e * total;
+        let pushed = -(a_g * (total - m) + load[0] * m);
+        let (c, f_u) = if self.dynamic_normal_force() {
+            (b - r[0] * (m * mu), pushed - (weight + quadratic[1] * m) * mu)
+        } else {
+            (b, pushed - weight * mu)
+        };
+        let y = b * per_inertia;
+        let schur = real::<T>(total) - c * y;
+        if schur.value() <= 0.0 || !schur.value().is_finite() {
+            let nan = real::<T>(f64::NAN);
+            return (nan, nan);
+        }
+        let slip_acc = (f_u - c * x) / schur;
+        (x - y * slip_acc, slip_acc)
+    }
+
     /// `θ̈_k` (0 for a stuck interface) and `ü` of `regime` at `state`: the
     /// right-hand side of a run, without the bodies' accelerations of
     /// [`Stack::snapshot`].
@@ -402,6 +546,13 @@ impl Stack {
             let ([t1, t2], slip_acc) = self.two_rocking(&arms, slip_direction(coords, regime), a_g, g_e);
             let mut theta_ddot = [0.0; MAX_BLOCKS];
             (theta_ddot[0], theta_ddot[1]) = (t1, t2);
+            return (theta_ddot, slip_acc);
+        }
+        if let Some((k, s)) = self.rocking_one(regime) {
+            let arm = OneArm::of(self, k, s, state.theta[k], state.theta_dot[k]);
+            let (t, slip_acc) = self.one_rocking(k, &arm, slip_direction(coords, regime), a_g, g_e);
+            let mut theta_ddot = [0.0; MAX_BLOCKS];
+            theta_ddot[k] = t;
             return (theta_ddot, slip_acc);
         }
         let pose = Pose::new(self, regime, state);
@@ -768,6 +919,203 @@ mod tests {
             }
         }
         // Both sides of the boundary are met.
+        assert!(singular > 0 && regular > 0, "{singular} singular, {regular} regular");
+    }
+
+    /// The shaft and belfry of [`stack`] seated on one another, by hand: 180 t;
+    /// the centre at (150 · 6 + 30 · (12 + 2.25)) / 180 = 7.375 m; about a
+    /// corner of the shaft's base, `J_1 + m_1 (2² + 6²) + J_2 + m_2 (2² +
+    /// 14.25²)` with `J = m (B² + H²) / 12`: 2,000,000 + 6,000,000 +
+    /// 76,225 + 6,211,875 = 14,288,100 kg·m². The belfry alone is its own block
+    /// (`I_O = J + m (B² + H²) / 4`). A few roundings of numbers of order
+    /// 1e7: 1e-14 relative.
+    #[test]
+    fn the_body_above_an_interface_by_hand() {
+        let stack = stack(None);
+        let body = stack.body_above(0);
+        for (got, want) in [(body.mass, 1.8e5), (body.centre_height, 7.375), (body.inertia_corner, 14_288_100.0)] {
+            assert!((got - want).abs() <= 1e-14 * want, "{got} vs {want}");
+        }
+        let belfry = stack.body_above(1);
+        let want = stack.blocks()[1].inertia_corner();
+        assert!((belfry.inertia_corner - want).abs() <= 1e-14 * want, "{} vs {want}", belfry.inertia_corner);
+        assert_eq!((belfry.mass, belfry.centre_height), (3.0e4, 2.25));
+    }
+
+    /// A shaft, a belfry and a lantern on it (three blocks), or the shaft and
+    /// belfry of [`stack`], or the shaft alone.
+    fn stacks(building: Option<Building>) -> Vec<Stack> {
+        let shaft = Block::solid(1, 4.0, 12.0, 1.5e5).unwrap();
+        let belfry = Block::solid(2, 3.2, 4.5, 3.0e4).unwrap();
+        let lantern = Block::solid(3, 1.2, 2.0, 2.0e3).unwrap();
+        [vec![shaft], vec![shaft, belfry], vec![shaft, belfry, lantern]]
+            .iter()
+            .map(|blocks| Stack::new(blocks, building, G).unwrap())
+            .collect()
+    }
+
+    /// One interface rocking, any of them, every other stuck, on either
+    /// corner, on a fixed base and on a sticking or slipping building (both
+    /// normal-force laws), for one, two and three blocks: the written-out
+    /// equations of the body above it equal the generic assembly and solve,
+    /// on numbers and on jets (values and time derivatives), to 1e-12 of the
+    /// larger of 1 and the value, as for two rocking blocks: both are a few
+    /// dozen roundings away from the exact values, and a wrong term (the
+    /// smallest, the dynamic normal force's velocity-squared part, is above
+    /// 1e-3 here) would fail.
+    #[test]
+    fn one_rocking_interface_written_out_equals_the_generic_solve() {
+        let mut buildings = vec![None];
+        for normal in [NormalForce::Constant, NormalForce::Dynamic] {
+            buildings.push(Some(Building::new(4.0e5, 0.5, 0.4, normal).unwrap()));
+        }
+        let states = [(0.05, -0.3), (-0.12, 1.5), (0.01, 0.0), (-0.3, 0.9)];
+        let mut compared = 0;
+        for building in buildings {
+            for stack in stacks(building) {
+                for k in 0..stack.len() {
+                    for pivot in [Pivot::Negative, Pivot::Positive] {
+                        for slip in [
+                            BuildingRegime::Stick,
+                            BuildingRegime::Slip(SlipDirection::Positive),
+                            BuildingRegime::Slip(SlipDirection::Negative),
+                        ] {
+                            let regime = StackRegime::REST.with(k, Interface::Rocking(pivot)).with_building(slip);
+                            assert_eq!(stack.rocking_one(&regime), Some((k, pivot.sign())));
+                            for &(theta, theta_dot) in &states {
+                                let mut state = StackState::default();
+                                (state.theta[k], state.theta_dot[k]) = (theta, theta_dot);
+                                for a_g in [0.0, 3.7, -6.2] {
+                                    for g_e in [G, G + 2.5] {
+                                        let coords = Coordinates::of(&stack, &regime);
+                                        let (fast, fast_u) = stack.accelerations_in(&coords, &regime, &state, a_g, g_e);
+                                        let (slow, slow_u) = generic(&stack, &regime, &state.theta, &state.theta_dot, a_g, g_e);
+                                        let jets = |x: &[f64; MAX_BLOCKS], dx: &[f64; MAX_BLOCKS]| -> [Jet; MAX_BLOCKS] {
+                                            std::array::from_fn(|i| Jet::new(x[i], dx[i]))
+                                        };
+                                        let (theta_j, theta_dot_j) = (jets(&state.theta, &state.theta_dot), jets(&state.theta_dot, &slow));
+                                        let (a_g_jet, g_e_jet) = (Jet::new(a_g, 25.0), Jet::from(g_e));
+                                        let snap = stack.snapshot_of(&regime, &theta_j, &theta_dot_j, a_g_jet, g_e_jet);
+                                        let (jet, jet_u) = generic(&stack, &regime, &theta_j, &theta_dot_j, a_g_jet, g_e_jet);
+                                        let mut pairs = vec![(fast[k], slow[k]), (fast_u, slow_u)];
+                                        for (a, b) in [(snap.theta_ddot[k], jet[k]), (snap.slip_acc, jet_u)] {
+                                            pairs.extend([(a.v, b.v), (a.d, b.d)]);
+                                        }
+                                        for (a, b) in pairs {
+                                            assert!(
+                                                (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0),
+                                                "{} blocks {regime:?} {state:?} a_g={a_g} g_e={g_e}: {a} vs {b}",
+                                                stack.len()
+                                            );
+                                        }
+                                        compared += 1;
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // 3 bases × (1 + 2 + 3) interfaces × 2 corners × 3 building regimes × 4 states × 3 a_g × 2 g_e.
+        assert_eq!(compared, 3 * 6 * 2 * 3 * 4 * 3 * 2);
+    }
+
+    /// Two rocking interfaces, or none, are not the written-out case.
+    #[test]
+    fn one_rocking_interface_is_only_one() {
+        let stack = stack(None);
+        let rocking = Interface::Rocking(Pivot::Positive);
+        assert_eq!(stack.rocking_one(&StackRegime::REST), None);
+        assert_eq!(stack.rocking_one(&StackRegime::REST.with(0, rocking).with(1, rocking)), None);
+        assert_eq!(stack.rocking_one(&StackRegime::REST.with(1, rocking)), Some((1, 1.0)));
+    }
+
+    proptest::proptest! {
+        /// Any two or three blocks (each no wider than the one below, masses
+        /// a hundredfold apart either way), any one of them rocking, any pose
+        /// and input, either corner, on a fixed base or a building slipping
+        /// either way (both normal-force laws): the written-out equations
+        /// equal the generic solve to 1e-12 of the value, as for two rocking
+        /// blocks.
+        #[test]
+        fn any_one_rocking_interface_written_out_equals_the_generic_solve(
+            widths in (0.5..5.0f64, 0.1..1.0f64, 0.1..1.0f64), heights in (1.0..20.0f64, 0.3..10.0f64, 0.3..5.0f64),
+            masses in (1.0e3..1.0e5f64, 1.0e3..1.0e5f64, 1.0e2..1.0e5f64), three in proptest::bool::ANY, which in 0..3usize,
+            theta in -1.2..1.2f64, theta_dot in -4.0..4.0f64, a_g in -20.0..20.0f64, corner in proptest::bool::ANY, base in 0..5usize,
+        ) {
+            let lower = Block::solid(1, widths.0, heights.0, masses.0).unwrap();
+            let upper = Block::solid(2, widths.0 * widths.1, heights.1, masses.1).unwrap();
+            let top = Block::solid(3, widths.0 * widths.1 * widths.2, heights.2, masses.2).unwrap();
+            let blocks = if three { vec![lower, upper, top] } else { vec![lower, upper] };
+            let k = which % blocks.len();
+            let normal = if base % 2 == 0 { NormalForce::Constant } else { NormalForce::Dynamic };
+            let building = (base > 0).then(|| Building::new(1.0e7, 0.5, 0.3, normal).unwrap());
+            let slip = match base {
+                0 => BuildingRegime::Stick,
+                1 | 2 => BuildingRegime::Slip(SlipDirection::Positive),
+                _ => BuildingRegime::Slip(SlipDirection::Negative),
+            };
+            let stack = Stack::new(&blocks, building, G).unwrap();
+            let pivot = if corner { Pivot::Positive } else { Pivot::Negative };
+            let regime = StackRegime::REST.with(k, Interface::Rocking(pivot)).with_building(slip);
+            let mut state = StackState::default();
+            (state.theta[k], state.theta_dot[k]) = (theta, theta_dot);
+            let (fast, fast_u) = stack.accelerations_in(&Coordinates::of(&stack, &regime), &regime, &state, a_g, G);
+            let (slow, slow_u) = generic(&stack, &regime, &state.theta, &state.theta_dot, a_g, G);
+            for (a, b) in [(fast[k], slow[k]), (fast_u, slow_u)] {
+                proptest::prop_assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0), "{regime:?} {state:?}: {a} vs {b}");
+            }
+        }
+    }
+
+    /// With the slip among the coordinates while the building sticks (`σ =
+    /// 0`, as an impact's coordinates have it), the written-out equations of
+    /// one rocking interface put `ü` first, as the generic solve does, and
+    /// equal it (to 1e-12 of the value, as above).
+    #[test]
+    fn one_rocking_interface_written_out_takes_the_slip_of_a_sticking_building() {
+        for normal in [NormalForce::Constant, NormalForce::Dynamic] {
+            let stack = stack(Some(Building::new(4.0e5, 0.5, 0.4, normal).unwrap()));
+            for k in 0..2 {
+                let regime = StackRegime::REST.with(k, Interface::Rocking(Pivot::Positive));
+                let coords = Coordinates::with_slip(&stack, &regime, true);
+                let mut state = StackState::default();
+                (state.theta[k], state.theta_dot[k]) = (0.05, 0.4);
+                let (fast, fast_u) = stack.accelerations_in(&coords, &regime, &state, 2.0, G);
+                let (slow, slow_u) = generic_in(&stack, &coords, &regime, &state.theta, &state.theta_dot, 2.0, G);
+                assert!(slow_u.abs() > 1e-6, "{slow_u}");
+                for (a, b) in [(fast[k], slow[k]), (fast_u, slow_u)] {
+                    assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0), "{normal:?} k = {k}: {a} vs {b}");
+                }
+            }
+        }
+    }
+
+    /// Where the dynamic normal force makes the slipping system singular
+    /// (Painlevé's paradox), the written-out equations of one rocking
+    /// interface say so as the generic solve does: NaN on the same side of
+    /// the boundary, for μk from 0.2 to 6, both sides met.
+    #[test]
+    fn one_rocking_interface_written_out_is_singular_where_the_generic_solve_is() {
+        let (mut singular, mut regular) = (0, 0);
+        for step in 1..=30 {
+            let mu_k = 0.2 * f64::from(step);
+            let stack = stack(Some(Building::new(2.0e3, mu_k, mu_k, NormalForce::Dynamic).unwrap()));
+            let regime = StackRegime::REST
+                .with(0, Interface::Rocking(Pivot::Positive))
+                .with_building(BuildingRegime::Slip(SlipDirection::Positive));
+            let state = StackState::default();
+            let coords = Coordinates::of(&stack, &regime);
+            let (fast, _) = stack.accelerations_in(&coords, &regime, &state, 0.0, G);
+            let (slow, _) = generic(&stack, &regime, &state.theta, &state.theta_dot, 0.0, G);
+            assert_eq!(fast[0].is_nan(), slow[0].is_nan(), "μk = {mu_k}: {fast:?} vs {slow:?}");
+            if slow[0].is_nan() {
+                singular += 1;
+            } else {
+                regular += 1;
+            }
+        }
         assert!(singular > 0 && regular > 0, "{singular} singular, {regular} regular");
     }
 }
