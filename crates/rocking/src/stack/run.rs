@@ -619,11 +619,15 @@ impl<const S: usize> Runner<'_, S> {
     /// set down at this instant ([`StackEventKind::SetDown`]), whose uplift
     /// is not taken again here.
     fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState, fell_back: Option<usize>) -> Option<Watch> {
+        let piece = self.ground.segment(t).piece;
+        // Kane's equations solved once for the conditions that need them.
+        let snap = std::cell::OnceCell::new();
         self.watches(regime).into_iter().find(|&w| match w {
             // Crossings, not conditions: they are due only when reached from the other side.
             Watch::Impact(_) | Watch::Stop => false,
             Watch::Uplift(k) if fell_back == Some(k) => false,
-            _ => self.value(regime, &self.ground.segment(t).piece, w, t, state) > 0.0,
+            _ if w.sampled() => self.condition(w, snap.get_or_init(|| self.stack.snapshot(regime, state, piece.eval(t), self.stack.gravity))) > 0.0,
+            _ => self.value(regime, &piece, w, t, state) > 0.0,
         })
     }
 
