@@ -831,6 +831,24 @@ mod tests {
         assert_eq!(compared, 3 * 4 * 3 * 4 * 3 * 2);
     }
 
+    /// The property tests' base `0..5`: a fixed base (0), or a building
+    /// heavy enough that the system stays regular, slipping either way under
+    /// either normal-force law.
+    fn base_of(base: usize) -> (Option<Building>, BuildingRegime) {
+        let normal = if base.is_multiple_of(2) {
+            NormalForce::Constant
+        } else {
+            NormalForce::Dynamic
+        };
+        let building = (base > 0).then(|| Building::new(1.0e7, 0.5, 0.3, normal).unwrap());
+        let slip = match base {
+            0 => BuildingRegime::Stick,
+            1 | 2 => BuildingRegime::Slip(SlipDirection::Positive),
+            _ => BuildingRegime::Slip(SlipDirection::Negative),
+        };
+        (building, slip)
+    }
+
     proptest::proptest! {
         /// Any two blocks (the upper no wider than the lower, masses a
         /// hundredfold apart either way), any pose and input, every pair of
@@ -848,13 +866,7 @@ mod tests {
         ) {
             let lower = Block::solid(1, widths.0, heights.0, masses.0).unwrap();
             let upper = Block::solid(2, widths.0 * widths.1, heights.1, masses.1).unwrap();
-            let normal = if base % 2 == 0 { NormalForce::Constant } else { NormalForce::Dynamic };
-            let building = (base > 0).then(|| Building::new(1.0e7, 0.5, 0.3, normal).unwrap());
-            let slip = match base {
-                0 => BuildingRegime::Stick,
-                1 | 2 => BuildingRegime::Slip(SlipDirection::Positive),
-                _ => BuildingRegime::Slip(SlipDirection::Negative),
-            };
+            let (building, slip) = base_of(base);
             let stack = Stack::new(&[lower, upper], building, G).unwrap();
             let pivot = |positive: bool| Interface::Rocking(if positive { Pivot::Positive } else { Pivot::Negative });
             let regime = StackRegime::REST.with(0, pivot(corners.0)).with(1, pivot(corners.1)).with_building(slip);
@@ -894,32 +906,32 @@ mod tests {
 
     /// Where the dynamic normal force makes the slipping system singular (a
     /// light building under high kinetic friction, Painlevé's paradox), the
-    /// written-out equations say so as the generic solve does: NaN on the
-    /// same side of the boundary, for μk from 0.2 to 6.
+    /// written-out equations, of two rocking blocks and of one rocking
+    /// interface, say so as the generic solve does: NaN on the same side of
+    /// the boundary, for μk from 0.2 to 6, both sides met for each.
     #[test]
-    fn two_rocking_blocks_written_out_are_singular_where_the_generic_solve_is() {
-        let (mut singular, mut regular) = (0, 0);
-        for step in 1..=30 {
-            let mu_k = 0.2 * f64::from(step);
-            let stack = stack(Some(Building::new(2.0e3, mu_k, mu_k, NormalForce::Dynamic).unwrap()));
-            let regime = StackRegime::REST
-                .with(0, Interface::Rocking(Pivot::Positive))
-                .with(1, Interface::Rocking(Pivot::Positive))
-                .with_building(BuildingRegime::Slip(SlipDirection::Positive));
-            // On the corners, both blocks upright, slipping towards their corners.
-            let state = StackState::default();
-            let coords = Coordinates::of(&stack, &regime);
-            let (fast, _) = stack.accelerations_in(&coords, &regime, &state, 0.0, G);
-            let (slow, _) = generic(&stack, &regime, &state.theta, &state.theta_dot, 0.0, G);
-            assert_eq!(fast[0].is_nan(), slow[0].is_nan(), "μk = {mu_k}: {fast:?} vs {slow:?}");
-            if slow[0].is_nan() {
-                singular += 1;
-            } else {
-                regular += 1;
+    fn written_out_equations_are_singular_where_the_generic_solve_is() {
+        let rocking = Interface::Rocking(Pivot::Positive);
+        let slipping = StackRegime::REST.with_building(BuildingRegime::Slip(SlipDirection::Positive));
+        for regime in [slipping.with(0, rocking).with(1, rocking), slipping.with(0, rocking)] {
+            let (mut singular, mut regular) = (0, 0);
+            for step in 1..=30 {
+                let mu_k = 0.2 * f64::from(step);
+                let stack = stack(Some(Building::new(2.0e3, mu_k, mu_k, NormalForce::Dynamic).unwrap()));
+                // On the corners, the blocks upright, slipping towards their corners.
+                let state = StackState::default();
+                let coords = Coordinates::of(&stack, &regime);
+                let (fast, _) = stack.accelerations_in(&coords, &regime, &state, 0.0, G);
+                let (slow, _) = generic(&stack, &regime, &state.theta, &state.theta_dot, 0.0, G);
+                assert_eq!(fast[0].is_nan(), slow[0].is_nan(), "{regime:?} μk = {mu_k}: {fast:?} vs {slow:?}");
+                if slow[0].is_nan() {
+                    singular += 1;
+                } else {
+                    regular += 1;
+                }
             }
+            assert!(singular > 0 && regular > 0, "{regime:?}: {singular} singular, {regular} regular");
         }
-        // Both sides of the boundary are met.
-        assert!(singular > 0 && regular > 0, "{singular} singular, {regular} regular");
     }
 
     /// The shaft and belfry of [`stack`] seated on one another, by hand: 180 t;
@@ -1049,13 +1061,7 @@ mod tests {
             let top = Block::solid(3, widths.0 * widths.1 * widths.2, heights.2, masses.2).unwrap();
             let blocks = if three { vec![lower, upper, top] } else { vec![lower, upper] };
             let k = which % blocks.len();
-            let normal = if base % 2 == 0 { NormalForce::Constant } else { NormalForce::Dynamic };
-            let building = (base > 0).then(|| Building::new(1.0e7, 0.5, 0.3, normal).unwrap());
-            let slip = match base {
-                0 => BuildingRegime::Stick,
-                1 | 2 => BuildingRegime::Slip(SlipDirection::Positive),
-                _ => BuildingRegime::Slip(SlipDirection::Negative),
-            };
+            let (building, slip) = base_of(base);
             let stack = Stack::new(&blocks, building, G).unwrap();
             let pivot = if corner { Pivot::Positive } else { Pivot::Negative };
             let regime = StackRegime::REST.with(k, Interface::Rocking(pivot)).with_building(slip);
@@ -1090,32 +1096,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    /// Where the dynamic normal force makes the slipping system singular
-    /// (Painlevé's paradox), the written-out equations of one rocking
-    /// interface say so as the generic solve does: NaN on the same side of
-    /// the boundary, for μk from 0.2 to 6, both sides met.
-    #[test]
-    fn one_rocking_interface_written_out_is_singular_where_the_generic_solve_is() {
-        let (mut singular, mut regular) = (0, 0);
-        for step in 1..=30 {
-            let mu_k = 0.2 * f64::from(step);
-            let stack = stack(Some(Building::new(2.0e3, mu_k, mu_k, NormalForce::Dynamic).unwrap()));
-            let regime = StackRegime::REST
-                .with(0, Interface::Rocking(Pivot::Positive))
-                .with_building(BuildingRegime::Slip(SlipDirection::Positive));
-            let state = StackState::default();
-            let coords = Coordinates::of(&stack, &regime);
-            let (fast, _) = stack.accelerations_in(&coords, &regime, &state, 0.0, G);
-            let (slow, _) = generic(&stack, &regime, &state.theta, &state.theta_dot, 0.0, G);
-            assert_eq!(fast[0].is_nan(), slow[0].is_nan(), "μk = {mu_k}: {fast:?} vs {slow:?}");
-            if slow[0].is_nan() {
-                singular += 1;
-            } else {
-                regular += 1;
-            }
-        }
-        assert!(singular > 0 && regular > 0, "{singular} singular, {regular} regular");
     }
 }
