@@ -226,6 +226,26 @@ pub(crate) struct Body {
     pub(crate) inertia_corner: f64,
 }
 
+impl Body {
+    /// The blocks `blocks[k..]`, seated on one another, as one body.
+    pub(crate) fn above(blocks: &[super::Block], k: usize) -> Self {
+        let half = blocks[k].width / 2.0;
+        let (mut mass, mut moment, mut inertia, mut base) = (0.0, 0.0, 0.0, 0.0);
+        for block in &blocks[k..] {
+            let z = base + block.height / 2.0;
+            mass += block.mass;
+            moment += block.mass * z;
+            inertia += block.inertia_centre + block.mass * (half * half + z * z);
+            base += block.height;
+        }
+        Self {
+            mass,
+            centre_height: moment / mass,
+            inertia_corner: inertia,
+        }
+    }
+}
+
 impl InterfaceLoad<crate::jet::Jet> {
     /// The load's values, without their time derivatives.
     pub(crate) fn values(&self) -> InterfaceLoad {
@@ -446,22 +466,9 @@ impl Stack {
         ([x[0] - y[0] * slip_acc, x[1] - y[1] * slip_acc], slip_acc)
     }
 
-    /// The blocks `k … N` as one rigid body ([`Body`]).
+    /// The blocks `k … N` as one rigid body ([`Body`]), computed with the stack.
     pub(crate) fn body_above(&self, k: usize) -> Body {
-        let half = self.blocks[k].width / 2.0;
-        let (mut mass, mut moment, mut inertia, mut base) = (0.0, 0.0, 0.0, 0.0);
-        for block in &self.blocks[k..] {
-            let z = base + block.height / 2.0;
-            mass += block.mass;
-            moment += block.mass * z;
-            inertia += block.inertia_centre + block.mass * (half * half + z * z);
-            base += block.height;
-        }
-        Body {
-            mass,
-            centre_height: moment / mass,
-            inertia_corner: inertia,
-        }
+        self.bodies[k]
     }
 
     /// The interface `k` and its corner `s_k` when it is the only one that

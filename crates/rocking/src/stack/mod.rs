@@ -186,6 +186,9 @@ impl Block {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stack {
     blocks: ArrayVec<Block, MAX_BLOCKS>,
+    /// The blocks `k … N` as one body, for each `k` (constants of the
+    /// equations where interface `k` alone rocks, read at every evaluation).
+    bodies: ArrayVec<dynamics::Body, MAX_BLOCKS>,
     building: Option<Building>,
     gravity: f64,
 }
@@ -212,6 +215,7 @@ impl Stack {
         }
         Ok(Self {
             blocks: blocks.iter().copied().collect(),
+            bodies: (0..blocks.len()).map(|k| dynamics::Body::above(blocks, k)).collect(),
             building,
             gravity,
         })
@@ -242,7 +246,7 @@ impl Stack {
     }
     /// The total sliding mass `m1 + Σ m_k` (kg).
     pub fn total_mass(&self) -> f64 {
-        self.building_mass() + self.blocks.iter().map(|b| b.mass).sum::<f64>()
+        self.building_mass() + self.bodies[0].mass
     }
 }
 

@@ -495,8 +495,14 @@ impl<const S: usize> Runner<'_, S> {
                 BuildingRegime::Slip(d) => -d.sign() * state.slip_vel,
                 BuildingRegime::Stick => -1.0,
             },
-            Watch::Uplift(_) | Watch::Slip => self.condition(watch, &self.stack.snapshot(regime, state, piece.eval(t), self.stack.gravity)),
+            Watch::Uplift(_) | Watch::Slip => self.condition(watch, &self.kane_at(regime, piece, t, state)),
         }
+    }
+
+    /// Kane's equations of `regime` solved at `t` in `state`, the input from
+    /// `piece`: what the conditions that need them read ([`Watch::sampled`]).
+    fn kane_at(&self, regime: &StackRegime, piece: &Piece, t: f64, state: &StackState) -> Snapshot {
+        self.stack.snapshot(regime, state, piece.eval(t), self.stack.gravity)
     }
 
     /// The value of a condition that needs Kane's equations ([`Watch::sampled`]),
@@ -626,7 +632,7 @@ impl<const S: usize> Runner<'_, S> {
             // Crossings, not conditions: they are due only when reached from the other side.
             Watch::Impact(_) | Watch::Stop => false,
             Watch::Uplift(k) if fell_back == Some(k) => false,
-            _ if w.sampled() => self.condition(w, snap.get_or_init(|| self.stack.snapshot(regime, state, piece.eval(t), self.stack.gravity))) > 0.0,
+            _ if w.sampled() => self.condition(w, snap.get_or_init(|| self.kane_at(regime, &piece, t, state))) > 0.0,
             _ => self.value(regime, &piece, w, t, state) > 0.0,
         })
     }
