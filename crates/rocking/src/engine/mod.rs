@@ -49,7 +49,7 @@ mod flight;
 mod input;
 mod peaks;
 mod rhs;
-mod screen;
+pub(crate) mod screen;
 mod static_phase;
 mod step;
 mod transition;

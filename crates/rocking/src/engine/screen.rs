@@ -255,7 +255,7 @@ fn slip_turns(e: &Ends) -> bool {
 /// The chord is the sharper on short steps, the tangents where `v` moves
 /// away from zero; all are proofs (the factor `1 + 1e-9` covers the rounding
 /// of the bounds, the `4 ε` that of the tangents' sums).
-pub(super) fn free_of_roots(v0: Jet, v1: Jet, h: f64, rate_bound: f64, curvature_bound: f64) -> bool {
+pub(crate) fn free_of_roots(v0: Jet, v1: Jet, h: f64, rate_bound: f64, curvature_bound: f64) -> bool {
     if v0.v * v1.v <= 0.0 {
         return false;
     }
