@@ -633,16 +633,25 @@ impl<const S: usize> Runner<'_, S> {
     /// The first watched condition that already holds at `t` (one that a
     /// regime is entered with switches at once); `fell_back`: the interface
     /// set down at this instant ([`StackEventKind::SetDown`]), whose uplift
-    /// is not taken again here.
-    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState, fell_back: Option<usize>) -> Option<Watch> {
+    /// is not taken again here. The conditions that need Kane's equations
+    /// read them once, in `opening`: the [`Instant`] at `t` with the
+    /// right-hand side there, which open the next step if none holds (its
+    /// values are those of the solve on plain numbers, bit for bit: the
+    /// same operations).
+    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState, fell_back: Option<usize>, opening: &mut Option<(Instant, [f64; S])>) -> Option<Watch> {
         let piece = self.ground.segment(t).piece;
-        // Kane's equations solved once for the conditions that need them.
-        let snap = std::cell::OnceCell::new();
         self.watches(regime).into_iter().find(|&w| match w {
             // Crossings, not conditions: they are due only when reached from the other side.
             Watch::Impact(_) | Watch::Stop => false,
             Watch::Uplift(k) if fell_back == Some(k) => false,
-            _ if w.sampled() => self.condition(w, snap.get_or_init(|| self.kane_at(regime, &piece, t, state))) > 0.0,
+            _ if w.sampled() => {
+                let (instant, _) = opening.get_or_insert_with(|| {
+                    let y = self.pack(state);
+                    let rate = self.rhs(&Coordinates::of(self.stack, regime), regime, &piece, t, &y);
+                    (self.instant(regime, &piece, t, &y, &rate), rate)
+                });
+                self.condition(w, &instant.snap).v > 0.0
+            }
             _ => self.value(regime, &piece, w, t, state) > 0.0,
         })
     }
@@ -807,7 +816,9 @@ impl<const S: usize> Runner<'_, S> {
         let mut switches = Switches::default();
         'run: loop {
             // Switch at once while a condition already holds.
-            while let Some(watch) = self.due_now(&regime, t, &state, set_down_at(fell_back, t)) {
+            let mut opening = None;
+            while let Some(watch) = self.due_now(&regime, t, &state, set_down_at(fell_back, t), &mut opening) {
+                opening = None;
                 switches.count(t)?;
                 if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
                     break 'run;
@@ -835,12 +846,26 @@ impl<const S: usize> Runner<'_, S> {
             let (piece, kink) = (segment.piece, segment.kink.min(settings.duration));
             let coords = Coordinates::of(self.stack, &current);
             let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&coords, &current, &piece, t, y);
-            stepper.restart(&mut rhs, t, y, settings.duration);
+            let opening = match opening {
+                Some((instant, rate)) => {
+                    // The right-hand side `due_now` evaluated here, counted as the restart's.
+                    stepper.evaluations += 1;
+                    stepper.restart_with(&mut rhs, t, y, rate, settings.duration);
+                    Some(instant)
+                }
+                None => {
+                    stepper.restart(&mut rhs, t, y, settings.duration);
+                    None
+                }
+            };
             // The instants at the steps' ends, for the conditions that need
             // Kane's equations and for the hook; each step's end is the next one's start.
             let sampled = self.watches(&regime).iter().any(|w| w.sampled());
             let wants_instants = hook.wants_instants() || sampled;
-            let mut start = wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f));
+            let mut start = match opening {
+                Some(instant) => Some(instant),
+                None => wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f)),
+            };
             loop {
                 // While a condition that needs Kane's equations is watched (a
                 // seated block under a rocking one, a sticking building),
