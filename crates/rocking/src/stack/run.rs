@@ -733,10 +733,15 @@ impl<const S: usize> Runner<'_, S> {
             let leaving = |ta, tb| leaving_point(&value, ta, tb);
             let mut points = Points::default();
             let hit = if let Some((k, c)) = watch.of_theta(regime) {
-                // Monotone between the extremes of θ_k; narrowed by Newton on θ̇_k.
-                let at = |t: f64| {
-                    let y = dense.state(t);
-                    c.margin(y[k], y[n + k])
+                // Monotone between the extremes of θ_k; narrowed by Newton on
+                // θ̇_k, on the dense output (built here if it was not yet).
+                let narrow = |ta, va, tb, vb| {
+                    let dense: &DenseOutput<S> = dense;
+                    let at = |t: f64| {
+                        let y = dense.state(t);
+                        c.margin(y[k], y[n + k])
+                    };
+                    find_crossing_newton(at, ta, va, tb, vb).tb
                 };
                 let (start, end) = at_edges();
                 points.push((t0, start));
@@ -744,12 +749,7 @@ impl<const S: usize> Runner<'_, S> {
                     points.push((t, c.margin(theta, 0.0).0));
                 }
                 points.push((t1, end));
-                first_crossing(
-                    points.as_slice(),
-                    watch.on_zero(fell_back),
-                    |ta, va, tb, vb| find_crossing_newton(at, ta, va, tb, vb).tb,
-                    leaving,
-                )
+                first_crossing(points.as_slice(), watch.on_zero(fell_back), narrow, leaving)
             } else if watch == Watch::Stop {
                 // `−σ u̇`: of one sign up to the first root of u̇.
                 let (start, end) = at_edges();
