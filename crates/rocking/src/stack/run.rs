@@ -1099,6 +1099,24 @@ mod tests {
     use crate::stack::Block;
     use crate::Harmonic;
 
+    /// A shaft 4 m × 12 m of 150 t carrying a belfry 3.2 m × 4.5 m of 30 t,
+    /// on a fixed base.
+    fn shaft_and_belfry() -> Stack {
+        let shaft = Block::solid(1, 4.0, 12.0, 1.5e5).unwrap();
+        let belfry = Block::solid(2, 3.2, 4.5, 3.0e4).unwrap();
+        Stack::new(&[shaft, belfry], None, 9.81).unwrap()
+    }
+
+    /// A run of `duration` at rtol 1e-10.
+    fn tight(duration: f64) -> RunSettings {
+        RunSettings {
+            duration,
+            rtol: 1e-10,
+            atol: 1e-12,
+            sample_interval: 0.01,
+        }
+    }
+
     /// The screen's threshold by hand. The shaft (4 m × 12 m, 150 t) and
     /// belfry (3.2 m × 4.5 m, 30 t) seated on it turn as one body about the
     /// shaft's corner: `m |r| / I_O` = 180,000 × sqrt(2² + 7.375²) /
@@ -1113,15 +1131,7 @@ mod tests {
     /// `I_O` alone, the belfry left out) move `w*` by far more.
     #[test]
     fn the_screen_proves_a_velocity_above_the_threshold_by_hand() {
-        let shaft = Block::solid(1, 4.0, 12.0, 1.5e5).unwrap();
-        let belfry = Block::solid(2, 3.2, 4.5, 3.0e4).unwrap();
-        let stack = Stack::new(&[shaft, belfry], None, 9.81).unwrap();
-        let settings = RunSettings {
-            duration: 1.0,
-            rtol: 1e-10,
-            atol: 1e-12,
-            sample_interval: 0.01,
-        };
+        let (stack, settings) = (shaft_and_belfry(), tight(1.0));
         let runner = Runner::<6> {
             stack: &stack,
             ground: &GroundMotion::None,
@@ -1155,15 +1165,7 @@ mod tests {
     /// nothing, or proved the step of the turning point, fails.
     #[test]
     fn a_velocity_proved_free_of_roots_keeps_its_sign_on_the_step() {
-        let shaft = Block::solid(1, 4.0, 12.0, 1.5e5).unwrap();
-        let belfry = Block::solid(2, 3.2, 4.5, 3.0e4).unwrap();
-        let stack = Stack::new(&[shaft, belfry], None, 9.81).unwrap();
-        let settings = RunSettings {
-            duration: 10.0,
-            rtol: 1e-10,
-            atol: 1e-12,
-            sample_interval: 0.01,
-        };
+        let (stack, settings) = (shaft_and_belfry(), tight(10.0));
         for ground in [GroundMotion::None, GroundMotion::Harmonic(Harmonic::new(0.15 * 9.81, 2.0, 10.0, 0.0).unwrap())] {
             let runner = Runner::<6> {
                 stack: &stack,
