@@ -6,6 +6,10 @@
 //! and the same file with its `[[block]]` table cut, the tower alone, in the
 //! same run of the bench. In this process: no process start, no file written.
 //!
+//! Also the bodies of `examples/belfry-assess/assess.toml` under El Centro
+//! 1940 N-S at scales 1 and 2 (41 s), as a sweep computes them, with and
+//! without the belfry.
+//!
 //! `cargo bench -p rocking-scenario --bench belfry`; the ratio of a belfry's
 //! time to its tower's alone is what docs/src/performance.md reports.
 
@@ -28,6 +32,17 @@ fn belfry(c: &mut Criterion) {
             });
         }
     }
+    // The belfry assessment's bodies under El Centro: 41 s each, a few samples.
+    let mut group = c.benchmark_group("record");
+    group.sample_size(10);
+    for scale in [1.0, 2.0] {
+        for (name, case) in support::record_cases(scale).unwrap_or_else(|e| panic!("{e}")) {
+            group.bench_function(format!("summary_scale_{scale}_{name}"), |b| {
+                b.iter(|| black_box(&case).run(RunOptions::SUMMARY).map(|o| o.summary.max_abs_theta()).ok())
+            });
+        }
+    }
+    group.finish();
 }
 
 criterion_group!(benches, belfry);

@@ -4,7 +4,8 @@
 //! 0.6 m block through `simulate`, on a fixed base and on a sliding building)
 //! and of the `belfry` bench (benches/belfry.rs: examples/belfry-on-church.toml
 //! with and without its `[[block]]`, as `rocking run` and as a sweep compute
-//! it).
+//! it; and the bodies of examples/belfry-assess under El Centro 1940 N-S at
+//! scales 1 and 2, with and without the belfry).
 //!
 //!     cargo run --release -p rocking-scenario --example stack_ratios [ROUNDS]
 //!
@@ -91,6 +92,18 @@ fn main() -> Result<(), String> {
             &format!("belfry-on-church {what}: alone / with belfry"),
             pair(rounds, || go(&alone), || go(&belfry)),
         );
+    }
+    // Each of these runs 41 s of record: a tenth of the rounds.
+    let rounds = rounds.div_ceil(10);
+    for scale in [1.0, 2.0] {
+        let [(_, alone), (_, belfry)] = support::record_cases(scale)?;
+        for (what, options) in [("run", RunOptions::ALL), ("sweep", RunOptions::SUMMARY)] {
+            let go = |c: &Case| drop(black_box(c.run(options).ok()));
+            report(
+                &format!("belfry-assess, El Centro x{scale}, as a {what}: alone / with"),
+                pair(rounds, || go(&alone), || go(&belfry)),
+            );
+        }
     }
     Ok(())
 }
