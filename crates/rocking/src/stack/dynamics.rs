@@ -39,19 +39,19 @@ use arrayvec::ArrayVec;
 /// The kinematics of one instant in one set of coordinates: the pose, and for
 /// each block `∂G_i/∂q`, `∂φ_i/∂q` and the velocity-squared part of `G̈_i`.
 #[derive(Debug, Clone)]
-pub struct Frame<'p, T = f64> {
+pub struct Frame<'p, T = f64, const N: usize = MAX_BLOCKS> {
     /// The coordinates.
     pub coords: &'p Coordinates,
     /// Where the blocks are.
-    pub pose: &'p Pose<T>,
-    pub(crate) quad: [Vec2<T>; MAX_BLOCKS],
+    pub pose: &'p Pose<T, N>,
+    pub(crate) quad: [Vec2<T>; N],
 }
 
-impl<'p, T: Real> Frame<'p, T> {
+impl<'p, T: Real, const N: usize> Frame<'p, T, N> {
     /// The frame of `pose` in `coords`.
     #[inline(always)]
-    pub(crate) fn new(coords: &'p Coordinates, pose: &'p Pose<T>) -> Self {
-        let mut quad = [[real(0.0); 2]; MAX_BLOCKS];
+    pub(crate) fn new(coords: &'p Coordinates, pose: &'p Pose<T, N>) -> Self {
+        let mut quad = [[real(0.0); 2]; N];
         for (i, q) in quad.iter_mut().enumerate().take(pose.len()) {
             *q = pose.point_quadratic(i, pose.centre[i]);
         }
@@ -75,19 +75,20 @@ impl<'p, T: Real> Frame<'p, T> {
 
 /// The state of motion at one instant: the accelerations of the regime's
 /// coordinates and of every body (of plain numbers, or of
-/// [`Jet`](crate::jet::Jet)s carrying their time derivatives).
+/// [`Jet`](crate::jet::Jet)s carrying their time derivatives), of a stack of
+/// `N` blocks at most.
 #[derive(Debug, Clone)]
-pub struct Snapshot<T = f64> {
+pub struct Snapshot<T = f64, const N: usize = MAX_BLOCKS> {
     /// Where the blocks are.
-    pub pose: Pose<T>,
+    pub pose: Pose<T, N>,
     /// `θ̈_k` (rad/s², 0 for a stuck interface) at index `k − 1`.
-    pub theta_ddot: [T; MAX_BLOCKS],
+    pub theta_ddot: [T; N],
     /// `ü` (m/s², 0 while the building sticks).
     pub slip_acc: T,
     /// `G̈_i`, absolute (with the ground's `a_g`).
-    pub centre_acc: [Vec2<T>; MAX_BLOCKS],
+    pub centre_acc: [Vec2<T>; N],
     /// `φ̈_i`.
-    pub rotation_acc: [T; MAX_BLOCKS],
+    pub rotation_acc: [T; N],
     /// The ground's acceleration `a_g` (m/s²).
     pub a_g: T,
     /// The effective gravity `g_e` (m/s²).
@@ -110,8 +111,8 @@ pub struct InterfaceLoad<T = f64> {
 
 /// `θ̈_k` by interface and `ü` from the accelerations of `coords`.
 #[inline]
-fn split<T: Real>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; MAX_BLOCKS], T) {
-    let mut theta_ddot = [real(0.0); MAX_BLOCKS];
+fn split<T: Real, const N: usize>(coords: &Coordinates, q_ddot: &[T; MAX_COORDINATES]) -> ([T; N], T) {
+    let mut theta_ddot = [real(0.0); N];
     let mut slip_acc = real(0.0);
     for (a, c) in coords.list().iter().enumerate() {
         match *c {
@@ -164,7 +165,7 @@ impl TwoArms<f64> {
 impl<T: Real> TwoArms<T> {
     /// The arms read from a pose of two rocking blocks.
     #[inline]
-    fn in_pose(pose: &Pose<T>) -> Self {
+    fn in_pose<const N: usize>(pose: &Pose<T, N>) -> Self {
         Self {
             r1: sub(pose.centre[0], pose.corner[0]),
             d: sub(pose.corner[1], pose.corner[0]),
@@ -200,7 +201,7 @@ impl OneArm<f64> {
 impl<T: Real> OneArm<T> {
     /// The arm read from a pose where only interface `k` rocks.
     #[inline]
-    fn in_pose(stack: &Stack, pose: &Pose<T>, k: usize) -> Self {
+    fn in_pose<const N: usize>(stack: &Stack, pose: &Pose<T, N>, k: usize) -> Self {
         let mut moment = [real::<T>(0.0); 2];
         for (i, block) in stack.blocks.iter().enumerate().skip(k) {
             moment = add(moment, scale(sub(pose.centre[i], pose.corner[k]), real::<T>(block.mass)));
@@ -285,7 +286,7 @@ impl Stack {
     /// the rows and columns of the coordinates that move it: the others'
     /// partials are exact zeros.
     #[inline]
-    pub(crate) fn kane_system<T: Real, const C: usize>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T) -> (Matrix<T, C>, [T; C]) {
+    pub(crate) fn kane_system<T: Real, const C: usize, const N: usize>(&self, frame: &Frame<T, N>, sigma: f64, a_g: T, g_e: T) -> (Matrix<T, C>, [T; C]) {
         let n = frame.coords.len();
         let mut m: Matrix<T, C> = [[real(0.0); C]; C];
         let mut f = [real(0.0); C];
@@ -340,7 +341,7 @@ impl Stack {
     /// has no solution (Painlevé's paradox of the dynamic normal force, a
     /// light building under high friction).
     #[inline]
-    fn solve_kane<T: Real>(&self, frame: &Frame<T>, regime: &StackRegime, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
+    fn solve_kane<T: Real, const N: usize>(&self, frame: &Frame<T, N>, regime: &StackRegime, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
         let slip = slip_direction(frame.coords, regime);
         if self.rocking_pair(regime).is_some() {
             let ([t1, t2], slip_acc) = self.two_rocking(&TwoArms::in_pose(frame.pose), slip, a_g, g_e);
@@ -372,18 +373,18 @@ impl Stack {
         // order. Larger systems, rarer, share one padded code.
         match frame.coords.len() {
             0 => [real(0.0); MAX_COORDINATES],
-            1 => self.solve_kane_of::<T, 1>(frame, sigma, a_g, g_e),
-            2 => self.solve_kane_of::<T, 2>(frame, sigma, a_g, g_e),
-            3 => self.solve_kane_of::<T, 3>(frame, sigma, a_g, g_e),
-            _ => self.solve_kane_of::<T, MAX_COORDINATES>(frame, sigma, a_g, g_e),
+            1 => self.solve_kane_of::<T, 1, N>(frame, sigma, a_g, g_e),
+            2 => self.solve_kane_of::<T, 2, N>(frame, sigma, a_g, g_e),
+            3 => self.solve_kane_of::<T, 3, N>(frame, sigma, a_g, g_e),
+            _ => self.solve_kane_of::<T, MAX_COORDINATES, N>(frame, sigma, a_g, g_e),
         }
     }
 
     /// [`Stack::solve_kane`] in matrices of order `C` (the number of
     /// coordinates or more), `q̈` padded with zeros.
     #[inline]
-    fn solve_kane_of<T: Real, const C: usize>(&self, frame: &Frame<T>, sigma: f64, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
-        let (mut m, mut q) = self.kane_system::<T, C>(frame, sigma, a_g, g_e);
+    fn solve_kane_of<T: Real, const C: usize, const N: usize>(&self, frame: &Frame<T, N>, sigma: f64, a_g: T, g_e: T) -> [T; MAX_COORDINATES] {
+        let (mut m, mut q) = self.kane_system::<T, C, N>(frame, sigma, a_g, g_e);
         if solve(&mut m, &mut q, frame.coords.len()) > 0.0 {
             let mut q_ddot = [real(0.0); MAX_COORDINATES];
             q_ddot[..C].copy_from_slice(&q);
@@ -614,16 +615,16 @@ impl Stack {
     /// [`Stack::snapshot`] at the rotations `θ_k` and rates `θ̇_k`: on
     /// [`Jet`](crate::jet::Jet)s (`θ_k` with `θ̇_k`, `θ̇_k` with `θ̈_k`, `a_g`
     /// with its rate), every quantity with its exact time derivative along
-    /// the motion.
+    /// the motion; given for every block, the stack of `N` blocks at most.
     #[inline]
-    pub(crate) fn snapshot_of<T: Real>(&self, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS], a_g: T, g_e: T) -> Snapshot<T> {
+    pub(crate) fn snapshot_of<T: Real, const N: usize>(&self, regime: &StackRegime, theta: &[T], theta_dot: &[T], a_g: T, g_e: T) -> Snapshot<T, N> {
         let pose = Pose::of(self, regime, theta, theta_dot);
         let coords = Coordinates::of(self, regime);
         let frame = Frame::new(&coords, &pose);
         let q_ddot = self.solve_kane(&frame, regime, a_g, g_e);
         let (theta_ddot, slip_acc) = split(frame.coords, &q_ddot);
-        let mut centre_acc = [[real(0.0); 2]; MAX_BLOCKS];
-        let mut rotation_acc = [real(0.0); MAX_BLOCKS];
+        let mut centre_acc = [[real(0.0); 2]; N];
+        let mut rotation_acc = [real(0.0); N];
         for i in 0..self.len() {
             let mut acc = [a_g + frame.quad[i][0], frame.quad[i][1]];
             for a in 0..frame.coords.moving(i) {
@@ -646,7 +647,7 @@ impl Stack {
 
     /// The normal force of the foundation on the building in `snap`:
     /// `g_e Σ m` (constant) or `Σ m_i (g_e + ÿ_i)` (dynamic).
-    pub fn normal_force<T: Real>(&self, snap: &Snapshot<T>) -> T {
+    pub fn normal_force<T: Real, const N: usize>(&self, snap: &Snapshot<T, N>) -> T {
         let weight = snap.g_e * self.total_mass();
         if self.dynamic_normal_force() {
             let mut blocks = real::<T>(0.0);
@@ -662,7 +663,7 @@ impl Stack {
     /// The friction force on the building, `F = m1 Ẍ_p + Σ_i m_i Ẍ_i`: while it
     /// sticks (`Ẍ_p = a_g`), the `F_req` it needs; it slips when
     /// `|F_req| > μs N`.
-    pub fn friction_force<T: Real>(&self, snap: &Snapshot<T>) -> T {
+    pub fn friction_force<T: Real, const N: usize>(&self, snap: &Snapshot<T, N>) -> T {
         let mut blocks = real::<T>(0.0);
         for (b, acc) in self.blocks.iter().zip(&snap.centre_acc) {
             blocks = blocks + acc[0] * b.mass;
@@ -675,7 +676,7 @@ impl Stack {
     /// its components along and normal to the supporting surface, and
     /// `M_k = Σ_{i≥k} (G_i − C_k) × m_i (G̈_i + g_e e_y) − Σ_{i≥k} J_i φ̈_i`
     /// (`φ` is clockwise positive, hence the minus).
-    pub fn interface_load<T: Real>(&self, snap: &Snapshot<T>, k: usize) -> InterfaceLoad<T> {
+    pub fn interface_load<T: Real, const N: usize>(&self, snap: &Snapshot<T, N>, k: usize) -> InterfaceLoad<T> {
         let pose = &snap.pose;
         let mut force = [real::<T>(0.0), real(0.0)];
         let mut moment = real::<T>(0.0);
@@ -698,7 +699,7 @@ impl Stack {
     /// need; block `k` then rocks on the corner `s_k = sgn M_k`. For one block
     /// standing on the ground (`M = −m (H/2) Ẍ_p`, `N = m g_e`) it is positive
     /// exactly when `|Ẍ_p| > g_e tan α`.
-    pub fn uplift_margin<T: Real>(&self, snap: &Snapshot<T>, k: usize) -> (T, f64) {
+    pub fn uplift_margin<T: Real, const N: usize>(&self, snap: &Snapshot<T, N>, k: usize) -> (T, f64) {
         let load = self.interface_load(snap, k);
         let corner = load.moment.value().signum();
         (load.moment * corner - load.normal * (self.blocks[k].width / 2.0), corner)
@@ -797,10 +798,10 @@ mod tests {
         a_g: T,
         g_e: T,
     ) -> ([T; MAX_BLOCKS], T) {
-        let pose = Pose::of(stack, regime, theta, theta_dot);
+        let pose: Pose<T> = Pose::of(stack, regime, theta, theta_dot);
         let frame = Frame::new(coords, &pose);
         let sigma = slip_direction(coords, regime).unwrap_or(0.0);
-        split(coords, &stack.solve_kane_of::<T, MAX_COORDINATES>(&frame, sigma, a_g, g_e))
+        split(coords, &stack.solve_kane_of::<T, MAX_COORDINATES, MAX_BLOCKS>(&frame, sigma, a_g, g_e))
     }
 
     /// Both interfaces rocking, on every pair of corners, on a fixed base and
@@ -850,7 +851,7 @@ mod tests {
                                         |x: &[f64; MAX_BLOCKS], dx: &[f64; MAX_BLOCKS]| -> [Jet; MAX_BLOCKS] { std::array::from_fn(|k| Jet::new(x[k], dx[k])) };
                                     let (theta, theta_dot) = (jets(&state.theta, &state.theta_dot), jets(&state.theta_dot, &slow));
                                     let (a_g_jet, g_e_jet) = (Jet::new(a_g, 25.0), Jet::from(g_e));
-                                    let snap = stack.snapshot_of(&regime, &theta, &theta_dot, a_g_jet, g_e_jet);
+                                    let snap: Snapshot<Jet> = stack.snapshot_of(&regime, &theta, &theta_dot, a_g_jet, g_e_jet);
                                     let (jet, jet_u) = generic(&stack, &regime, &theta, &theta_dot, a_g_jet, g_e_jet);
                                     let mut pairs = vec![(fast[0], slow[0]), (fast[1], slow[1]), (fast_u, slow_u)];
                                     for (a, b) in [(snap.theta_ddot[0], jet[0]), (snap.theta_ddot[1], jet[1]), (snap.slip_acc, jet_u)] {
@@ -1030,7 +1031,7 @@ mod tests {
                                     let mut angles = [Jet::default(); MAX_BLOCKS];
                                     let mut rates = [Jet::default(); MAX_BLOCKS];
                                     (angles[k], rates[k]) = (Jet::new(theta, theta_dot), Jet::new(theta_dot, theta_ddot));
-                                    let pose = Pose::of(&stack, &regime, &angles, &rates);
+                                    let pose: Pose<Jet> = Pose::of(&stack, &regime, &angles, &rates);
                                     let (on_jets, _) = stack.one_rocking(k, &OneArm::in_pose(&stack, &pose, k), None, Jet::new(a_g, a_rate), Jet::from(G));
                                     assert!(theta_ddot.abs() <= bound * (1.0 + 1e-12), "θ̈ {theta_ddot} above {bound}");
                                     assert!(on_jets.d.abs() <= jerk * (1.0 + 1e-12), "θ⃛ {} above {jerk}", on_jets.d);
@@ -1100,7 +1101,7 @@ mod tests {
                                         };
                                         let (theta_j, theta_dot_j) = (jets(&state.theta, &state.theta_dot), jets(&state.theta_dot, &slow));
                                         let (a_g_jet, g_e_jet) = (Jet::new(a_g, 25.0), Jet::from(g_e));
-                                        let snap = stack.snapshot_of(&regime, &theta_j, &theta_dot_j, a_g_jet, g_e_jet);
+                                        let snap: Snapshot<Jet> = stack.snapshot_of(&regime, &theta_j, &theta_dot_j, a_g_jet, g_e_jet);
                                         let (jet, jet_u) = generic(&stack, &regime, &theta_j, &theta_dot_j, a_g_jet, g_e_jet);
                                         let mut pairs = vec![(fast[k], slow[k]), (fast_u, slow_u)];
                                         for (a, b) in [(snap.theta_ddot[k], jet[k]), (snap.slip_acc, jet_u)] {

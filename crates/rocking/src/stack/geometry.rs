@@ -166,25 +166,26 @@ impl Coordinates {
 
 /// Where every block is at one instant of one regime, and how fast it turns:
 /// of plain numbers, or of [`Jet`](crate::jet::Jet)s that carry each
-/// position's time derivative along the motion.
+/// position's time derivative along the motion; of a stack of `N` blocks at
+/// most (a run's own are sized to its stack, so that they copy no more).
 #[derive(Debug, Clone)]
-pub struct Pose<T = f64> {
+pub struct Pose<T = f64, const N: usize = MAX_BLOCKS> {
     n: usize,
     /// `s_k` of the rocking interfaces, `None` for the stuck ones.
-    pub(crate) pivots: [Option<f64>; MAX_BLOCKS],
+    pub(crate) pivots: [Option<f64>; N],
     /// Absolute rotation `φ_k`.
-    pub(crate) phi: [T; MAX_BLOCKS],
+    pub(crate) phi: [T; N],
     /// `φ̇_k`.
-    pub(crate) phi_dot: [T; MAX_BLOCKS],
+    pub(crate) phi_dot: [T; N],
     /// `(sin φ_{k−1}, cos φ_{k−1})`: the rotation of the surface block `k`
     /// stands on.
-    support: [(T, T); MAX_BLOCKS],
+    support: [(T, T); N],
     /// `C_k`.
-    pub(crate) base: [Vec2<T>; MAX_BLOCKS],
+    pub(crate) base: [Vec2<T>; N],
     /// `G_k`.
-    pub(crate) centre: [Vec2<T>; MAX_BLOCKS],
+    pub(crate) centre: [Vec2<T>; N],
     /// `O_k` (a rocking interface's only).
-    pub(crate) corner: [Vec2<T>; MAX_BLOCKS],
+    pub(crate) corner: [Vec2<T>; N],
 }
 
 impl Pose {
@@ -221,22 +222,23 @@ impl Pose {
     }
 }
 
-impl<T: Real> Pose<T> {
+impl<T: Real, const N: usize> Pose<T, N> {
     /// The pose at the rotations `θ_k` and their rates `θ̇_k` (of the rocking
-    /// interfaces; a stuck interface's are taken as 0).
+    /// interfaces; a stuck interface's are taken as 0), given for every
+    /// block; `stack` has at most `N` blocks.
     #[inline(always)]
-    pub(crate) fn of(stack: &Stack, regime: &StackRegime, theta: &[T; MAX_BLOCKS], theta_dot: &[T; MAX_BLOCKS]) -> Self {
+    pub(crate) fn of(stack: &Stack, regime: &StackRegime, theta: &[T], theta_dot: &[T]) -> Self {
         let (zero, one) = (real::<T>(0.0), real::<T>(1.0));
         let n = stack.len();
         let mut pose = Self {
             n,
-            pivots: [None; MAX_BLOCKS],
-            phi: [zero; MAX_BLOCKS],
-            phi_dot: [zero; MAX_BLOCKS],
-            support: [(zero, one); MAX_BLOCKS],
-            base: [[zero; 2]; MAX_BLOCKS],
-            centre: [[zero; 2]; MAX_BLOCKS],
-            corner: [[zero; 2]; MAX_BLOCKS],
+            pivots: [None; N],
+            phi: [zero; N],
+            phi_dot: [zero; N],
+            support: [(zero, one); N],
+            base: [[zero; 2]; N],
+            centre: [[zero; 2]; N],
+            corner: [[zero; 2]; N],
         };
         let (mut phi_below, mut phi_dot_below) = (zero, zero);
         let mut rot_below = (zero, one);

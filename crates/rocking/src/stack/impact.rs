@@ -155,7 +155,7 @@ impl Stack {
         let coords = Coordinates::with_slip(self, after, has_building);
         let frame = Frame::new(&coords, &pose);
         let n = frame.coords.len();
-        let (mut m, _) = self.kane_system::<f64, MAX_COORDINATES>(&frame, 0.0, 0.0, 0.0);
+        let (mut m, _) = self.kane_system::<f64, MAX_COORDINATES, MAX_BLOCKS>(&frame, 0.0, 0.0, 0.0);
         // Generalised momenta before, the vertical momentum before, and the
         // vertical momentum per unit of each new velocity.
         let mut p = [0.0; MAX_COORDINATES];

@@ -121,7 +121,8 @@ pub(crate) fn simulate(
         demand: [0.0; MAX_BLOCKS],
         last: (0.0, regime, start),
     };
-    reporter.instant(&regime, &start, 0.0);
+    // Once, at the start: its size is immaterial.
+    reporter.instant::<MAX_BLOCKS>(&regime, &start, 0.0);
     let out = run_with(stack, ground, &start, &run_settings, &mut reporter)?;
     let Reporter { mut tracker, demand, last, .. } = reporter;
     let (t_end, end_regime, end) = last;
@@ -203,14 +204,14 @@ fn sample(stack: &Stack, kernel: &Kernel, a_g: f64, coords: &Coordinates, regime
 /// What the summary reads of the motion at an instant (on plain numbers, or
 /// on jets for the slopes): the tower's top acceleration and the load each
 /// interface carries.
-struct Peaks<T> {
+struct Peaks<T, const N: usize> {
     top: T,
-    loads: [InterfaceLoad<T>; MAX_BLOCKS],
+    loads: [InterfaceLoad<T>; N],
 }
 
-impl<T: Real> Peaks<T> {
+impl<T: Real, const N: usize> Peaks<T, N> {
     /// The peaks of `snap`, Kane's equations solved in `regime`.
-    fn of(stack: &Stack, kernel: &Kernel, regime: &StackRegime, snap: &Snapshot<T>) -> Self {
+    fn of(stack: &Stack, kernel: &Kernel, regime: &StackRegime, snap: &Snapshot<T, N>) -> Self {
         let pose = &snap.pose;
         let (_, top) = kernel.point_kinematics(
             regime.interfaces[0].pivot().map(Pivot::sign),
@@ -225,7 +226,7 @@ impl<T: Real> Peaks<T> {
             tangential: zero,
             normal: zero,
             moment: zero,
-        }; MAX_BLOCKS];
+        }; N];
         for (k, load) in loads.iter_mut().enumerate().take(stack.len()) {
             *load = stack.interface_load(snap, k);
         }
@@ -235,15 +236,18 @@ impl<T: Real> Peaks<T> {
 
 impl<O: Observer> Reporter<'_, O> {
     /// The peaks at one instant: the tower's rotation and top acceleration,
-    /// the slip, and every interface's friction demand.
-    fn instant(&mut self, regime: &StackRegime, state: &StackState, t: f64) {
-        let snap = self.stack.snapshot(regime, state, self.ground.acceleration(t), self.stack.gravity());
+    /// the slip, and every interface's friction demand (of a stack of `N`
+    /// blocks).
+    fn instant<const N: usize>(&mut self, regime: &StackRegime, state: &StackState, t: f64) {
+        let snap = self
+            .stack
+            .snapshot_of::<f64, N>(regime, &state.theta, &state.theta_dot, self.ground.acceleration(t), self.stack.gravity());
         self.tracker.displacement(state.theta[0], state.slip);
         self.read(&Peaks::of(self.stack, self.kernel, regime, &snap));
     }
 
     /// Keeps the peaks of one instant.
-    fn read(&mut self, peaks: &Peaks<f64>) {
+    fn read<const N: usize>(&mut self, peaks: &Peaks<f64, N>) {
         self.tracker.top(peaks.top);
         for k in 0..self.stack.len() {
             let load = peaks.loads[k];
@@ -255,7 +259,7 @@ impl<O: Observer> Reporter<'_, O> {
     }
 
     /// The values of `peaks` on jets.
-    fn values(peaks: &Peaks<Jet>) -> Peaks<f64> {
+    fn values<const N: usize>(peaks: &Peaks<Jet, N>) -> Peaks<f64, N> {
         Peaks {
             top: peaks.top.v,
             loads: std::array::from_fn(|k| peaks.loads[k].values()),
@@ -266,7 +270,7 @@ impl<O: Observer> Reporter<'_, O> {
     /// where its motion holds: each quantity's extrema located on its exact
     /// slopes where one could raise what is kept (the tower's rule,
     /// `engine::peaks`).
-    fn inside(&mut self, regime: &StackRegime, stretch: &Stretch, p0: &Peaks<Jet>, p1: &Peaks<Jet>) {
+    fn inside<const N: usize>(&mut self, regime: &StackRegime, stretch: &Stretch<N>, p0: &Peaks<Jet, N>, p1: &Peaks<Jet, N>) {
         let (t0, t1, reached) = (stretch.t0, stretch.t1, stretch.reached);
         let h = t1 - t0;
         let (stack, kernel) = (self.stack, self.kernel);
@@ -345,12 +349,12 @@ impl<O: Observer> Reporter<'_, O> {
     }
 }
 
-impl<O: Observer> Hook for Reporter<'_, O> {
+impl<O: Observer, const N: usize> Hook<N> for Reporter<'_, O> {
     fn wants_instants(&self) -> bool {
         true
     }
 
-    fn step(&mut self, regime: &StackRegime, stretch: &Stretch) -> Flow {
+    fn step(&mut self, regime: &StackRegime, stretch: &Stretch<N>) -> Flow {
         let (t0, reached) = (stretch.t0, stretch.reached);
         self.tracker.time(project(regime).motion(), reached - t0);
         if let Some((start, end)) = stretch.ends {
@@ -366,7 +370,7 @@ impl<O: Observer> Hook for Reporter<'_, O> {
         }
         if reached < stretch.t1 {
             // The motion ends at a transition inside the step: its last instant.
-            self.instant(regime, &stretch.last, reached);
+            self.instant::<N>(regime, &stretch.last, reached);
         }
         self.last = (reached, *regime, stretch.last);
         if self.observer.wants_steps() {
@@ -432,7 +436,7 @@ impl<O: Observer> Hook for Reporter<'_, O> {
         for e in events {
             self.report(e)?;
         }
-        self.instant(&event.regime, &event.after, t);
+        self.instant::<N>(&event.regime, &event.after, t);
         self.last = (t, event.regime, event.after);
         ControlFlow::Continue(())
     }
