@@ -230,6 +230,7 @@ impl<T: Real, const N: usize> Pose<T, N> {
     pub(crate) fn of(stack: &Stack, regime: &StackRegime, theta: &[T], theta_dot: &[T]) -> Self {
         let (zero, one) = (real::<T>(0.0), real::<T>(1.0));
         let n = stack.len();
+        debug_assert!(n <= N, "a pose of {N} blocks at most for a stack of {n}");
         let mut pose = Self {
             n,
             pivots: [None; N],

@@ -265,9 +265,9 @@ impl<H: Hook<1> + Hook<2> + Hook<3> + Hook<4> + Hook<5> + Hook<6>> Hooks for H {
 
 /// [`run`], telling `hook` the steps and events as they come. The runner is
 /// sized to the stack: `N` blocks, a state of `S = 2N + 2` numbers, so that
-/// the instants it copies from step to step hold no unused blocks (5.6 % of
-/// the instructions of a belfry's run under a record, against instants sized
-/// for [`MAX_BLOCKS`]: docs/src/performance.md).
+/// the instants it copies from step to step hold no unused blocks (5.6 % to
+/// 16 % of the instructions of a belfry's runs under a record, against
+/// instants sized for [`MAX_BLOCKS`]: docs/src/performance.md).
 pub(crate) fn run_with(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings, hook: &mut impl Hooks) -> Result<StackRun, Error> {
     macro_rules! sized {
         ($($n:literal => $s:literal),*) => {
