@@ -202,7 +202,7 @@ pub fn initial_regime(stack: &Stack, initial: &StackState) -> StackRegime {
 /// `a_g` with `ȧ_g`), so that every quantity of the motion comes with its
 /// time derivative along it. The search for the transitions that need
 /// Kane's equations reads their conditions here, and the [`Hook`]'s peaks
-/// read the same solve. Of a stack of `N` blocks.
+/// read the same solve. Of a stack of `N` blocks at most.
 #[derive(Debug, Clone)]
 pub(crate) struct Instant<const N: usize> {
     /// The state.
@@ -258,26 +258,30 @@ pub(crate) trait Hook<const N: usize> {
 
 impl<const N: usize> Hook<N> for () {}
 
-/// A [`Hook`] for a stack of any size.
-pub(crate) trait Hooks: Hook<1> + Hook<2> + Hook<3> + Hook<4> + Hook<5> + Hook<6> {}
+/// A [`Hook`] for a stack of any size: of the runner's two sizes of
+/// instants ([`run_with`]).
+pub(crate) trait Hooks: Hook<2> + Hook<MAX_BLOCKS> {}
 
-impl<H: Hook<1> + Hook<2> + Hook<3> + Hook<4> + Hook<5> + Hook<6>> Hooks for H {}
+impl<H: Hook<2> + Hook<MAX_BLOCKS>> Hooks for H {}
 
-/// [`run`], telling `hook` the steps and events as they come. The runner is
-/// sized to the stack: `N` blocks, a state of `S = 2N + 2` numbers, so that
-/// the instants it copies from step to step hold no unused blocks (5.6 % to
-/// 16 % of the instructions of a belfry's runs under a record, against
-/// instants sized for [`MAX_BLOCKS`]: docs/src/performance.md).
+/// [`run`], telling `hook` the steps and events as they come. The runner's
+/// state holds `S = 2n + 2` numbers for the stack's `n` blocks, and its
+/// instants `N >= n` blocks: two for a stack of one or two (a belfry on its
+/// shaft, the common stack), [`MAX_BLOCKS`] for more. Instants sized for
+/// six blocks cost a belfry's runs under a record 5.6 % to 16 % more
+/// instructions (their copies from step to step); each size is a copy of
+/// the run in the binary, which for every size from one to six made the
+/// page's WebAssembly 16 % larger (docs/src/performance.md).
 pub(crate) fn run_with(stack: &Stack, ground: &GroundMotion, initial: &StackState, settings: &RunSettings, hook: &mut impl Hooks) -> Result<StackRun, Error> {
     macro_rules! sized {
-        ($($n:literal => $s:literal),*) => {
+        ($($n:literal => ($blocks:expr, $s:literal)),*) => {
             match stack.len() {
-                $($n => Runner::<$n, $s> { stack, ground, settings }.run(initial, hook),)*
+                $($n => Runner::<{ $blocks }, $s> { stack, ground, settings }.run(initial, hook),)*
                 _ => unreachable!("a stack has 1 to MAX_BLOCKS blocks"),
             }
         };
     }
-    sized!(1 => 4, 2 => 6, 3 => 8, 4 => 10, 5 => 12, 6 => 14)
+    sized!(1 => (2, 4), 2 => (2, 6), 3 => (MAX_BLOCKS, 8), 4 => (MAX_BLOCKS, 10), 5 => (MAX_BLOCKS, 12), 6 => (MAX_BLOCKS, 14))
 }
 
 const _: () = assert!(MAX_BLOCKS == 6, "the dispatch in `run` lists every size");
@@ -419,8 +423,9 @@ struct Runner<'a, const N: usize, const S: usize> {
 }
 
 impl<const N: usize, const S: usize> Runner<'_, N, S> {
+    /// The number of blocks (`N` or fewer).
     fn n(&self) -> usize {
-        N
+        (S - 2) / 2
     }
 
     fn pack(&self, state: &StackState) -> [f64; S] {
@@ -469,7 +474,7 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
     fn instant(&self, regime: &StackRegime, piece: &Piece, t: f64, y: &[f64; S], rate: &[f64; S]) -> Instant<N> {
         let n = self.n();
         // Components `from … from + n` of the state, each with its rate.
-        let jets = |from: usize| -> [Jet; N] { std::array::from_fn(|k| Jet::new(y[from + k], rate[from + k])) };
+        let jets = |from: usize| -> [Jet; N] { std::array::from_fn(|k| if k < n { Jet::new(y[from + k], rate[from + k]) } else { Jet::default() }) };
         Instant {
             state: self.unpack(y),
             snap: self
