@@ -113,8 +113,9 @@ fn energy_of_a_free_two_block_stack() {
 /// released with every drum leaning 0.04 rad on alternate sides on a fixed
 /// base with no input. Between events the energy is constant; the drums
 /// lift, rock and land (every interface impacts) and the run loses energy
-/// only there. rtol 1e-11 over 1.5 s: the energy drifts by far less than
-/// 1e-8 of the column's `m g H` scale.
+/// only there. rtol 1e-11 over 1.5 s: the energy drifts by about 1e-12 of
+/// the column's `m g H` scale (measured); 1e-10 leaves a hundredfold margin
+/// for rounding, while a wrong term of the equations moves it by far more.
 #[test]
 fn a_column_of_every_size_keeps_its_energy_between_impacts() {
     for n in 1..=MAX_BLOCKS {
@@ -127,7 +128,7 @@ fn a_column_of_every_size_keeps_its_energy_between_impacts() {
         let out = run(&stack, &GroundMotion::None, &start, &tight(1.5)).expect("the run");
         assert!(out.overturned.is_none(), "{n} drums: none overturns");
         let scale = stack.total_mass() * G * 1.5 * n as f64;
-        check_energy_between_events(&stack, &out, 1e-8 * scale);
+        check_energy_between_events(&stack, &out, 1e-10 * scale);
         let (first, last) = (stack.energy(&out.samples[0].regime, &out.samples[0].state), {
             let s = out.samples.last().expect("samples");
             stack.energy(&s.regime, &s.state)
