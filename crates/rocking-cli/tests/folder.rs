@@ -9,11 +9,15 @@
 use crate::util::{arg, read, rocking, tempdir, write, SCENARIO};
 use std::path::Path;
 
-/// The names in `dir`, sorted.
+/// The manifest of an output folder: the names its last run wrote.
+pub const MANIFEST: &str = ".rocking-manifest";
+
+/// The names in `dir`, sorted, the manifest aside.
 pub fn names(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()).unwrap_or_else(|e| panic!("{e}")))
+        .filter(|n| n != MANIFEST)
         .collect();
     names.sort();
     names
@@ -79,6 +83,8 @@ fn ctrl_c_stops_a_run_and_leaves_the_folder_as_it_was() {
     let out = dir.path().join("out");
     std::fs::create_dir_all(&out).unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(out.join("summary.json"), "earlier").unwrap_or_else(|e| panic!("{e}"));
+    // An earlier run's file: its manifest names it.
+    std::fs::write(out.join(MANIFEST), "summary.json\n").unwrap_or_else(|e| panic!("{e}"));
     // Interrupted once the history is being written in the staging folder.
     let history = |staging: &Path| std::fs::metadata(staging.join("history.csv")).map_or(0, |m| m.len()) >= 100_000;
     let r = crate::util::interrupted(&["run", arg(&file), "--out", arg(&out)], &out, "-INT", Duration::from_secs(60), history);

@@ -21,6 +21,7 @@ mod regression_inventory_block_columns;
 mod regression_inventory_no_tower_assessed;
 mod regression_merge_bounds;
 mod regression_merge_into_a_used_folder;
+mod regression_output_folder_manifest;
 mod regression_record_set_error_order;
 mod regression_refused_run_leaves_no_folder;
 mod regression_spectrum_dt;

@@ -9,11 +9,15 @@
 //! to the last move, so the folder ends with the complete files of the run
 //! that committed last.
 //!
-//! What a run owns: the files this tool writes ([`KNOWN`]). When a run
-//! succeeds, the known files of an earlier run that this one did not write
-//! (figures of an earlier `--plot`, a `summary.json` beside a new `sweep.csv`)
-//! are removed and the rest replaced; any other file in the folder (the
-//! user's own, the scenario itself) is left as it is. When a run fails or is
+//! What a run owns: the files it wrote, named in the folder's manifest
+//! ([`MANIFEST`], one name a line, written with the files). When a run
+//! succeeds, the files of the earlier run's manifest that this one did not
+//! write (figures of an earlier `--plot`, a `summary.json` beside a new
+//! `sweep.csv`) are removed and the rest replaced; any other file in the
+//! folder, whatever its name (the user's own `report.html`, the scenario
+//! itself), is left as it is, and a run that would replace one is refused
+//! before it starts ([`refuse_foreign`]) and again, under the lock, at the
+//! commit. When a run fails or is
 //! cut short, the staging folder is removed and the folder keeps the earlier
 //! run's files untouched; a folder the run created for its output (the
 //! output folder, a missing parent of it) is removed too, so that a refused
@@ -26,7 +30,9 @@ use anyhow::Context;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
-/// Every file name this tool writes into an output folder.
+/// Every file name this tool writes into an output folder: a manifest's
+/// entry is removed only if it is one of these (a manifest edited by hand
+/// cannot make a run remove another file).
 pub const KNOWN: [&str; 41] = [
     "summary.json",
     "history.csv",
@@ -70,6 +76,52 @@ pub const KNOWN: [&str; 41] = [
     "inventory.csv",
     "inventory.geojson",
 ];
+
+/// The manifest of an output folder: the names of the files the last run
+/// that committed there wrote.
+pub const MANIFEST: &str = ".rocking-manifest";
+
+/// The first line of a manifest.
+const MANIFEST_HEADER: &str = "# the files rocking wrote in this folder, one a line (the next run replaces or removes these and no other)";
+
+/// The names a folder's manifest lists (none if it has none); lines that
+/// are not a plain file name (a path, `..`, a comment) are skipped.
+pub fn manifest(dir: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(dir.join(MANIFEST)).unwrap_or_default();
+    text.lines()
+        .filter(|l| !l.is_empty() && !l.starts_with('#') && *l != "." && *l != ".." && !l.contains(['/', '\\']))
+        .map(str::to_string)
+        .collect()
+}
+
+/// Whether `name` in `dir` may be replaced: absent, or written by an earlier run (in `listed`, its manifest).
+fn replaceable(dir: &Path, name: &str, listed: &[String]) -> bool {
+    std::fs::symlink_metadata(dir.join(name)).is_err() || listed.iter().any(|l| l == name)
+}
+
+/// The line refusing to replace `path`, a file no run of this tool wrote.
+fn foreign(path: &Path) -> anyhow::Error {
+    anyhow::anyhow!(
+        "refusing to replace {}: it was not written by an earlier run of rocking (it is not in {}; move it, or choose another --out)",
+        path.display(),
+        path.with_file_name(MANIFEST).display()
+    )
+}
+
+/// Fails if any of `outputs` is there already and no earlier run of this
+/// tool wrote it (it is not in its folder's manifest).
+pub fn refuse_foreign(outputs: &[PathBuf]) -> anyhow::Result<()> {
+    for output in outputs {
+        let (Some(dir), Some(name)) = (output.parent(), output.file_name()) else {
+            continue;
+        };
+        let dir = if dir.as_os_str().is_empty() { Path::new(".") } else { dir };
+        if !replaceable(dir, &name.to_string_lossy(), &manifest(dir)) {
+            return Err(foreign(output));
+        }
+    }
+    Ok(())
+}
 
 /// The prefix of a staging folder's name (the rest is drawn at random).
 pub const STAGING_PREFIX: &str = ".rocking-partial-";
@@ -115,28 +167,43 @@ impl Staging {
         self.staging.path().join(name)
     }
 
-    /// Removes the known files of an earlier run that this one did not write,
-    /// then moves this run's files into the folder (each rename is atomic),
-    /// holding the folder's lock throughout: another run's commit comes
-    /// wholly before or wholly after.
+    /// Removes the files of the earlier run's manifest that this run did not
+    /// write, then moves this run's files and its manifest into the folder
+    /// (each rename is atomic), holding the folder's lock throughout: another
+    /// run's commit comes wholly before or wholly after. A file of this run's
+    /// names that no earlier run wrote fails the commit before anything moves.
     pub fn commit(mut self) -> anyhow::Result<()> {
-        let written: Vec<_> = std::fs::read_dir(self.folder())
+        let written: Vec<String> = std::fs::read_dir(self.folder())
             .with_context(|| format!("cannot read {}", self.folder().display()))?
-            .filter_map(|e| e.ok().map(|e| e.file_name()))
+            .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
             .collect();
+        let mut list = String::from(MANIFEST_HEADER);
+        for name in &written {
+            list.push('\n');
+            list.push_str(name);
+        }
+        list.push('\n');
+        // Written in the staging folder after its listing, so that it is not one of its own names.
+        let staged_manifest = self.path(MANIFEST);
+        std::fs::write(&staged_manifest, list).with_context(|| format!("cannot write {}", self.dir.join(MANIFEST).display()))?;
         // A second Ctrl-C waits for the moves to end.
         let held = self.registered.hold();
         let lock = FolderLock::take(&self.dir)?;
-        // A name that a rename cannot replace (a folder) fails before anything moves.
+        let listed = manifest(&self.dir);
+        // A name that a rename cannot replace (a folder), or that is not an
+        // earlier run's, fails before anything moves.
         for name in &written {
             let to = self.dir.join(name);
             if to.is_dir() {
                 anyhow::bail!("cannot write {}: it is a folder", to.display());
             }
+            if !replaceable(&self.dir, name, &listed) {
+                return Err(foreign(&to));
+            }
         }
-        for name in KNOWN {
+        for name in &listed {
             let old = self.dir.join(name);
-            if !written.iter().any(|w| w == name) && old.is_file() && !is_input(&old, &self.inputs) {
+            if KNOWN.contains(&name.as_str()) && !written.contains(name) && old.is_file() && !is_input(&old, &self.inputs) {
                 std::fs::remove_file(&old).with_context(|| format!("cannot remove {} of an earlier run", old.display()))?;
             }
         }
@@ -144,6 +211,8 @@ impl Staging {
             let to = self.dir.join(name);
             std::fs::rename(self.folder().join(name), &to).with_context(|| format!("cannot write {}", to.display()))?;
         }
+        let manifest_path = self.dir.join(MANIFEST);
+        std::fs::rename(&staged_manifest, &manifest_path).with_context(|| format!("cannot write {}", manifest_path.display()))?;
         drop(lock);
         drop(held);
         self.created.keep();
@@ -197,11 +266,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_commit_replaces_the_known_files_and_keeps_the_others() -> anyhow::Result<()> {
+    fn a_commit_replaces_the_files_of_the_manifest_and_keeps_the_others() -> anyhow::Result<()> {
         let dir = tempfile::tempdir()?;
-        for name in ["summary.json", "theta.svg", "notes.txt"] {
+        for name in ["summary.json", "theta.svg", "notes.txt", "events.csv"] {
             std::fs::write(dir.path().join(name), "old")?;
         }
+        // An earlier run wrote summary.json and theta.svg; events.csv is the user's, and so is notes.txt
+        // (listed by hand, but not a name of this tool's).
+        std::fs::write(dir.path().join(MANIFEST), "# header\nsummary.json\ntheta.svg\nnotes.txt\n../x\n")?;
         let staging = Staging::new(dir.path(), &[])?;
         std::fs::write(staging.path("summary.json"), "new")?;
         staging.commit()?;
@@ -209,9 +281,25 @@ mod tests {
             .map(|e| Ok(e?.file_name().to_string_lossy().into_owned()))
             .collect::<std::io::Result<_>>()?;
         names.sort();
-        // The stale figure is gone, the user's file stays, no staging folder is left.
-        assert_eq!(names, ["notes.txt", "summary.json"]);
+        // The stale figure is gone, the user's files stay, no staging folder is left.
+        assert_eq!(names, [MANIFEST, "events.csv", "notes.txt", "summary.json"]);
         assert_eq!(std::fs::read_to_string(dir.path().join("summary.json"))?, "new");
+        assert_eq!(std::fs::read_to_string(dir.path().join("events.csv"))?, "old");
+        assert_eq!(manifest(dir.path()), ["summary.json"]);
+        Ok(())
+    }
+
+    #[test]
+    fn a_commit_never_replaces_a_file_no_run_wrote() -> anyhow::Result<()> {
+        let dir = tempfile::tempdir()?;
+        std::fs::write(dir.path().join("summary.json"), "mine")?;
+        let staging = Staging::new(dir.path(), &[])?;
+        std::fs::write(staging.path("summary.json"), "new")?;
+        let e = format!("{:#}", staging.commit().err().ok_or_else(|| anyhow::anyhow!("committed over the user's file"))?);
+        assert!(e.contains("summary.json") && e.contains("not written by an earlier run"), "{e}");
+        assert_eq!(std::fs::read_to_string(dir.path().join("summary.json"))?, "mine");
+        assert!(refuse_foreign(&[dir.path().join("summary.json")]).is_err());
+        assert!(refuse_foreign(&[dir.path().join("history.csv")]).is_ok());
         Ok(())
     }
 

@@ -1,6 +1,7 @@
 //! Never overwrite an input: an output path that is the scenario file or the
 //! record file (the same file by canonical path, or by device and inode) is
-//! refused before anything is written.
+//! refused before anything is written; so is a file of an output's name that
+//! no earlier run wrote (`folder::refuse_foreign`).
 
 use anyhow::bail;
 use std::path::{Path, PathBuf};
@@ -44,7 +45,9 @@ pub fn is_input(path: &Path, inputs: &[PathBuf]) -> bool {
     matching_input(path, inputs).is_some()
 }
 
-/// Fails if any of `outputs` is one of `inputs`.
+/// Fails if any of `outputs` is one of `inputs`, or is a file there already
+/// that no earlier run of this tool wrote (not in its folder's manifest):
+/// both refused before the run starts.
 pub fn refuse_to_overwrite_inputs(outputs: &[PathBuf], inputs: &[PathBuf]) -> anyhow::Result<()> {
     for output in outputs {
         if let Some(input) = matching_input(output, inputs) {
@@ -55,7 +58,7 @@ pub fn refuse_to_overwrite_inputs(outputs: &[PathBuf], inputs: &[PathBuf]) -> an
             );
         }
     }
-    Ok(())
+    super::folder::refuse_foreign(outputs)
 }
 
 #[cfg(test)]
