@@ -216,8 +216,11 @@ pub const RECORDS_HEADER: [&str; 7] = [
     "error",
 ];
 
-/// A CSV field: quoted when it holds a comma, a quote or a line break.
+/// A CSV field: quoted when it holds a comma, a quote or a line break, a
+/// text a spreadsheet would read as a formula written as text
+/// ([`rocking_scenario::spreadsheet_text`]).
 fn field(text: &str) -> String {
+    let text = rocking_scenario::spreadsheet_text(text);
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {

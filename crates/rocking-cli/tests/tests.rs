@@ -15,6 +15,7 @@ mod keys;
 mod regression_assess_record_fails_to_run;
 mod regression_block_name_on_one_line;
 mod regression_concurrent_runs;
+mod regression_csv_injection;
 mod regression_fragility_with_blocks;
 mod regression_interrupted_sweep;
 mod regression_inventory_block_columns;

@@ -949,7 +949,10 @@ pub fn outputs_markdown() -> String {
 pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], events: &[Column<Event>], summary: &[Field]) -> String {
     let mut out = String::from(
         "<!-- generated -->\n<!-- from crates/rocking-scenario/src/columns.rs: do not edit; UPDATE_OUTPUTS_MD=1 cargo test -p rocking-scenario --test outputs_reference rewrites it -->\n\n# Outputs\n\n\
-         Every number is in SI units and written with every digit (the shortest form that reads back to the same value).\n\n",
+         Every number is in SI units and written with every digit (the shortest form that reads back to the same value). \
+         In every CSV the tool writes, a text cell (a name, an id, a record's file name, an error) that begins with `=`, `+`, `-`, `@`, a TAB or a CR \
+         is written with a leading `'`, so that a spreadsheet shows it as text instead of running it as a formula (OWASP's rule against CSV injection); \
+         numbers, negative ones included, are written as they are.\n\n",
     );
     let unit = |u: &str| if u.is_empty() { "–".to_string() } else { u.to_string() };
     // A `|` in a meaning (|f_x|) would end its table cell: written escaped.

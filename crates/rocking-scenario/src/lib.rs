@@ -125,6 +125,6 @@ pub use study::{
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{
-    csv_line, run_cases, Axis, AxisSpec, Cases, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN, MAX_AXIS_VALUES, MAX_CASES_KEY,
-    SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW,
+    csv_line, run_cases, spreadsheet_text, Axis, AxisSpec, Cases, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN,
+    MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW,
 };

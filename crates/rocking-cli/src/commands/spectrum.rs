@@ -20,10 +20,9 @@ use anyhow::Context;
 use rocking::{AccelerationUnit, CsvOptions, Record};
 use rocking_codes::{default_period_range, fit_record_set, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS};
 use rocking_scenario::{
-    code_spectra_columns, dynamic_limit_states, read_record_with, record_names, record_spectra_in_g, AssessmentFile, SpectrumKind, ACCELERATION_UNITS,
-    DEFAULT_G,
+    code_spectra_columns, csv_line, dynamic_limit_states, read_record_with, record_names, record_spectra_in_g, spreadsheet_text, AssessmentFile, SpectrumKind,
+    ACCELERATION_UNITS, DEFAULT_G,
 };
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 /// The spectra, one column per record or per spectrum.
@@ -109,7 +108,7 @@ fn reason(e: &rocking_codes::Error) -> String {
 fn write_columns(path: &Path, shown: &Path, periods: &[f64], columns: &[(String, Vec<f64>)]) -> anyhow::Result<()> {
     let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", shown.display()))?;
     let mut header = vec!["period_s".to_string()];
-    header.extend(columns.iter().map(|(n, _)| n.clone()));
+    header.extend(columns.iter().map(|(n, _)| spreadsheet_text(n).into_owned()));
     w.write_record(&header)?;
     let mut buffer = ryu::Buffer::new();
     for (k, t) in periods.iter().enumerate() {
@@ -300,18 +299,12 @@ fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
         let mut json = serde_json::Map::new();
         for (state, fitted) in &fits {
             for ((name, (_, record)), f) in names.iter().zip(&records).zip(&fitted.scales) {
-                // Names with a comma or a quote are quoted, as CSV asks.
-                let field = if name.contains([',', '"', '\n']) {
-                    format!("\"{}\"", name.replace('"', "\"\""))
-                } else {
-                    name.clone()
-                };
-                let _ = writeln!(
-                    csv,
-                    "{state},{field},{},{}",
-                    ryu::Buffer::new().format(*f),
-                    ryu::Buffer::new().format(f * record.peak().0 / g)
+                let (scale, pga) = (
+                    ryu::Buffer::new().format(*f).to_string(),
+                    ryu::Buffer::new().format(f * record.peak().0 / g).to_string(),
                 );
+                csv.push_str(&csv_line([state.as_str(), name, &scale, &pga]));
+                csv.push('\n');
             }
             let c = fitted.compatibility;
             json.insert(

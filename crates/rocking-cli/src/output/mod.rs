@@ -33,10 +33,10 @@ pub fn write_summary(path: &Path, shown: &Path, summary: &serde_json::Value) -> 
 }
 
 /// Writes one CSV field: a number in its shortest form that reads back to
-/// the same `f64`, or a name.
+/// the same `f64`, or a name (as a spreadsheet shows text, `spreadsheet_text`).
 fn write_value<W: std::io::Write>(w: &mut csv::Writer<W>, buffer: &mut ryu::Buffer, value: Value) -> csv::Result<()> {
     match value {
         Value::Number(x) => w.write_field(buffer.format(x)),
-        Value::Text(t) => w.write_field(t),
+        Value::Text(t) => w.write_field(rocking_scenario::spreadsheet_text(t).as_bytes()),
     }
 }

@@ -16,7 +16,7 @@ mod tests;
 pub use axis::{Axis, AxisSpec, MAX_AXIS_VALUES, SWEEPABLE_KEYS};
 pub(crate) use engine::{is_stopped, Until};
 pub use engine::{run_cases, Cases, Finished, RunError, WINDOW};
-pub use row::{csv_line, Cell, Row};
+pub use row::{csv_line, spreadsheet_text, Cell, Row};
 pub use shard::Shard;
 
 use crate::columns::{summary_names, Layout, SUMMARY};

@@ -101,7 +101,31 @@ impl Cell {
     }
 }
 
-/// One line of CSV (without its line break) of `fields`, quoted where needed.
+/// The first characters that make a spreadsheet read a cell as a formula
+/// (`=HYPERLINK(...)`, `+cmd`, `-2+3`, `@SUM(...)`) or strip them (TAB, CR).
+const FORMULA_STARTS: [u8; 6] = [b'=', b'+', b'-', b'@', b'\t', b'\r'];
+
+/// Whether the CSV field `field` needs a leading `'` to be shown as text: it
+/// begins with one of [`FORMULA_STARTS`] and is not a number (`-2`, `+1e-3`,
+/// `-inf` are left as they are: a spreadsheet reads them as numbers).
+fn reads_as_a_formula(field: &[u8]) -> bool {
+    field.first().is_some_and(|b| FORMULA_STARTS.contains(b)) && std::str::from_utf8(field).map_or(true, |t| t.parse::<f64>().is_err())
+}
+
+/// `text` as a CSV cell that a spreadsheet shows as text: a text beginning
+/// with `=`, `+`, `-`, `@`, a TAB or a CR gets a leading `'` (OWASP's rule
+/// against CSV injection); a number and any other text are left as they are.
+/// Every CSV the tool writes passes its text cells through this (or [`csv_line`]).
+pub fn spreadsheet_text(text: &str) -> Cow<'_, str> {
+    if reads_as_a_formula(text.as_bytes()) {
+        Cow::Owned(format!("'{text}"))
+    } else {
+        Cow::Borrowed(text)
+    }
+}
+
+/// One line of CSV (without its line break) of `fields`, quoted where needed,
+/// a text that a spreadsheet would read as a formula written as text ([`spreadsheet_text`]).
 pub fn csv_line<I>(fields: I) -> String
 where
     I: IntoIterator,
@@ -114,7 +138,15 @@ where
         .buffer_capacity(1024)
         .from_writer(Vec::with_capacity(1024));
     // Writing to memory cannot fail.
-    let _ = writer.write_record(fields);
+    for field in fields {
+        let field = field.as_ref();
+        let _ = if reads_as_a_formula(field) {
+            writer.write_field([b"'".as_slice(), field].concat())
+        } else {
+            writer.write_field(field)
+        };
+    }
+    let _ = writer.write_record(None::<&[u8]>);
     let mut bytes = writer.into_inner().unwrap_or_default();
     bytes.pop();
     // The fields were text, and quoting adds only ASCII.
