@@ -188,12 +188,56 @@ impl Study {
             let record = this.read_record(path, &ground_keys, &folder)?;
             this.records.push(record);
         }
-        if let Some(first) = this.case_table(0) {
-            let case = Scenario::from_table(first, &this.origin).and_then(|s| s.build()).map_err(study_error)?;
+        this.check_scales()?;
+        // The longest record's case: a free_after too long for the history's
+        // spacing shows there (its output_dt alone passed with each record).
+        let longest = (0..this.records.len()).max_by(|&a, &b| this.records[a].duration.total_cmp(&this.records[b].duration));
+        if let Some(first) = longest.and_then(|k| this.case_table(k * this.levels.len())) {
+            let case = Scenario::from_table(first, &this.origin)
+                .and_then(|s| s.build())
+                .map_err(|e| this.free_after_error(e))
+                .map_err(study_error)?;
             let derived = case.model.derived();
             limit::check_fields(&this.limit_states, derived.alpha.is_some(), derived.slip_acceleration_g.is_some()).map_err(fail)?;
         }
         Ok(this)
+    }
+
+    /// Refuses a level that no record can be scaled to: a scale (the level
+    /// over the record's measure) that is not a finite number > 0.
+    fn check_scales(&self) -> Result<(), Error> {
+        for record in &self.records {
+            for &level in &self.levels {
+                let scale = level / record.measure;
+                if !(scale.is_finite() && scale > 0.0) {
+                    return Err(Fault::invalid(
+                        "study.levels",
+                        format!(
+                            "{} over the {} {} of {} gives a scale of {scale}: a level must give every record a finite scale",
+                            ryu::Buffer::new().format(level),
+                            self.measure.as_str(),
+                            ryu::Buffer::new().format(record.measure),
+                            record.path
+                        ),
+                    )
+                    .in_file(&self.origin));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// An error of the history's spacing in the longest case, named as
+    /// `study.free_after` (what made the case that long).
+    fn free_after_error(&self, e: Error) -> Error {
+        if e.fault.key.as_deref() != Some("simulation.output_dt") {
+            return e;
+        }
+        Fault::invalid(
+            "study.free_after",
+            format!("{} s after each record: simulation.output_dt = {}", self.free_after, e.fault.kind),
+        )
+        .in_file(&self.origin)
     }
 
     /// Reads one record: its format (for the CSV-only keys), motion and measure.
@@ -438,7 +482,9 @@ impl Cases for Study {
 /// An error of building a study's case, its `ground.*` key named as the `study.*` key the user wrote.
 fn study_error(mut e: Error) -> Error {
     let renamed = match e.fault.key.as_deref() {
-        Some("ground.file") | Some("ground.scale") => Some("study.records"),
+        Some("ground.file") => Some("study.records"),
+        // The scale of a case is its level over its record's measure.
+        Some("ground.scale") => Some("study.levels"),
         Some("ground.format") => Some("study.format"),
         Some("ground.units") => Some("study.units"),
         Some("ground.dt") => Some("study.dt"),

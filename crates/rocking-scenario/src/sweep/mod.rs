@@ -260,15 +260,12 @@ impl Sweep {
 
     /// The input files of the first case that builds (a ground-motion record),
     /// for `--out` checks. At most [`DEFAULT_MAX_CASES`] cases are tried: all
-    /// of them in a sweep of no more, else as many spread evenly over the
-    /// sweep, case 0 first (a raised `max_cases` of 10⁹ cases all invalid
-    /// searched for hours without a word).
+    /// of them in a sweep of no more (case 0 first), else as many spread over
+    /// the sweep by [`spread_cases`] (a raised `max_cases` of 10⁹ cases all
+    /// invalid searched for hours without a word).
     fn first_buildable_case(&self) -> Result<Vec<PathBuf>, Error> {
         let mut first_error = None;
-        let tried = self.len.min(DEFAULT_MAX_CASES);
-        // floor(j·len/tried): 0, then increasing, all below len.
-        let spread = (0..tried).map(|j| usize::try_from(j as u128 * self.len as u128 / tried as u128).unwrap_or(0));
-        for index in spread {
+        for index in spread_cases(self.len, DEFAULT_MAX_CASES) {
             match self.scenario(index).and_then(|s| s.build_with(Some(&self.records))) {
                 Ok(case) => return Ok(case.inputs),
                 Err(e) => {
@@ -448,6 +445,30 @@ pub(crate) fn summary_template(layout: &crate::columns::Layout) -> Vec<(String, 
         template.extend(crate::columns::SUMMARY_BLOCKS.iter().map(|f| (format!("{name}_{}", f.suffix), cell(f.kind))));
     }
     template
+}
+
+/// `tried` case indices of `0..len` (all of them, in order, when `tried >=
+/// len`), spread over the sweep: `j·s mod len` for `j = 0..tried`, with `s`
+/// the least stride >= `len / tried` that is coprime with `len`, hence with
+/// every axis's length (each divides `len`). The walk then leaves every
+/// value of the fastest axis in turn (`j·s mod n` runs through all residues
+/// of its length `n`) instead of sampling one of them at every step, as an
+/// even stride that is a multiple of that length did.
+pub fn spread_cases(len: usize, tried: usize) -> impl Iterator<Item = usize> {
+    let tried = tried.min(len);
+    let mut stride = len.div_ceil(tried.max(1)).max(1);
+    while gcd(stride, len) != 1 {
+        stride += 1;
+    }
+    (0..tried).map(move |j| usize::try_from(j as u128 * stride as u128 % len as u128).unwrap_or(0))
+}
+
+/// The greatest common divisor (Euclid).
+fn gcd(mut a: usize, mut b: usize) -> usize {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
 }
 
 /// The key of `[sweep]` that raises the cap on the number of cases (not an axis: it has no dot).
