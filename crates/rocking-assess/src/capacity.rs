@@ -143,13 +143,7 @@ pub fn secant_period_slc(d_slc: f64, a_at_d_slc: f64) -> f64 {
 /// as one rigid body about a corner of the lowest one's base are a mechanism
 /// whose `b` is half the lowest one's width and whose `h` is this.
 pub fn rigid_column_centre(blocks: &[Block]) -> (f64, f64) {
-    let (mut mass, mut moment, mut base) = (0.0, 0.0, 0.0);
-    for block in blocks {
-        mass += block.mass();
-        moment += block.mass() * (base + block.height() / 2.0);
-        base += block.height();
-    }
-    (mass, moment / mass)
+    rocking::stack::column_centre(blocks)
 }
 
 /// The capacity of a tower as one rigid block on its springing level.

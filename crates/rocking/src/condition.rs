@@ -107,12 +107,12 @@ impl Condition {
     }
 
     /// The slip conditions from the stick demand: `±F_req − μs N`, the
-    /// static friction law ([`Kernel::static_friction_margin`]) towards the
+    /// static friction law ([`Friction::static_friction_margin`](crate::body::Friction::static_friction_margin)) towards the
     /// side the slip starts from.
     #[inline(always)]
     pub(crate) fn slip_margin<T: Real>(self, kernel: &Kernel, force: T, normal: T) -> T {
         let toward = if self == Condition::SlipNegative { force } else { -force };
-        kernel.static_friction_margin(toward, normal)
+        kernel.friction.static_friction_margin(toward, normal)
     }
 
     /// Whether the condition starts its regime on zero and moves away from

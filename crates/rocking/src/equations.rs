@@ -16,7 +16,7 @@
 //! analytic continuation across `θ = 0`, which event location needs) and
 //! `g_e` the effective gravity (`g` without a vertical ground motion).
 
-use crate::body::{Building, NormalForce, Tower};
+use crate::body::{Building, Friction, NormalForce, Tower};
 use crate::jet::Real;
 use crate::model::Model;
 use crate::regime::{BuildingRegime, Regime, TowerRegime};
@@ -44,8 +44,8 @@ pub(crate) struct Kernel {
     pub(crate) inertia: f64,
     /// Sliding mass `M = m1 + m2` (kg).
     pub(crate) total: f64,
-    pub(crate) mu_s: f64,
-    pub(crate) mu_k: f64,
+    /// The foundation's friction law (a fixed base's without a building).
+    pub(crate) friction: Friction,
     pub(crate) dynamic: bool,
     /// Restitution `r` of the angular velocity.
     pub(crate) restitution: f64,
@@ -94,8 +94,7 @@ impl Kernel {
             m2r: m2 * radius,
             inertia,
             total: b.map_or(0.0, Building::mass) + m2,
-            mu_s: b.map_or(f64::INFINITY, Building::mu_static),
-            mu_k: b.map_or(0.0, Building::mu_kinetic),
+            friction: Friction::of(b),
             dynamic: b.is_some_and(|b| b.normal_force() == NormalForce::Dynamic),
             restitution: t.map_or(1.0, Tower::restitution),
             half_width: t.map_or(0.0, Tower::half_width),
@@ -189,45 +188,12 @@ impl Kernel {
         g_e * self.tan_alpha
     }
 
-    /// The kinetic friction law (Coulomb): the horizontal force of the
-    /// foundation on a building sliding in the direction `σ = sgn u̇` under
-    /// the normal force `normal`, `F = −μk σ N`. The one place the law is
-    /// written: the sliding right-hand sides, the impact law (with the normal
-    /// impulse for `N`) and the bounds the step's screening uses all call it.
-    /// The callers rely on it being proportional to `N` (they divide it by a
-    /// mass or factor it out of a linear system): a law `F = −μ(…) σ N` with
-    /// any other dependence fits them unchanged.
-    #[inline(always)]
-    pub(crate) fn kinetic_friction<T: Real>(&self, sigma: f64, normal: T) -> T {
-        normal * (-self.mu_k * sigma)
-    }
-
-    /// The static friction law (Coulomb): the foundation holds the building
-    /// stuck while the horizontal force that takes, `F`, stays within `μs N`
-    /// of the normal force `N`. Returned as the margin `F_toward − μs N` of
-    /// the force towards one side (`F` towards `+x` starts a slip towards
-    /// `−x`): negative while the building sticks. The one place the law is
-    /// written: the slip conditions ([`Condition::slip_margin`](crate::condition::Condition::slip_margin)),
-    /// the end of a slip and the impacts' stick tests (with the impulses for
-    /// the forces) all call it, through [`Kernel::sticks`] for `|F| <= μs N`.
-    #[inline(always)]
-    pub(crate) fn static_friction_margin<T: Real>(&self, toward: T, normal: T) -> T {
-        toward - normal * self.mu_s
-    }
-
-    /// Whether static friction holds the building stuck, `|F| <= μs N`:
-    /// [`Kernel::static_friction_margin`] of `|F|` not positive.
-    #[inline(always)]
-    pub(crate) fn sticks(&self, force: f64, normal: f64) -> bool {
-        self.static_friction_margin(force.abs(), normal) <= 0.0
-    }
-
     /// The pivot line's acceleration `Ẍ_p` of a sliding building with the tower
     /// standing on it: (B) with `θ̇ = θ̈ = 0` and the kinetic friction of
     /// `N = M g_e` (both normal-force laws), divided by `M`.
     #[inline(always)]
     pub(crate) fn resting_slide<T: Real>(&self, sigma: f64, g_e: T) -> T {
-        self.kinetic_friction(sigma, g_e)
+        self.friction.kinetic_friction(sigma, g_e)
     }
 
     /// Bounds of `|ü|` and `|u⃛|` over a step for a building sliding under a
@@ -269,7 +235,7 @@ impl Kernel {
     /// derived from the two laws, it does if the ground acceleration that
     /// lifts the tower, `|Ẍ_p| = |a_g| = g_e tan α` ([`Kernel::uplift_threshold`]),
     /// already asks of static friction more than it holds under the resting
-    /// stick demand ([`Kernel::stick_demand`], [`Kernel::static_friction_margin`]).
+    /// stick demand ([`Kernel::stick_demand`], [`Friction::static_friction_margin`](crate::body::Friction::static_friction_margin)).
     /// Both thresholds are proportional to `g_e` (the resting demand and its
     /// normal force are the complex's mass times `a_g` and `g_e`, for both
     /// normal-force laws), so one `g_e` decides for all: `μs < tan α`.
@@ -279,7 +245,7 @@ impl Kernel {
     /// `t = 0` while θ stayed 0).
     pub(crate) fn slips_before_uplift(&self) -> bool {
         let (force, normal) = self.stick_demand(TowerRegime::Rest, self.uplift_threshold(1.0), 1.0, 0.0, 0.0);
-        self.has_tower && self.has_building && self.static_friction_margin(force, normal) > 0.0
+        self.has_tower && self.has_building && self.friction.static_friction_margin(force, normal) > 0.0
     }
 
     /// [`Kernel::stick_demand`] of a rocking tower whose lean and `θ̈` (from
@@ -336,7 +302,7 @@ impl Kernel {
     pub(crate) fn rocking_on_sliding_building<T: Real>(&self, lean: Lean<T>, sigma: f64, theta_dot: T, g_e: T) -> (T, T) {
         let s = lean.s;
         // F / N: the kinetic friction law is proportional to N.
-        let per_normal = self.kinetic_friction(sigma, 1.0);
+        let per_normal = self.friction.kinetic_friction(sigma, 1.0);
         let w2 = theta_dot * theta_dot;
         // (T):  I θ̈ + c Ẍ_p = t_rhs, with c = m2 R cos φ.
         let c = lean.cos_phi * self.m2r;
@@ -346,7 +312,7 @@ impl Kernel {
         let zero_acc = T::from(0.0);
         let n0 = self.normal_force(lean, theta_dot, zero_acc, g_e);
         let a21 = if self.dynamic { c - lean.sin_phi * (per_normal * s * self.m2r) } else { c };
-        let b_rhs = -(lean.sin_phi * w2 * (s * self.m2r)) + self.kinetic_friction(sigma, n0);
+        let b_rhs = -(lean.sin_phi * w2 * (s * self.m2r)) + self.friction.kinetic_friction(sigma, n0);
         let det = T::from(self.inertia * self.total) - c * a21;
         if det.value() <= 0.0 {
             return (T::from(f64::NAN), T::from(f64::NAN));
@@ -471,7 +437,7 @@ mod tests {
         }
 
         /// The static friction law's three readings agree: the end of a
-        /// slip and the impacts stick (`Kernel::sticks`) exactly where
+        /// slip and the impacts stick (`Friction::sticks`) exactly where
         /// neither slip condition of the stuck building is positive, so a
         /// building that stops cannot be set sliding again at the same
         /// instant by the conditions, nor the reverse; and both are Coulomb's
@@ -481,7 +447,7 @@ mod tests {
             let k = kernel(1.0, 4.0, 0.5);
             // Half the cases exactly on the edge, |F| = μs N (1.25 N is exact for these N).
             let force = if on_the_edge { force.signum() * 1.25 * normal } else { force };
-            let sticks = k.sticks(force, normal);
+            let sticks = k.friction.sticks(force, normal);
             prop_assert_eq!(sticks, force.abs() <= 1.25 * normal);
             let holds = |c: Condition| c.slip_margin(&k, force, normal) > 0.0;
             prop_assert_eq!(sticks, !holds(Condition::SlipNegative) && !holds(Condition::SlipPositive));

@@ -14,7 +14,7 @@
 //! Coulomb's law for impulses: the building sticks through the impact
 //! (`u̇⁺ = 0`) when the impulse that needs satisfies `|P| ≤ μs N_imp`; otherwise
 //! it slides with the kinetic friction of `N_imp`
-//! ([`Kernel::kinetic_friction`], `P = −μk σ N_imp`), `σ = sgn u̇⁺ = −sgn P_stick`. On a fixed
+//! ([`Friction::kinetic_friction`](crate::body::Friction::kinetic_friction), `P = −μk σ N_imp`), `σ = sgn u̇⁺ = −sgn P_stick`. On a fixed
 //! base, or a building that stays stuck from rest, this is Housner's
 //! `θ̇⁺ = r θ̇⁻`. `r` is the ratio of angular velocities (the ratio of kinetic
 //! energies is `r²`).
@@ -76,7 +76,7 @@ impl Kernel {
             slip_vel: 0.0,
             building: BuildingRegime::Stick,
         };
-        let after = if self.sticks(p_stick, n_imp.max(0.0)) {
+        let after = if self.friction.sticks(p_stick, n_imp.max(0.0)) {
             stick
         } else {
             self.impact_sliding(s, theta_dot, slip_vel, angular, p_stick).unwrap_or(stick)
@@ -131,7 +131,7 @@ impl Kernel {
         //   I θ̇⁺ + m2 h u̇⁺ = angular,
         //   (m2 h − c) θ̇⁺ + M u̇⁺ = M u̇⁻ + (m2 h + c) θ̇⁻.
         let sigma = -p_stick.signum();
-        let c = self.kinetic_friction(sigma, -s * m2b);
+        let c = self.friction.kinetic_friction(sigma, -s * m2b);
         let q = total * slip_vel + (m2h + c) * theta_dot;
         let det = inertia * total - m2h * (m2h - c);
         let theta_after = (angular * total - m2h * q) / det;
@@ -158,7 +158,7 @@ impl Kernel {
         let m2h = self.m2 * 0.5 * self.height;
         let n_imp = (-s * self.m2 * self.half_width * theta_dot).max(0.0);
         let p_stick = -self.total * slip_vel - m2h * theta_dot;
-        if self.sticks(p_stick, n_imp) {
+        if self.friction.sticks(p_stick, n_imp) {
             return AfterImpact {
                 theta_dot: 0.0,
                 slip_vel: 0.0,
@@ -166,7 +166,7 @@ impl Kernel {
             };
         }
         let sigma = -p_stick.signum();
-        let impulse = self.kinetic_friction(sigma, n_imp);
+        let impulse = self.friction.kinetic_friction(sigma, n_imp);
         AfterImpact {
             theta_dot: 0.0,
             slip_vel: slip_vel + (m2h * theta_dot + impulse) / self.total,

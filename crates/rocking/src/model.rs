@@ -85,8 +85,7 @@ impl Model {
         if blocks.len() > MAX_BLOCKS - 1 {
             return Err(invalid(format!("at most {} blocks stand on the tower, got {}", MAX_BLOCKS - 1, blocks.len())));
         }
-        let housner = 1.0 - 2.0 * tower.mass() * tower.radius() * tower.radius() * libm::sin(tower.alpha()).powi(2) / tower.inertia_pivot();
-        if (tower.restitution() - housner).abs() > 1e-12 {
+        if (tower.restitution() - tower.housner_restitution()).abs() > 1e-12 {
             return Err(Error::InvalidParameter {
                 parameter: Parameter::TowerRestitution,
                 reason: "applies to a tower alone: with blocks above it, every impact follows the generalized-momentum law of the stack".into(),
@@ -141,7 +140,7 @@ impl Model {
             inertia_pivot: t.map(Tower::inertia_pivot),
             tower_mass: t.map(Tower::mass),
             uplift_acceleration_g: t.map(|t| libm::tan(t.alpha())),
-            slip_acceleration_g: self.building.as_ref().map(Building::mu_static),
+            slip_acceleration_g: self.building.as_ref().map(|b| b.friction().slip_acceleration_g()),
             sliding_mass: self.building.as_ref().map(|b| b.mass() + t.map_or(0.0, Tower::mass)),
         }
     }

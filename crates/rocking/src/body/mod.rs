@@ -3,5 +3,6 @@
 mod building;
 mod tower;
 
+pub(crate) use building::Friction;
 pub use building::{Building, NormalForce};
 pub use tower::{MassInput, Section, Tower, TowerGeometry};

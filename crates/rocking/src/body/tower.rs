@@ -136,7 +136,7 @@ impl Tower {
                 reason: format!("{inertia_pivot} kg·m² is not above m R² = {point_inertia} kg·m² (parallel-axis theorem)"),
             });
         }
-        let housner = 1.0 - 2.0 * point_inertia * libm::sin(alpha).powi(2) / inertia_pivot;
+        let housner = housner_restitution(mass, inertia_pivot, radius, alpha);
         let restitution = match restitution {
             Some(r) => {
                 let r = non_negative(Parameter::TowerRestitution, r)?;
@@ -163,6 +163,12 @@ impl Tower {
             alpha,
             restitution,
         })
+    }
+
+    /// Housner's coefficient of restitution of this tower's geometry,
+    /// `r = 1 − 2 m R² sin²α / I_O` (whatever [`Tower::restitution`] was given).
+    pub fn housner_restitution(&self) -> f64 {
+        housner_restitution(self.mass, self.inertia_pivot, self.radius, self.alpha)
     }
 
     /// Mass `m2` (kg).
@@ -198,6 +204,16 @@ impl Tower {
     pub fn frequency_parameter(&self, g: f64) -> f64 {
         (self.mass * g * self.radius / self.inertia_pivot).sqrt()
     }
+}
+
+/// Housner's restitution of the angular velocity at an impact of a block on
+/// a fixed base (docs/src/model.md, "Restitution"): angular momentum about the new
+/// corner conserved, `r = 1 − 2 m R² sin²α / I_O`. The one place it is
+/// written: the tower's default and the stack's check that its tower's
+/// restitution was not overridden both call it.
+fn housner_restitution(mass: f64, inertia_pivot: f64, radius: f64, alpha: f64) -> f64 {
+    let point_inertia = mass * radius * radius;
+    1.0 - 2.0 * point_inertia * libm::sin(alpha).powi(2) / inertia_pivot
 }
 
 #[cfg(test)]

@@ -74,9 +74,11 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 return None;
             }
             // The stick demand at the impact (the same on arrival, `θ̇²` being
-            // equal) and at the apex, with a margin of 1e-6 μs M g: the
-            // demand inside departs from these by a relative `ψm² / 8`.
-            let margin = 1e-6 * self.kernel.mu_s * self.kernel.total * self.kernel.g;
+            // equal) and at the apex, with a margin of 1e-6 μs M g (the
+            // static friction law's hold on the weight, `−margin(0, M g)`):
+            // the demand inside departs from these by a relative `ψm² / 8`.
+            let hold = -self.kernel.friction.static_friction_margin(0.0, self.kernel.total * self.kernel.g);
+            let margin = 1e-6 * hold;
             let list = conditions(self.kernel, self.regime);
             let apex = State {
                 theta: s * flight.apex,

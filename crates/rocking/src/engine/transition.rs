@@ -230,7 +230,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                     .kernel
                     .stick_demand(self.regime.tower, a_g, self.g_e(self.integ.t), self.integ.y.theta, self.integ.y.theta_dot);
                 let old = self.regime.building;
-                if self.kernel.sticks(force, normal) {
+                if self.kernel.friction.sticks(force, normal) {
                     self.regime.building = BuildingRegime::Stick;
                     EventKind::Stick
                 } else {

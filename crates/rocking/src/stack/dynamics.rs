@@ -234,15 +234,13 @@ impl Body {
     /// The blocks `blocks[k..]`, seated on one another, as one body.
     pub(crate) fn above(blocks: &[super::Block], k: usize) -> Self {
         let half = blocks[k].width / 2.0;
-        let (mut mass, mut moment, mut inertia, mut base) = (0.0, 0.0, 0.0, 0.0);
+        let (mass, centre_height) = super::column_centre(&blocks[k..]);
+        let (mut inertia, mut base) = (0.0, 0.0);
         for block in &blocks[k..] {
             let z = base + block.height / 2.0;
-            mass += block.mass;
-            moment += block.mass * z;
             inertia += block.inertia_centre + block.mass * (half * half + z * z);
             base += block.height;
         }
-        let centre_height = moment / mass;
         Self {
             mass,
             centre_height,
@@ -315,7 +313,7 @@ impl Stack {
         if let Some(u) = frame.coords.slip() {
             m[u][u] = m[u][u] + m1;
             f[u] = f[u] - a_g * m1;
-            let friction = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
+            let friction = self.friction_per_normal(sigma);
             let weight = g_e * self.total_mass();
             if self.dynamic_normal_force() {
                 let mut rest = weight;
@@ -451,7 +449,7 @@ impl Stack {
         let solve_a = |v: [T; 2]| [(v[0] * a22 - a12 * v[1]) / det, (a11 * v[1] - a12 * v[0]) / det];
         let x = solve_a(f);
         let Some(sigma) = sigma else { return (x, real(0.0)) };
-        let mu = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
+        let mu = self.friction_per_normal(sigma);
         let b = [r1[1] * m1 + e[1] * m2, r2[1] * m2];
         let weight = g_e * self.total_mass();
         let pushed = -(a_g * self.building_mass() + l1[0] * m1 + l2[0] * m2);
@@ -522,7 +520,7 @@ impl Stack {
         let per_inertia = 1.0 / body.inertia_corner;
         let x = -(cross(load, r) * (m * per_inertia));
         let Some(sigma) = sigma else { return (x, real(0.0)) };
-        let mu = self.building.map_or(0.0, |b| b.mu_kinetic()) * sigma;
+        let mu = self.friction_per_normal(sigma);
         let total = self.total_mass();
         let b = r[1] * m;
         let weight = g_e * total;

@@ -201,12 +201,12 @@ impl Stack {
             normal_impulse: n_stick,
             friction_impulse: p_stick,
         };
-        if p_stick.abs() <= building.mu_static() * n_stick.max(0.0) {
+        if building.friction().sticks(p_stick, n_stick.max(0.0)) {
             return stuck;
         }
         // Slide: P = −μk σ N_imp = −μk σ (Σ_b vertical_per_b q̇_b − vertical_before).
         let sigma = -p_stick.signum();
-        let friction = building.mu_kinetic() * sigma;
+        let friction = self.friction_per_normal(sigma);
         let mut ms = m;
         for b in 0..n {
             ms[0][b] += friction * vertical_per[b];

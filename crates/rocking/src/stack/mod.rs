@@ -68,7 +68,7 @@ mod simulate;
 #[cfg(test)]
 mod tests;
 
-use crate::body::{Building, Tower};
+use crate::body::{Building, Friction, Tower};
 use crate::regime::{BuildingRegime, Pivot};
 use arrayvec::ArrayVec;
 pub(crate) use simulate::simulate;
@@ -182,6 +182,23 @@ impl Block {
     }
 }
 
+/// The mass (kg) of a column of blocks seated on one another, each centred
+/// on the one below (`blocks[0]` the lowest), and the height (m) of its
+/// centre of mass above the lowest one's base:
+/// `h = Σ m_i (z_i + H_i/2) / Σ m_i`, `z_i = H_0 + … + H_(i−1)` the height of
+/// block i's base. The one place it is written: the stack's bodies (the
+/// blocks above an interface turning as one) and the assessment's column as
+/// one rigid block both call it.
+pub fn column_centre(blocks: &[Block]) -> (f64, f64) {
+    let (mut mass, mut moment, mut base) = (0.0, 0.0, 0.0);
+    for block in blocks {
+        mass += block.mass;
+        moment += block.mass * (base + block.height / 2.0);
+        base += block.height;
+    }
+    (mass, moment / mass)
+}
+
 /// The blocks, the building under them (none: a fixed base) and gravity.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stack {
@@ -243,6 +260,16 @@ impl Stack {
     /// The building's mass `m1` (kg), 0 on a fixed base.
     pub(crate) fn building_mass(&self) -> f64 {
         self.building.map_or(0.0, |b| b.mass())
+    }
+    /// The foundation's friction law (a fixed base's without a building).
+    pub(crate) fn friction(&self) -> Friction {
+        Friction::of(self.building.as_ref())
+    }
+    /// `μk σ`: the kinetic friction law per unit normal force, with the sign
+    /// of the force moved to the other side of Kane's equations (the law is
+    /// proportional to `N`, so it factors out of them).
+    pub(crate) fn friction_per_normal(&self, sigma: f64) -> f64 {
+        -self.friction().kinetic_friction(sigma, 1.0)
     }
     /// The total sliding mass `m1 + Σ m_k` (kg).
     pub fn total_mass(&self) -> f64 {

@@ -537,9 +537,10 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
         if let Watch::Uplift(k) = watch {
             return self.stack.uplift_margin(snap, k).0;
         }
-        let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
         let demand = self.stack.friction_force(snap);
-        demand * demand.value().signum() - self.stack.normal_force(snap) * mu_s
+        self.stack
+            .friction()
+            .static_friction_margin(demand * demand.value().signum(), self.stack.normal_force(snap))
     }
 
     /// The building's regime at `u̇ = 0`: stuck if the friction it needs
@@ -551,8 +552,7 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
         };
         let snap = self.snapshot(&stuck, state, self.ground.acceleration(t));
         let demand = self.stack.friction_force(&snap);
-        let mu_s = self.stack.building.map_or(f64::INFINITY, |b| b.mu_static());
-        if demand.abs() > mu_s * self.stack.normal_force(&snap) {
+        if !self.stack.friction().sticks(demand, self.stack.normal_force(&snap)) {
             BuildingRegime::Slip(SlipDirection::of_sign(-demand))
         } else {
             BuildingRegime::Stick
