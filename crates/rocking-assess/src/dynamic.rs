@@ -185,7 +185,14 @@ impl RecordSet {
                 let record = record.clone();
                 let case = read(record.duration() + input.file.free_after)?;
                 let psa_g = response_spectrum(&record, &periods, DEFAULT_DAMPING_PCT)
-                    .map_err(|e| Fault::invalid("assessment.records", format!("{path}: {e}")).in_file(origin))?
+                    .map_err(|e| {
+                        // Too many steps over a period range the file gives: that range is named.
+                        let key = match e {
+                            rocking_codes::Error::InvalidParameter { name: "periods", .. } if input.file.period_range.is_some() => "assessment.period_range",
+                            _ => "assessment.records",
+                        };
+                        Fault::invalid(key, format!("{path}: {e}")).in_file(origin)
+                    })?
                     .into_iter()
                     .map(|a| a / g)
                     .collect();

@@ -26,6 +26,7 @@ mod regression_output_folder_manifest;
 mod regression_record_set_error_order;
 mod regression_refused_run_leaves_no_folder;
 mod regression_spectrum_dt;
+mod regression_spectrum_hangs;
 mod regression_spectrum_period_count;
 mod regression_spectrum_record_peak;
 mod run;

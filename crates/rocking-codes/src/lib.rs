@@ -67,5 +67,5 @@ pub use grid::{
 pub use ntc::{ntc_cc, ntc_corner_periods, ntc_ss, NtcSite, NtcSpectrum, Topography};
 pub use oscillator::NigamJennings;
 pub use response::{
-    oscillator_response, pseudo_acceleration, response_spectrum, OscillatorResponse, PeriodGrid, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS, MAX_PERIODS,
+    oscillator_response, pseudo_acceleration, response_spectrum, OscillatorResponse, PeriodGrid, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS, MAX_PERIODS, MAX_STEPS,
 };

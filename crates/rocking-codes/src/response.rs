@@ -30,6 +30,14 @@ const TAIL_PERIODS: f64 = 2.0;
 /// hours and fill the memory instead of being refused.
 pub const MAX_PERIODS: usize = 10_000;
 
+/// The most oscillator steps one call may take (the record's samples and the
+/// free tail's `2T/dt` at each period, summed over the periods): a few
+/// seconds of work. A period of 10¹² s after a record of 0.01 s, or a record
+/// of three samples 10⁻⁹ s apart at the default periods, would take 10¹⁴ or
+/// 10¹⁰ steps (hours) and is refused instead. The spectrum of a 100 s record
+/// sampled at 1 ms over 10,000 periods takes 10⁹.
+pub const MAX_STEPS: f64 = 2e9;
+
 /// Log-spaced periods: `count` values from `from` to `to` (s).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PeriodGrid {
@@ -80,6 +88,36 @@ fn check_period(period: f64) -> Result<f64, Error> {
     }
 }
 
+/// The sample spacing of the free tail: the record's step, or its mean spacing.
+fn tail_spacing(record: &Record) -> f64 {
+    let times = record.times();
+    record.time_step().unwrap_or((record.duration() - times[0]) / (times.len() - 1) as f64)
+}
+
+/// The steps of the free tail after `record` at `period`: two periods at the record's spacing.
+fn tail_steps(record: &Record, period: f64) -> f64 {
+    (TAIL_PERIODS * period / tail_spacing(record)).ceil().max(1.0)
+}
+
+/// Refuses a walk of `record` over `periods` (s, each checked) that would
+/// take more than [`MAX_STEPS`] steps, before any is taken.
+fn check_steps(record: &Record, periods: &[f64]) -> Result<(), Error> {
+    let samples = record.times().len() as f64;
+    let steps: f64 = periods.iter().map(|&t| samples + tail_steps(record, t)).sum();
+    if steps > MAX_STEPS {
+        let longest = periods.iter().copied().fold(0.0, f64::max);
+        return Err(invalid(
+            "periods",
+            format!(
+                "a record of {samples} samples {} s apart over the periods up to {longest} s takes {steps:.3e} oscillator steps \
+                 (its samples and a free tail of 2 periods at each period), more than {MAX_STEPS:.0e}: give shorter periods, or a record with a coarser time step",
+                tail_spacing(record)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Walks the oscillator of `period` (s) and `damping_pct` over the record and its
 /// free tail from rest at the first sample, calling `visit(t, x)` at each instant.
 fn walk(record: &Record, period: f64, damping_pct: f64, mut visit: impl FnMut(f64, f64)) {
@@ -97,9 +135,10 @@ fn walk(record: &Record, period: f64, damping_pct: f64, mut visit: impl FnMut(f6
         visit(times[k], x);
     }
     // The free tail, at the record's (mean) spacing: a_g = 0 after the last sample.
-    let spacing = record.time_step().unwrap_or((record.duration() - times[0]) / (times.len() - 1) as f64);
+    let spacing = tail_spacing(record);
     let free = NigamJennings::new(omega, xi, spacing);
-    let steps = (TAIL_PERIODS * period / spacing).ceil().max(1.0) as usize;
+    // Within MAX_STEPS (checked by the callers): a count that fits.
+    let steps = tail_steps(record, period) as usize;
     let end = record.duration();
     for k in 1..=steps {
         (x, v) = free.step(x, v, 0.0, 0.0);
@@ -113,6 +152,7 @@ fn walk(record: &Record, period: f64, damping_pct: f64, mut visit: impl FnMut(f6
 pub fn oscillator_response(record: &Record, period: f64, damping_pct: f64) -> Result<OscillatorResponse, Error> {
     check_period(period)?;
     check_damping(damping_pct)?;
+    check_steps(record, &[period])?;
     let mut out = OscillatorResponse {
         times: Vec::new(),
         displacements: Vec::new(),
@@ -131,6 +171,7 @@ pub fn oscillator_response(record: &Record, period: f64, damping_pct: f64) -> Re
 pub fn pseudo_acceleration(record: &Record, period: f64, damping_pct: f64) -> Result<f64, Error> {
     check_period(period)?;
     check_damping(damping_pct)?;
+    check_steps(record, &[period])?;
     let mut peak = 0.0f64;
     walk(record, period, damping_pct, |_, x| peak = peak.max(x.abs()));
     let omega = 2.0 * PI / period;
@@ -138,7 +179,13 @@ pub fn pseudo_acceleration(record: &Record, period: f64, damping_pct: f64) -> Re
 }
 
 /// The pseudo-acceleration spectrum (m/s², in the record's units) of a record at
-/// each of `periods` (s) and `damping_pct` (% of critical).
+/// each of `periods` (s) and `damping_pct` (% of critical); refused when it
+/// would take more than [`MAX_STEPS`] steps.
 pub fn response_spectrum(record: &Record, periods: &[f64], damping_pct: f64) -> Result<Vec<f64>, Error> {
+    for &t in periods {
+        check_period(t)?;
+    }
+    // All the periods' steps counted before the first is taken.
+    check_steps(record, periods)?;
     periods.iter().map(|&t| pseudo_acceleration(record, t, damping_pct)).collect()
 }

@@ -144,7 +144,16 @@ fn records_form(args: &Args, periods: &[f64]) -> anyhow::Result<()> {
         .collect::<anyhow::Result<_>>()?;
     let paths: Vec<String> = args.records.iter().map(|p| p.display().to_string()).collect();
     let names = record_names(&paths);
-    let spectra = record_spectra_in_g(&records, periods, damping, g).map_err(|e| anyhow::anyhow!("{e}"))?;
+    // One record at a time, so that an error names its file.
+    let spectra: Vec<Vec<f64>> = records
+        .iter()
+        .zip(&args.records)
+        .map(|(record, path)| {
+            record_spectra_in_g(std::slice::from_ref(record), periods, damping, g)
+                .map(|mut one| one.remove(0))
+                .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+        })
+        .collect::<anyhow::Result<_>>()?;
 
     let dir = args.out.clone().unwrap_or_else(|| Path::new("out").join("spectra"));
     let mut outputs = vec![dir.join(SPECTRA_CSV)];
@@ -239,7 +248,7 @@ fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
     let mut fits: Vec<(LimitState, FittedSet)> = Vec::new();
     if !records.is_empty() {
         let set: Vec<Record> = records.iter().map(|(_, r)| r.clone()).collect();
-        let spectra = record_spectra_in_g(&set, periods, DEFAULT_DAMPING_PCT, g).map_err(|e| anyhow::anyhow!("{e}"))?;
+        let spectra = record_spectra_in_g(&set, periods, DEFAULT_DAMPING_PCT, g).map_err(|e| anyhow::anyhow!("{}: assessment.records: {e}", path.display()))?;
         for state in dynamic_limit_states(site.code) {
             let Some(spectrum) = site.spectrum(state) else { continue };
             let target: Vec<f64> = periods.iter().map(|&t| spectrum.se(t)).collect();
