@@ -130,7 +130,12 @@ pub struct Check {
 }
 
 impl Check {
-    /// A check from its demand and capacity at the site's `ag` and its `ag` capacity.
+    /// A check from its demand and capacity at the site's `ag` and its `ag`
+    /// capacity. It holds when ζ_E ≥ 1, and whenever the capacity is only a
+    /// lower bound ([`AgCapacity::AtLeast`]): no failure was found at any `ag`
+    /// searched, the site's included (the dynamic scan bisects up to λ = 1
+    /// when the set fails at the site), so `ζ_E ≥ …` is a bound that holds,
+    /// never a failure.
     pub fn new(limit_state: LimitState, method: Method, unit: Unit, demand: f64, capacity: f64, ag: f64, ag_capacity: AgCapacity) -> Self {
         let zeta_e = acceleration_ratio(ag_capacity.value(), ag);
         Self {
@@ -142,7 +147,7 @@ impl Check {
             ag,
             ag_capacity,
             zeta_e,
-            holds: zeta_e >= 1.0,
+            holds: zeta_e >= 1.0 || ag_capacity.is_lower_bound(),
         }
     }
 }

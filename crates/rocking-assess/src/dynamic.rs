@@ -264,8 +264,9 @@ pub type Tick<'a> = &'a (dyn Fn() + Sync);
 
 /// The most record runs of one dynamic check with `records` records and the
 /// scan `lambda`: the set at λ = 1, at every λ of the scan, and at each step
-/// of the bisection (a bracket no wider than the scan's step, or its first λ,
-/// halved down to [`LAMBDA_TOLERANCE`]). Fewer are run when the check holds
+/// of the bisection (a bracket no wider than the scan's step, its first λ,
+/// or the gap from the scan's last λ below 1 up to 1, halved down to
+/// [`LAMBDA_TOLERANCE`]). Fewer are run when the check holds
 /// over the whole scan, or a record fails.
 pub fn most_runs(records: usize, lambda: &LambdaScan) -> usize {
     most_runs_of(records, lambda, 1)
@@ -274,7 +275,8 @@ pub fn most_runs(records: usize, lambda: &LambdaScan) -> usize {
 /// As [`most_runs`] for the checks of `mechanisms` mechanisms on the same
 /// runs: the set at λ = 1 and the scan once, a bisection each.
 pub fn most_runs_of(records: usize, lambda: &LambdaScan, mechanisms: usize) -> usize {
-    let mut width = lambda.step.max(lambda.from);
+    let below_one = lambda.values().into_iter().filter(|&l| l < 1.0).fold(0.0, f64::max);
+    let mut width = lambda.step.max(lambda.from).max(1.0 - below_one);
     let mut halvings = 0;
     while width > LAMBDA_TOLERANCE {
         width *= 0.5;
@@ -403,9 +405,17 @@ pub fn dynamic_checks_ticking(
         let mut error = incomplete(&at_one);
         let mut bracket = None;
         let mut holds_at = 0.0;
+        // The set at the site (λ = 1) is a point of the scan too: a failure
+        // there below the scan's first failure brackets ζ_E under 1, so that a
+        // scan ending without a failure is a lower bound that holds.
+        let fails_at_one = at_one.complete && !at_one.holds;
         for p in &scan {
             if !p.complete {
                 error = error.or_else(|| incomplete(p));
+                break;
+            }
+            if fails_at_one && holds_at < 1.0 && p.lambda > 1.0 {
+                bracket = Some((holds_at, 1.0));
                 break;
             }
             if !p.holds {
@@ -413,6 +423,9 @@ pub fn dynamic_checks_ticking(
                 break;
             }
             holds_at = p.lambda;
+        }
+        if bracket.is_none() && error.is_none() && fails_at_one && holds_at < 1.0 {
+            bracket = Some((holds_at, 1.0));
         }
         if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
             while hi - lo > LAMBDA_TOLERANCE {

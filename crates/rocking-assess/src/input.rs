@@ -25,16 +25,58 @@ pub struct LambdaScan {
 }
 
 impl LambdaScan {
+    /// How many values of λ the scan has (as a number: a range of 10³⁰⁰ steps is counted, not listed).
+    fn count(&self) -> f64 {
+        ((self.to - self.from) / self.step + 1e-6).floor() + 1.0
+    }
+
     /// The values of λ: from, from + step, … up to `to` (within a millionth of a
-    /// step), each rounded to 12 decimals (0.15, not 0.15000000000000002).
+    /// step), each kept as computed (`from + k·step`: never rounded, so that a
+    /// λ of 1e-13 stays 1e-13 and one of 1e300 stays finite).
     pub fn values(&self) -> Vec<f64> {
-        let n = ((self.to - self.from) / self.step + 1e-6).floor() as usize;
-        (0..=n).map(|k| ((self.from + k as f64 * self.step) * 1e12).round() / 1e12).collect()
+        let n = (self.count() - 1.0).max(0.0) as usize;
+        (0..=n).map(|k| self.from + k as f64 * self.step).collect()
+    }
+
+    /// Refuses a scan that cannot be represented, naming its key: more than
+    /// [`MAX_LAMBDA_VALUES`] values, a step lost in the rounding of `from`
+    /// (two λ the same), or a `to` above [`MAX_LAMBDA`].
+    fn check(&self) -> Result<(), Fault> {
+        if self.count() > MAX_LAMBDA_VALUES as f64 {
+            return Err(Fault::invalid(
+                "assessment.lambda",
+                format!("{:.4e} values of λ, more than {MAX_LAMBDA_VALUES}: widen the step", self.count()),
+            ));
+        }
+        if self.from + self.step <= self.from {
+            return Err(Fault::invalid(
+                "assessment.lambda.step",
+                format!(
+                    "{} is lost in the rounding of from = {}: two values of λ would be the same",
+                    number(self.step),
+                    number(self.from)
+                ),
+            ));
+        }
+        if self.to > MAX_LAMBDA {
+            return Err(Fault::invalid(
+                "assessment.lambda.to",
+                format!(
+                    "{} is above {MAX_LAMBDA:.0e}: λ scales the fitted records, and a record scaled so far is no ground motion (its run overflows)",
+                    number(self.to)
+                ),
+            ));
+        }
+        Ok(())
     }
 }
 
 /// The most values of λ a scan may have.
 pub const MAX_LAMBDA_VALUES: usize = 10_000;
+
+/// The largest λ a scan may reach: ten thousand times the records fitted to
+/// the site (a scan that finds no failure below it reports `ζ_E ≥ λ`).
+pub const MAX_LAMBDA: f64 = 1e4;
 
 /// A validated assessment: the file, its scenario and its site.
 #[derive(Debug, Clone)]
@@ -113,12 +155,7 @@ impl AssessmentInput {
         let site = Site::new(spectra[0], spectra[1], spectra[2]).map_err(|e| fail(Fault::invalid("site", e.to_string())))?;
         let (from, to, step) = file.lambda;
         let lambda = LambdaScan { from, to, step };
-        if lambda.values().len() > MAX_LAMBDA_VALUES {
-            return Err(fail(Fault::invalid(
-                "assessment.lambda",
-                format!("more than {MAX_LAMBDA_VALUES} values of λ: widen the step"),
-            )));
-        }
+        lambda.check().map_err(fail)?;
         Ok(Self { file, scenario, site, lambda })
     }
 

@@ -61,7 +61,7 @@ pub use dynamic::{
     RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
 };
 pub use error::Error;
-pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA_VALUES};
+pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA, MAX_LAMBDA_VALUES};
 pub use inventory::{calling_pool, Inventory, InventoryError, OnAssessed};
 pub use kinematic::{
     activation_check, activation_demand, check_q, corner_periods, displacement_demand, kinematic_checks, linear_kinematic_capacity, linear_kinematic_check,

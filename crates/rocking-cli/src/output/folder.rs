@@ -207,12 +207,14 @@ impl Staging {
                 std::fs::remove_file(&old).with_context(|| format!("cannot remove {} of an earlier run", old.display()))?;
             }
         }
+        // The manifest before the files: a run checking the folder without
+        // the lock ([`refuse_foreign`]) never sees a file of this run unlisted.
+        let manifest_path = self.dir.join(MANIFEST);
+        std::fs::rename(&staged_manifest, &manifest_path).with_context(|| format!("cannot write {}", manifest_path.display()))?;
         for name in &written {
             let to = self.dir.join(name);
             std::fs::rename(self.folder().join(name), &to).with_context(|| format!("cannot write {}", to.display()))?;
         }
-        let manifest_path = self.dir.join(MANIFEST);
-        std::fs::rename(&staged_manifest, &manifest_path).with_context(|| format!("cannot write {}", manifest_path.display()))?;
         drop(lock);
         drop(held);
         self.created.keep();
