@@ -557,7 +557,10 @@ export class AssessView {
       const of = stacked ? ` of the ${escapeHtml(g.mechanism ?? "tower")}` : "";
       line.innerHTML =
         `Governing: ${g.limit_state} ${gm.name}${of} (${gm.formula_html}): ag capacity ${bound}${sig(g.ag_capacity_g, 4)} g ` +
-        `against ag ${sig(g.ag_g, 4)} g, ζ_E = ${bound}${sig(g.zeta_E, 3)}: ${g.holds ? "it holds" : "it FAILS"}.`;
+        `against ag ${sig(g.ag_g, 4)} g, ζ_E = ${bound}${sig(g.zeta_E, 3)}: ${g.holds ? "it holds" : "it FAILS"}. ` +
+        (g.verdict_basis === "named"
+          ? "Its method carries the verdict as assessment.verdict_method names it; the other checks are information."
+          : "The most refined method computed carries the verdict of SLV and SLC; the other checks are information, SLD's activation beside it.");
     } else line.textContent = "";
     line.classList.toggle("danger", !!g && !g.holds);
     // The capacity: a column per mechanism.

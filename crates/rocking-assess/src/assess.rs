@@ -3,10 +3,10 @@
 //! `rocking.assess` returns.
 
 use crate::capacity::Capacity;
-use crate::check::{governing, Check};
+use crate::check::{verdict, verdicts, Check, Method, Verdict};
 use crate::dynamic::{dynamic_checks_ticking, most_runs_of, DynamicCheck, RecordSet};
 use crate::input::AssessmentInput;
-use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv};
+use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv, verdict_json};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
 use std::sync::{Mutex, PoisonError};
@@ -24,6 +24,9 @@ pub struct Assessment {
     pub dynamic: Vec<DynamicCheck>,
     /// The mechanism of each block on the tower, the lowest first (none for a tower alone).
     pub blocks: Vec<BlockMechanism>,
+    /// The method named to carry the verdict (`assessment.verdict_method`);
+    /// `None`: the most refined computed.
+    pub verdict_method: Option<Method>,
 }
 
 /// The mechanism of a block on the tower (the belfry on its shaft): the block
@@ -132,6 +135,7 @@ impl Assessment {
             set,
             dynamic,
             blocks,
+            verdict_method: input.verdict_method(),
         })
     }
 
@@ -155,13 +159,19 @@ impl Assessment {
             .collect()
     }
 
-    /// The governing mechanism and check: the least ζ_E of every mechanism's
-    /// completed checks (the tower's first, so that it governs a tie).
-    pub fn governing_mechanism(&self) -> Option<(MechanismView<'_>, Check)> {
+    /// The governing mechanism and its verdict: the least ζ_E of every
+    /// mechanism's [`MechanismView::verdict`] (the tower's first, so that it
+    /// governs a tie). The damage state's activation is not part of it.
+    pub fn governing_verdict(&self) -> Option<(MechanismView<'_>, Verdict)> {
         self.mechanisms()
             .into_iter()
-            .filter_map(|m| governing(&m.completed()).copied().map(|c| (m, c)))
-            .reduce(|best, x| if x.1.zeta_e < best.1.zeta_e { x } else { best })
+            .filter_map(|m| m.verdict(self.verdict_method).map(|v| (m, v)))
+            .reduce(|best, x| if x.1.check.zeta_e < best.1.check.zeta_e { x } else { best })
+    }
+
+    /// The governing mechanism and check: [`Assessment::governing_verdict`]'s.
+    pub fn governing_mechanism(&self) -> Option<(MechanismView<'_>, Check)> {
+        self.governing_verdict().map(|(m, v)| (m, v.check))
     }
 
     /// Every completed check of every mechanism, the tower's first, each
@@ -170,9 +180,18 @@ impl Assessment {
         self.mechanisms().iter().flat_map(MechanismView::completed).collect()
     }
 
-    /// The governing check: the least ζ_E of the completed checks of every mechanism.
+    /// The governing check: the verdict of least ζ_E of every mechanism.
     pub fn governing(&self) -> Option<Check> {
         self.governing_mechanism().map(|(_, c)| c)
+    }
+
+    /// The damage state's check that governs, reported beside the verdict:
+    /// the activation of least ζ_E of every mechanism (the tower's first).
+    pub fn damage(&self) -> Option<(MechanismView<'_>, Check)> {
+        self.mechanisms()
+            .into_iter()
+            .filter_map(|m| m.checks.iter().find(|c| c.method == Method::Activation).map(|c| (m, *c)))
+            .reduce(|best, x| if x.1.zeta_e < best.1.zeta_e { x } else { best })
     }
 
     /// The record set and the tower's dynamic checks, if any.
@@ -185,7 +204,14 @@ impl Assessment {
     /// (kinematic, then dynamic) and `dynamic`, the tower's first (its own are
     /// the top-level ones too), and `governing` names its `mechanism`.
     pub fn json(&self, input: &AssessmentInput) -> serde_json::Value {
-        let mut out = assessment_json(input.name(), &self.capacity, &input.site, &self.checks, self.dynamic_part());
+        let mut out = assessment_json(
+            input.name(),
+            &self.capacity,
+            &input.site,
+            &self.checks,
+            self.dynamic_part(),
+            self.verdict_method,
+        );
         if self.blocks.is_empty() {
             return out;
         }
@@ -194,28 +220,32 @@ impl Assessment {
             .iter()
             .map(|m| {
                 let dynamic = self.set.as_ref().map(|set| (set, m.dynamic));
-                let one = assessment_json(input.name(), m.capacity, &input.site, m.checks, dynamic);
+                let one = assessment_json(input.name(), m.capacity, &input.site, m.checks, dynamic, self.verdict_method);
                 serde_json::json!({
                     "name": m.name,
                     "block": m.block,
                     "capacity": one["capacity"],
                     "checks": one["checks"],
                     "governing": one["governing"],
+                    "verdicts": one["verdicts"],
+                    "damage": one["damage"],
                     "dynamic": one["dynamic"],
                 })
             })
             .collect();
         if let serde_json::Value::Object(map) = &mut out {
             map.insert("mechanisms".into(), serde_json::Value::Array(mechanisms));
-            // The governing check of every mechanism, named.
-            let governing = self.governing_mechanism().map_or(serde_json::Value::Null, |(m, c)| {
-                let mut g = check_json(&c);
-                if let serde_json::Value::Object(g) = &mut g {
-                    g.insert("mechanism".into(), serde_json::json!(m.name));
-                }
-                g
-            });
-            map.insert("governing".into(), governing);
+            // The governing verdict and damage check of every mechanism, named.
+            let named = |found: Option<(MechanismView<'_>, serde_json::Value)>| {
+                found.map_or(serde_json::Value::Null, |(m, mut g)| {
+                    if let serde_json::Value::Object(g) = &mut g {
+                        g.insert("mechanism".into(), serde_json::json!(m.name));
+                    }
+                    g
+                })
+            };
+            map.insert("governing".into(), named(self.governing_verdict().map(|(m, v)| (m, verdict_json(&v)))));
+            map.insert("damage".into(), named(self.damage().map(|(m, c)| (m, check_json(&c)))));
         }
         out
     }
@@ -240,5 +270,20 @@ impl MechanismView<'_> {
         let mut all = self.checks.to_vec();
         all.extend(self.dynamic.iter().filter_map(|d| d.check));
         all
+    }
+
+    /// The checks that may carry its verdict: the completed ones.
+    pub fn verdict_candidates(&self) -> Vec<Check> {
+        self.completed()
+    }
+
+    /// The verdict of each of its ultimate limit states ([`verdicts`]), `named` the method named to carry it.
+    pub fn verdicts(&self, named: Option<Method>) -> Vec<Verdict> {
+        verdicts(&self.verdict_candidates(), named)
+    }
+
+    /// Its verdict: the least ζ_E of its limit states' ([`verdict`]).
+    pub fn verdict(&self, named: Option<Method>) -> Option<Verdict> {
+        verdict(&self.verdict_candidates(), named)
     }
 }

@@ -161,7 +161,74 @@ impl Check {
     }
 }
 
-/// The governing check: the least ζ_E (the first such in order), `None` for no checks.
-pub fn governing(checks: &[Check]) -> Option<&Check> {
+/// The check of least ζ_E whatever its method (the first such in order),
+/// `None` for no checks: information, not the verdict ([`verdict`]).
+pub fn least_zeta_e(checks: &[Check]) -> Option<&Check> {
     checks.iter().reduce(|best, c| if c.zeta_e < best.zeta_e { c } else { best })
+}
+
+impl Method {
+    /// How far the method refines the analysis of a mechanism, for the
+    /// verdict: the non-linear dynamic check (records run through the model,
+    /// §C8.7.1.2.1.9) above the non-linear kinematic one (the displacement
+    /// spectrum, §C8.7.1.2.1.8) above the linear one (q times the activation,
+    /// §C8.7.1.2.1.7), the Circolare's alternatives for the ultimate limit
+    /// states; `None` for the activation, the damage state's check, which
+    /// carries no verdict of SLV or SLC.
+    pub fn refinement(self) -> Option<u8> {
+        match self {
+            Method::Activation => None,
+            Method::LinearKinematic => Some(1),
+            Method::NonlinearKinematic => Some(2),
+            Method::NonlinearDynamic => Some(3),
+        }
+    }
+}
+
+/// The check that carries the verdict of one limit state, and why.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Verdict {
+    /// The check.
+    pub check: Check,
+    /// Whether its method is the one the file names (`assessment.verdict_method`);
+    /// else it is the most refined method computed for its limit state.
+    pub named: bool,
+}
+
+/// The verdict of each ultimate limit state of `checks` (SLV, then SLC; EN
+/// 1998-3's SD, NC), in the order they first appear: the check of the method
+/// `named` when the limit state has one, else that of the most refined method
+/// computed ([`Method::refinement`]). The activation check (SLD) gives none: it
+/// is reported beside the verdict, not mixed into it; the other checks of the
+/// limit state are information.
+pub fn verdicts(checks: &[Check], named: Option<Method>) -> Vec<Verdict> {
+    let mut states: Vec<LimitState> = Vec::new();
+    for c in checks.iter().filter(|c| c.method.refinement().is_some()) {
+        if !states.contains(&c.limit_state) {
+            states.push(c.limit_state);
+        }
+    }
+    states
+        .into_iter()
+        .filter_map(|state| {
+            let of_state = || checks.iter().filter(move |c| c.limit_state == state);
+            if let Some(c) = named.and_then(|m| of_state().find(|c| c.method == m)) {
+                return Some(Verdict { check: *c, named: true });
+            }
+            // The first of the most refined: a tie of refinement does not occur
+            // (one check per method and limit state).
+            of_state()
+                .filter(|c| c.method.refinement().is_some())
+                .reduce(|best, c| if c.method.refinement() > best.method.refinement() { c } else { best })
+                .map(|c| Verdict { check: *c, named: false })
+        })
+        .collect()
+}
+
+/// The verdict of a mechanism: the least ζ_E of its limit states' [`verdicts`]
+/// (the first such, life safety before collapse), `None` without one.
+pub fn verdict(checks: &[Check], named: Option<Method>) -> Option<Verdict> {
+    verdicts(checks, named)
+        .into_iter()
+        .reduce(|best, v| if v.check.zeta_e < best.check.zeta_e { v } else { best })
 }

@@ -9,7 +9,7 @@ use crate::capacity::{Capacity, CurveKind};
 use crate::check::{Check, Method};
 use crate::outputs::number;
 use crate::site::{Role, Site};
-use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario, SetEntry};
+use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario, SetEntry, VerdictMethod};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
 
@@ -136,6 +136,12 @@ impl AssessmentInput {
                 ),
             )));
         }
+        if file.verdict_method == Some(VerdictMethod::NonlinearDynamic) && file.records.is_empty() {
+            return Err(fail(Fault::invalid(
+                "assessment.verdict_method",
+                "\"nonlinear_dynamic\" needs a record set (assessment.records): without one no dynamic check is computed",
+            )));
+        }
         let ntc = file.site.code == rocking_scenario::Code::Ntc2018;
         let spectra = Role::ALL
             .map(|role| {
@@ -177,6 +183,14 @@ impl AssessmentInput {
             rocking_scenario::Capacity::Linear => CurveKind::Linear,
             rocking_scenario::Capacity::Exact => CurveKind::Exact,
         }
+    }
+    /// The method `assessment.verdict_method` names to carry the verdict; `None`: the most refined computed.
+    pub fn verdict_method(&self) -> Option<Method> {
+        self.file.verdict_method.map(|m| match m {
+            VerdictMethod::LinearKinematic => Method::LinearKinematic,
+            VerdictMethod::NonlinearKinematic => Method::NonlinearKinematic,
+            VerdictMethod::NonlinearDynamic => Method::NonlinearDynamic,
+        })
     }
     /// The input files besides the assessment file: the grid and the records.
     pub fn inputs(&self) -> Vec<PathBuf> {

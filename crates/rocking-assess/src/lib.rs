@@ -8,7 +8,10 @@
 //! the activation's capacity), the
 //! non-linear kinematic checks on the displacement spectrum (life safety,
 //! collapse). Each check gives the least `ag` at which it stops holding and
-//! `ζ_E = a_g,capacity / a_g`.
+//! `ζ_E = a_g,capacity / a_g`. The verdict of the life-safety and collapse
+//! states is carried by one method each ([`verdicts`]): the one the file names,
+//! else the most refined computed; the damage state's activation is reported
+//! beside it.
 //!
 //! A town's towers are assessed the same way, one row of a CSV each, by
 //! [`Inventory`] (`rocking inventory`), their GeoJSON and ranking by [`Town`].
@@ -17,7 +20,7 @@
 //! `ag` in g, periods in s.
 //!
 //! ```
-//! use rocking_assess::{kinematic_checks, Capacity, CurveKind, Site, governing};
+//! use rocking_assess::{kinematic_checks, verdict, Capacity, CurveKind, Site};
 //! use rocking_codes::{CodeSpectrum, NtcSite, NtcSpectrum, Soil, Topography};
 //!
 //! // A tower 4 m wide and 12 m tall (b = 2 m, h = 6 m), 150 t, FC = 1.35.
@@ -31,7 +34,10 @@
 //! };
 //! let site = Site::new(state(0.062, 2.52, 0.30)?, state(0.155, 2.47, 0.36)?, state(0.196, 2.50, 0.37)?)?;
 //! let checks = kinematic_checks(&capacity, &site, 2.0)?;
-//! let worst = governing(&checks).expect("four checks");
+//! // The verdict: of SLV and SLC, the worse by the most refined method computed
+//! // (here the non-linear kinematic one); the SLD's activation is reported beside it.
+//! let worst = verdict(&checks, None).expect("an ultimate limit state").check;
+//! assert_eq!(worst.method, rocking_assess::Method::NonlinearKinematic);
 //! println!("{} {}: ζ_E = {:.2}", worst.limit_state, worst.method, worst.zeta_e);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -55,7 +61,7 @@ pub use capacity::{
     rigid_column_centre, secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind,
     DEFAULT_CONFIDENCE_FACTOR,
 };
-pub use check::{acceleration_ratio, governing, Check, Method, MethodText, Unit};
+pub use check::{acceleration_ratio, least_zeta_e, verdict, verdicts, Check, Method, MethodText, Unit, Verdict};
 pub use dynamic::{
     combined_response, dynamic_check, dynamic_check_ticking, dynamic_checks_ticking, most_runs, most_runs_of, DynamicCheck, LambdaPoint, RecordResponse,
     RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
@@ -68,8 +74,8 @@ pub use kinematic::{
     linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
 pub use outputs::{
-    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, Quantity,
-    CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER,
+    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, verdict_json,
+    Quantity, CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER,
 };
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};

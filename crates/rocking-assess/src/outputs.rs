@@ -2,7 +2,7 @@
 //! `capacity.csv` as text. The names of the fields are written here once.
 
 use crate::capacity::Capacity;
-use crate::check::{governing, Check, Method};
+use crate::check::{verdicts, Check, Method, Verdict};
 use crate::dynamic::{DynamicCheck, RecordResponse, RecordSet};
 use crate::site::{Role, Site};
 use rocking_codes::CodeSpectrum;
@@ -163,11 +163,32 @@ pub fn check_json(c: &Check) -> Value {
     })
 }
 
-/// `assessment.json`: `{"name", "code", "capacity", "sites", "checks", "governing", "dynamic"}`:
-/// the kinematic checks, then the dynamic ones (`dynamic`: the set and its
-/// checks, if the file has a record set); the governing check is the least ζ_E
-/// of the completed checks.
-pub fn assessment_json(name: &str, capacity: &Capacity, site: &Site, checks: &[Check], dynamic: Option<(&RecordSet, &[DynamicCheck])>) -> Value {
+/// The object of the check that carries a verdict: the check's, with
+/// `verdict_basis` (`"named"`: the method of `assessment.verdict_method`;
+/// `"most_refined"`: the most refined method computed for its limit state).
+pub fn verdict_json(v: &Verdict) -> Value {
+    let mut out = check_json(&v.check);
+    if let Value::Object(map) = &mut out {
+        map.insert("verdict_basis".into(), json!(if v.named { "named" } else { "most_refined" }));
+    }
+    out
+}
+
+/// `assessment.json`: `{"name", "code", "capacity", "sites", "checks",
+/// "verdicts", "governing", "damage", "dynamic"}`: the kinematic checks, then
+/// the dynamic ones (`dynamic`: the set and its checks, if the file has a
+/// record set); `verdicts` the check that carries each ultimate limit state's
+/// verdict ([`verdicts`], `named` the method of `assessment.verdict_method`),
+/// `governing` the one of least ζ_E among them, `damage` the activation check
+/// (the damage state), reported beside it.
+pub fn assessment_json(
+    name: &str,
+    capacity: &Capacity,
+    site: &Site,
+    checks: &[Check],
+    dynamic: Option<(&RecordSet, &[DynamicCheck])>,
+    named: Option<Method>,
+) -> Value {
     let mut sites = Map::new();
     for role in Role::ALL {
         sites.insert(site.limit_state(role).as_str().to_string(), spectrum_json(&site.spectrum(role)));
@@ -184,7 +205,12 @@ pub fn assessment_json(name: &str, capacity: &Capacity, site: &Site, checks: &[C
         completed.extend(dynamic.iter().filter_map(|d| d.check));
     }
     out.insert("checks".into(), Value::Array(all));
-    out.insert("governing".into(), governing(&completed).map_or(Value::Null, check_json));
+    let verdicts = verdicts(&completed, named);
+    let governing = verdicts.iter().reduce(|best, v| if v.check.zeta_e < best.check.zeta_e { v } else { best });
+    out.insert("verdicts".into(), Value::Array(verdicts.iter().map(verdict_json).collect()));
+    out.insert("governing".into(), governing.map_or(Value::Null, verdict_json));
+    let damage = checks.iter().find(|c| c.method == Method::Activation);
+    out.insert("damage".into(), damage.map_or(Value::Null, check_json));
     out.insert(
         "dynamic".into(),
         dynamic.map_or(Value::Null, |(set, d)| Value::Array(d.iter().map(|c| dynamic_json(set, c)).collect())),

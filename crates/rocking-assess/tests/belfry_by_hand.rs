@@ -27,6 +27,13 @@ fn stacked(blocks: &str) -> AssessmentInput {
     AssessmentInput::from_toml_str(&text, Path::new("stack.toml")).unwrap()
 }
 
+/// As [`stacked`], the verdict carried by the linear kinematic check (`assessment.verdict_method`).
+fn stacked_linear(blocks: &str) -> AssessmentInput {
+    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
+    let text = file.replacen("[site]\n", &format!("{blocks}\n[site]\n"), 1) + "verdict_method = \"linear_kinematic\"\n";
+    AssessmentInput::from_toml_str(&text, Path::new("stack.toml")).unwrap()
+}
+
 const BELFRY_AND_LANTERN: &str = "[[block]]\nname = \"belfry\"\nwidth = 1.6\nheight = 8.0\nmass = 2.0e4\n\
 [[block]]\nname = \"lantern\"\nwidth = 0.8\nheight = 2.0\nmass = 2.0e3\n";
 
@@ -94,11 +101,30 @@ fn each_mechanism_is_its_block_with_those_above_it() {
     assert_relative_eq!(done.blocks[1].checks[0].ag_capacity.value(), 0.260_499, max_relative = 1e-5);
     assert_relative_eq!(done.blocks[0].checks[0].ag_capacity.value(), 0.110_859, max_relative = 1e-5);
 
-    // The belfry governs: its SLV linear kinematic check, ζ_E = 2 · 0.110859 / 0.155.
+    // The least ζ_E of every check is the belfry's SLV linear kinematic one,
+    // 2 · 0.110859 / 0.155 = 1.43044; the verdict, by the most refined method
+    // computed, is the least of the mechanisms' non-linear kinematic checks.
+    let least = done.completed().into_iter().reduce(|a, c| if c.zeta_e < a.zeta_e { c } else { a }).unwrap();
+    assert_eq!(least, done.blocks[0].checks[1]);
+    assert_relative_eq!(least.zeta_e, 1.430_44, max_relative = 1e-5);
+    let (m, g) = done.governing_mechanism().unwrap();
+    assert_eq!(g.method, Method::NonlinearKinematic);
+    let least_nonlinear = done
+        .completed()
+        .into_iter()
+        .filter(|c| c.method == Method::NonlinearKinematic)
+        .map(|c| c.zeta_e)
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(g.zeta_e.to_bits(), least_nonlinear.to_bits());
+    assert_eq!(done.governing(), Some(g));
+    let json = done.json(&input);
+    assert_eq!(json["governing"]["mechanism"], m.name);
+    // Named, the linear check carries SLV's verdict: the belfry's 1.43044 again.
+    let input = stacked_linear(BELFRY_AND_LANTERN);
+    let done = Assessment::run(&input).unwrap();
     let (m, g) = done.governing_mechanism().unwrap();
     assert_eq!((m.name, g.method), ("belfry", Method::LinearKinematic));
     assert_relative_eq!(g.zeta_e, 1.430_44, max_relative = 1e-5);
-    assert_eq!(done.governing(), Some(g));
     let json = done.json(&input);
     assert_eq!(json["governing"]["mechanism"], "belfry");
     assert_eq!(json["governing"]["zeta_E"], g.zeta_e);
@@ -122,7 +148,7 @@ fn a_belfry_too_stocky_to_govern_leaves_the_towers_verdict() {
     // The verdict is the tower's own governing check, to the last bit.
     let (m, g) = done.governing_mechanism().unwrap();
     assert_eq!(m.name, "tower");
-    let tower_only = rocking_assess::governing(&done.checks).copied().unwrap();
+    let tower_only = rocking_assess::verdict(&done.checks, None).unwrap().check;
     assert_eq!(g, tower_only);
     assert_eq!(done.json(&input)["governing"]["mechanism"], "tower");
 
@@ -208,9 +234,16 @@ fn the_belfrys_dynamic_check_reads_its_own_rotation() {
             assert!((verdict.ag_capacity.value() - lo * verdict.ag).abs() < 1e-15);
         }
     }
-    // The governing check is the least ζ_E of both mechanisms' twelve.
-    let all: Vec<f64> = done.mechanisms().iter().flat_map(|m| m.completed()).map(|c| c.zeta_e).collect();
-    assert_eq!(all.len(), 12);
+    // The governing check is the least ζ_E of both mechanisms' four dynamic
+    // ones, the most refined method computed.
+    let all: Vec<f64> = done
+        .mechanisms()
+        .iter()
+        .flat_map(|m| m.completed())
+        .filter(|c| c.method == Method::NonlinearDynamic)
+        .map(|c| c.zeta_e)
+        .collect();
+    assert_eq!(all.len(), 4);
     // The same number picked, not computed: equal to the bit.
     assert_eq!(
         done.governing().unwrap().zeta_e.to_bits(),
@@ -231,7 +264,8 @@ fn set_duration(path: &str) -> f64 {
 #[test]
 fn an_inventory_names_a_block_that_governs() {
     let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
-    let text = file.replacen("[site]\n", &format!("{BELFRY_AND_LANTERN}\n[site]\n"), 1);
+    // The linear kinematic check named to carry the verdict, whose numbers are worked out here.
+    let text = file.replacen("[site]\n", &format!("{BELFRY_AND_LANTERN}\n[site]\n"), 1) + "verdict_method = \"linear_kinematic\"\n";
     // Tower a: the file's stack, where the belfry governs (the first test).
     // Tower b: a shaft 1.7 m wide (the belfry's 1.6 m fits on it), α0 =
     // 0.85 · 172/1262 = 0.1158 below the belfry's 0.1796: the tower governs,
@@ -309,8 +343,8 @@ fn the_belfry_example_by_hand() {
     // The activation's root is bisected to 1e-12 g; ×2/0.247: 1e-11 relative.
     assert_relative_eq!(linear.zeta_e, 2.0 * a0_over_g / slv.ag(), max_relative = 1e-10);
     assert_relative_eq!(linear.zeta_e, 4.2568, max_relative = 1e-4);
-    // The belfry is far from governing: the tower's own SLV linear kinematic
-    // check does (ζ_E = 1.26, `rocking assess` prints it).
+    // The belfry is far from governing: the tower's own non-linear kinematic
+    // check does (the most refined method computed without records).
     let (m, g) = done.governing_mechanism().unwrap();
-    assert_eq!((m.name, g.method), ("tower", Method::LinearKinematic));
+    assert_eq!((m.name, g.method), ("tower", Method::NonlinearKinematic));
 }

@@ -67,10 +67,17 @@ fn the_verdict_is_the_hand_computed_one() {
     let act = (1.4 - (1.96 - 4.0 * 1.008 * a).sqrt()) / 2.016;
     close(number(&checks[0], &["ag_capacity_g"]), act, 1e-9);
     close(number(&checks[0], &["zeta_E"]), act / 0.062, 1e-9);
-    // SLV linear: q = 2 times the activation's; the least ζ_E of the four, so governing.
+    // SLV linear: q = 2 times the activation's; the least ζ_E of the four, but
+    // information: the non-linear kinematic checks carry the verdict of SLV
+    // and SLC (the most refined computed), and SLC's is the worse (4.68 against
+    // 5.04, worked out by hand in rocking-assess's tests/verdict_by_hand.rs).
     close(number(&checks[1], &["ag_capacity_g"]), 2.0 * act, 1e-9);
     close(number(&checks[1], &["zeta_E"]), 2.0 * act / 0.155, 1e-9);
-    assert_eq!(json["governing"], checks[1]);
+    for key in ["limit_state", "method", "zeta_E", "ag_capacity_g"] {
+        assert_eq!(json["governing"][key], checks[3][key], "{key}");
+    }
+    assert_eq!(json["governing"]["verdict_basis"], "most_refined");
+    assert_eq!(json["damage"], checks[0]);
     assert_eq!(checks[1]["unit"], "g");
     assert_eq!(checks[2]["unit"], "m");
     assert!(checks.iter().all(|c| c["holds"] == Value::Bool(true)));
@@ -81,8 +88,14 @@ fn the_verdict_is_the_hand_computed_one() {
     assert_eq!(lines.len(), 202);
     assert_eq!(lines[1], format!("0.0,{a0}"));
     assert_eq!(lines[201], "2.0,0.0");
-    // The terminal names the governing check.
-    assert!(r.stdout.contains("governing: SLV linear_kinematic"), "{}", r.stdout);
+    // The terminal names the governing check and the damage state's beside it.
+    assert!(
+        r.stdout
+            .contains("governing: SLC nonlinear_kinematic, ζ_E = 4.68 (the most refined method computed)"),
+        "{}",
+        r.stdout
+    );
+    assert!(r.stdout.contains("damage: SLD activation, ζ_E = 3.34"), "{}", r.stdout);
 }
 
 /// An assessment on the hazard grid: the site's parameters come from the grid.
@@ -345,12 +358,17 @@ fn a_belfry_is_a_mechanism_of_its_own() {
         &tower_on_b(),
         "[site]\n",
         "[[block]]\nname = \"belfry\"\nwidth = 1.6\nheight = 8.0\nmass = 2.0e4\n\n[site]\n",
-    );
+    ) + "verdict_method = \"linear_kinematic\"\n";
     let file = write(dir.path(), "assess.toml", &text);
     let out = dir.path().join("out");
     let r = rocking(&["assess", arg(&file), "--out", arg(&out)]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
-    assert!(r.stdout.contains("governing: belfry SLV linear_kinematic, ζ_E = 1.59"), "{}", r.stdout);
+    assert!(
+        r.stdout
+            .contains("governing: belfry SLV linear_kinematic, ζ_E = 1.59 (named by assessment.verdict_method)"),
+        "{}",
+        r.stdout
+    );
     let json: Value = serde_json::from_str(&read(&out.join("assessment.json"))).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(json["governing"]["mechanism"], "belfry");
     // The activation capacity on the branch SS = 1.2 is a0*/(1.2 g): the ratio is 2 · 0.2 / (1.35 · 1.2 · 0.155).
@@ -364,7 +382,7 @@ fn a_belfry_is_a_mechanism_of_its_own() {
         "<h3>tower</h3>",
         "<h3>belfry</h3>",
         "Capacity curve in the ADRS plane: belfry",
-        "Governing check: belfry, SLV",
+        "Verdict: belfry, SLV",
         "the ground's spectra for the motion of the shaft's top",
     ] {
         assert!(report.contains(part), "no {part:?} in the report");

@@ -10,12 +10,13 @@ use crate::util::{arg, csv_table, rocking, tempdir, write};
 fn an_inventory_column_sets_a_blocks_key_by_its_name() {
     let dir = tempdir();
     // tower_on_b.toml (4 m × 12 m, 150 t, subsoil B, FC 1.35, q 2) with a
-    // slender belfry 1.6 m × 8 m of 20 t on it.
+    // slender belfry 1.6 m × 8 m of 20 t on it; the linear kinematic check
+    // named to carry the verdict (assessment.verdict_method).
     let text = tower_on_b().replacen(
         "[site]\n",
         "[[block]]\nname = \"belfry\"\nwidth = 1.6\nheight = 8.0\nmass = 2.0e4\n\n[site]\n",
         1,
-    );
+    ) + "verdict_method = \"linear_kinematic\"\n";
     let assess = write(dir.path(), "assess.toml", &text);
     let towers = write(dir.path(), "towers.csv", "id,lon,lat,belfry.width\nnarrow,14.4,41.0,1.2\nfile,14.4,41.0,\n");
     let out = dir.path().join("out");

@@ -130,10 +130,33 @@ fn assess(args: &Args) -> anyhow::Result<()> {
             }
         }
     }
-    if let Some((m, g)) = done.governing_mechanism() {
-        let relation = if g.ag_capacity.is_lower_bound() { "≥" } else { "=" };
-        let of = if stacked { format!("{} ", m.name) } else { String::new() };
-        lines.push(format!("governing: {of}{} {}, ζ_E {relation} {}", g.limit_state, g.method, sig(g.zeta_e, 3)));
+    let relation = |c: &Check| if c.ag_capacity.is_lower_bound() { "≥" } else { "=" };
+    let of = |name: &str| if stacked { format!("{name} ") } else { String::new() };
+    if let Some((m, v)) = done.governing_verdict() {
+        let g = v.check;
+        let basis = if v.named {
+            "named by assessment.verdict_method"
+        } else {
+            "the most refined method computed"
+        };
+        lines.push(format!(
+            "governing: {}{} {}, ζ_E {} {} ({basis})",
+            of(m.name),
+            g.limit_state,
+            g.method,
+            relation(&g),
+            sig(g.zeta_e, 3)
+        ));
+    }
+    if let Some((m, d)) = done.damage() {
+        lines.push(format!(
+            "damage: {}{} {}, ζ_E {} {} (reported beside the verdict)",
+            of(m.name),
+            d.limit_state,
+            d.method,
+            relation(&d),
+            sig(d.zeta_e, 3)
+        ));
     }
     lines.push(format!(
         "wrote {} in {} ({} s)",

@@ -52,6 +52,29 @@ fn verdict(c: &Check) -> String {
     }
 }
 
+/// Which method carries the verdict of each ultimate limit state, and why the others are information.
+fn verdict_basis(done: &Assessment, input: &AssessmentInput) -> String {
+    let q = input.file.q;
+    let tower = &done.mechanisms()[0];
+    let carried: Vec<String> = tower
+        .verdicts(done.verdict_method)
+        .iter()
+        .map(|v| format!("{} by the {} check", v.check.limit_state, v.check.method.text(q).name))
+        .collect();
+    let why = match done.verdict_method {
+        Some(m) => format!(
+            "assessment.verdict_method names the {} check; a limit state without it takes the most refined method computed",
+            m.text(q).name
+        ),
+        None => "the most refined method computed carries it (non-linear dynamic, else non-linear kinematic, else linear kinematic; assessment.verdict_method may name another)".to_string(),
+    };
+    format!(
+        "The verdict is carried per limit state by one method: {} ({why}). The Circolare 2019 offers the linear and the non-linear analyses as alternatives for the ultimate limit states (§C8.7.1.2.1.7–C8.7.1.2.1.9), not as checks to be met together: the other checks of a limit state are computed and shown as information. The verdict is the worse of the limit states{}; the damage state's activation is reported beside it, not mixed into it.",
+        carried.join(", "),
+        if done.mechanisms().len() > 1 { " over every mechanism" } else { "" }
+    )
+}
+
 fn check_row(out: &mut String, c: &Check, q: f64) {
     let bound = if c.ag_capacity.is_lower_bound() { "≥ " } else { "" };
     let text = c.method.text(q);
@@ -351,16 +374,30 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
             sig(checks[0].ag_capacity.value(), 4)
         );
     }
-    if let Some((m, g)) = done.governing_mechanism() {
+    if let Some((m, v)) = done.governing_verdict() {
+        let g = v.check;
         let _ = writeln!(
             out,
-            "<p><b>Governing check: {}{} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
+            "<p><b>Verdict: {}{} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
             if stacked { format!("{}, ", esc(m.name)) } else { String::new() },
             g.limit_state,
             g.method.text(input.file.q).name,
             if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
             sig(g.zeta_e, 3),
             verdict(&g)
+        );
+        let _ = writeln!(out, "<p class=\"note\">{}</p>", verdict_basis(done, input));
+    }
+    if let Some((m, d)) = done.damage() {
+        let _ = writeln!(
+            out,
+            "<p>Damage limit state, beside the verdict: {}{} {}, ζ<sub>E</sub> = {}{} ({}).</p>",
+            if stacked { format!("{}, ", esc(m.name)) } else { String::new() },
+            d.limit_state,
+            d.method.text(input.file.q).name,
+            if d.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+            sig(d.zeta_e, 3),
+            verdict(&d)
         );
     }
 

@@ -227,6 +227,16 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
     )
     .choices(&["linear", "exact"]),
     key(
+        "assessment.verdict_method",
+        Text,
+        "",
+        "the most refined computed",
+        "\"linear_kinematic\", \"nonlinear_kinematic\" or \"nonlinear_dynamic\" (with records)",
+        "The method whose check carries the verdict of SLV and SLC (without it: non-linear dynamic with a record set, else non-linear kinematic); the others are reported as information.",
+        "\"nonlinear_kinematic\"",
+    )
+    .choices(&["linear_kinematic", "nonlinear_kinematic", "nonlinear_dynamic"]),
+    key(
         "assessment.records",
         List,
         "",
@@ -326,7 +336,7 @@ mod tests {
             }
             checked += 1;
         }
-        assert_eq!(checked, 5);
+        assert_eq!(checked, 6);
     }
 
     #[test]

@@ -34,6 +34,7 @@ pub const ASSESSMENT_KEYS: &[&str] = &[
     "period_range",
     "free_after",
     "lambda",
+    "verdict_method",
 ];
 /// The sections of an assessment file besides a scenario's (less `[ground]`).
 pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment"];
@@ -54,6 +55,19 @@ pub enum Capacity {
     Linear,
     /// The rigid block's exact curve.
     Exact,
+}
+
+/// The method that carries the verdict of the life-safety and collapse
+/// limit states, when the engineer names one (`assessment.verdict_method`);
+/// without it, the most refined method computed carries it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VerdictMethod {
+    /// The linear kinematic check (life safety only).
+    LinearKinematic,
+    /// The non-linear kinematic check.
+    NonlinearKinematic,
+    /// The non-linear dynamic check (needs a record set).
+    NonlinearDynamic,
 }
 
 /// One record of an assessment's set: a file (matched by a glob pattern of
@@ -87,6 +101,8 @@ pub struct AssessmentFile {
     pub q: f64,
     /// The capacity curve.
     pub capacity: Capacity,
+    /// The method named to carry the verdict; `None`: the most refined computed.
+    pub verdict_method: Option<VerdictMethod>,
     /// The records of the set, in order; empty without a set.
     pub records: Vec<SetEntry>,
     /// `units` and `dt` of the set's CSV records (as `[ground]` takes them for a CSV record).
@@ -159,6 +175,14 @@ impl AssessmentFile {
         let capacity = a
             .choice("capacity", &[("linear", Capacity::Linear), ("exact", Capacity::Exact)])?
             .unwrap_or(Capacity::Linear);
+        let verdict_method = a.choice(
+            "verdict_method",
+            &[
+                ("linear_kinematic", VerdictMethod::LinearKinematic),
+                ("nonlinear_kinematic", VerdictMethod::NonlinearKinematic),
+                ("nonlinear_dynamic", VerdictMethod::NonlinearDynamic),
+            ],
+        )?;
         let records = match a.get("records") {
             Some(Value::Array(items)) if items.iter().any(Value::is_table) => given_records(items)?,
             Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?
@@ -212,6 +236,7 @@ impl AssessmentFile {
             confidence_factor,
             q,
             capacity,
+            verdict_method,
             records,
             csv,
             csv_keys,
