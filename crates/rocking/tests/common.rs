@@ -1,7 +1,10 @@
 //! Shared builders for the physics tests.
 #![allow(dead_code, missing_docs, clippy::unwrap_used)]
 
-use rocking::{reference::solid_block, simulate, Building, EventLog, GroundMotion, History, Initial, Model, NormalForce, Settings, Step, Summary, Tower};
+use rocking::stack::Block;
+use rocking::{
+    reference::solid_block, simulate, Building, EventLog, GroundMotion, Harmonic, History, Initial, Model, NormalForce, Settings, Step, Summary, Tower,
+};
 
 pub const G: f64 = 9.81;
 
@@ -25,6 +28,21 @@ pub fn tight(duration: f64) -> Settings {
         rtol: 1e-11,
         atol: 1e-13,
     }
+}
+
+/// The bench's two blocks (a 0.5 m × 2 m block of 1000 kg carrying a 0.3 m ×
+/// 0.6 m one of the same density) on `building` (or a fixed base) under
+/// 0.5 g at 2 Hz for `duration`, at rtol 1e-8.
+pub fn two_blocks(building: Option<Building>, duration: f64) -> (Model, GroundMotion, Settings) {
+    let upper = Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6).unwrap();
+    let model = Model::new(Some(block()), building, G).unwrap().with_blocks(&[upper]).unwrap();
+    let ground = GroundMotion::Harmonic(Harmonic::new(0.5 * G, 2.0, duration, 0.0).unwrap());
+    let settings = Settings {
+        duration,
+        rtol: 1e-8,
+        atol: 1e-10,
+    };
+    (model, ground, settings)
 }
 
 pub fn run(model: &Model, ground: &GroundMotion, initial: Initial, settings: &Settings) -> Summary {

@@ -13,10 +13,7 @@
 #![allow(clippy::unwrap_used)]
 
 mod common;
-use common::G;
-use rocking::reference::solid_block;
-use rocking::stack::Block;
-use rocking::{simulate, Building, Flow, GroundMotion, Harmonic, Initial, Model, NormalForce, Observer, Settings, Step};
+use rocking::{simulate, Building, Flow, Initial, NormalForce, Observer, Step};
 use std::ops::ControlFlow;
 
 /// The largest top acceleration of the observed steps.
@@ -37,18 +34,9 @@ impl Observer for Dense {
     }
 }
 
-/// The bench's two blocks (a 0.5 m × 2 m block of 1000 kg carrying a 0.3 m ×
-/// 0.6 m one of the same density) under 0.5 g at 2 Hz for 20 s, at rtol 1e-8.
+/// The bench's two blocks ([`common::two_blocks`]) for 20 s.
 fn check(building: Option<Building>) {
-    let tower = solid_block(0.5, 2.0);
-    let upper = Block::solid(2, 0.3, 0.6, 1000.0 * 0.3 * 0.6).unwrap();
-    let model = Model::new(Some(tower), building, G).unwrap().with_blocks(&[upper]).unwrap();
-    let ground = GroundMotion::Harmonic(Harmonic::new(0.5 * G, 2.0, 20.0, 0.0).unwrap());
-    let settings = Settings {
-        duration: 20.0,
-        rtol: 1e-8,
-        atol: 1e-10,
-    };
+    let (model, ground, settings) = common::two_blocks(building, 20.0);
     let bare = simulate(&model, &ground, Initial::default(), &settings, &mut ()).unwrap();
     let mut dense = Dense { per_step: 200, top: 0.0 };
     let watched = simulate(&model, &ground, Initial::default(), &settings, &mut dense).unwrap();

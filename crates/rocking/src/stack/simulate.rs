@@ -11,7 +11,9 @@
 //! Peaks are located as the tower's are: the extremes of every `θ_k` at the
 //! roots of `θ̇_k` isolated on the dense output (`run.rs`, the engine's
 //! search); the top's acceleration and each interface's friction demand at
-//! the ends of every step, at every event, and at the extrema inside a step
+//! the ends of every step (an event's instant where the step of the regime
+//! that holds after it starts: a regime that another event ends at the same
+//! instant is never read), and at the extrema inside a step
 //! located on their exact time derivatives (Kane's equations solved on jets,
 //! [`Instant`](super::run::Instant)), searched only where the cubic Hermite interpolant of the
 //! ends comes near the running maximum ([`PEAK_MARGIN`]) or, for the demand,
@@ -362,6 +364,14 @@ impl<O: Observer, const N: usize> Hook<N> for Reporter<'_, O> {
                 Peaks::of(self.stack, self.kernel, regime, &start.snap),
                 Peaks::of(self.stack, self.kernel, regime, &end.snap),
             );
+            // The step's start, in the regime that holds from there: the
+            // instant after an event is read here, not at the event, where
+            // a regime that another event ends at the same instant (an
+            // impact that sets the building sliding and lifts a seated
+            // block) would count loads the contacts never carry.
+            if reached > t0 {
+                self.read(&Self::values(&p0));
+            }
             self.inside(regime, stretch, &p0, &p1);
             if reached >= stretch.t1 {
                 self.tracker.displacement(end.state.theta[0], end.state.slip);
@@ -436,7 +446,8 @@ impl<O: Observer, const N: usize> Hook<N> for Reporter<'_, O> {
         for e in events {
             self.report(e)?;
         }
-        self.instant::<N>(&event.regime, &event.after, t);
+        // The regime's loads are read where its step starts ([`Hook::step`]).
+        self.tracker.displacement(event.after.theta[0], event.after.slip);
         self.last = (t, event.regime, event.after);
         ControlFlow::Continue(())
     }
