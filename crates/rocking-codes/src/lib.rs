@@ -47,6 +47,7 @@ mod elastic;
 mod error;
 mod fit;
 mod grid;
+mod hazard;
 mod ntc;
 mod oscillator;
 mod response;
@@ -63,6 +64,10 @@ pub use fit::{
 };
 pub use grid::{
     great_circle_distance_km, inverse_distance_weighting, log_log_interpolation, GridNode, HazardGrid, SiteHazard, EARTH_RADIUS_KM, GRID_RETURN_PERIODS,
+};
+pub use hazard::{
+    power_law_frequency, power_law_segment_frequency, power_law_through, probability_in_period, standard_normal_cdf, surface_pga, HazardCurve, HazardPoint,
+    LimitStateFrequency,
 };
 pub use ntc::{ntc_cc, ntc_corner_periods, ntc_ss, NtcSite, NtcSpectrum, Topography};
 pub use oscillator::NigamJennings;
