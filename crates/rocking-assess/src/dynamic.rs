@@ -79,6 +79,11 @@ pub struct RecordResponse {
     pub overturned: bool,
     /// The building's largest slip (m); `None` without a building.
     pub max_slip: Option<f64>,
+    /// With blocks on the tower, the largest `|M_imp| / (V_imp B_j / 2)` of a
+    /// seated interface through an impact elsewhere (0 without one): above 1
+    /// the model's assumption that the interface stays seated is violated
+    /// (docs/src/model.md). `None` for a tower alone.
+    pub max_seat_impulse_ratio: Option<f64>,
 }
 
 impl RecordResponse {
@@ -237,6 +242,7 @@ impl RecordSet {
                     max_displacement: (!overturned).then(|| capacity.displacement_at_rotation(theta)),
                     overturned,
                     max_slip,
+                    max_seat_impulse_ratio: s.stack.as_ref().map(|stack| stack.max_seat_impulse_ratio),
                 }
             })
             .collect())

@@ -259,18 +259,27 @@ pub(crate) fn number(x: f64) -> String {
     ryu::Buffer::new().format(x).to_string()
 }
 
+/// The column of `records.csv` (with blocks on the tower) holding each run's
+/// largest seat impulse ratio: above 1 the run breaks the model's assumption
+/// that a seated block stays seated through an impact elsewhere.
+pub const SEAT_IMPULSE_COLUMN: &str = "max_seat_impulse_ratio";
+
 /// `records.csv`: one row per limit state and record at λ = 1 (the fitted scales):
 /// the displacement empty when the tower overturned, the slip empty without a
 /// building, `error` the one line of a record that failed to run. With blocks
 /// on the tower (`blocks`: each block's name and dynamic checks, in the order
 /// of `checks`), each adds `<name>_max_control_displacement_m` (its own θ's
 /// d*, empty when its mechanism collapsed) and `<name>_overturned` (it fell,
-/// or a block under it did) after `max_building_slip_m`.
+/// or a block under it did) after `max_building_slip_m`, and the run's
+/// [`SEAT_IMPULSE_COLUMN`] after them.
 pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck], blocks: &[(&str, &[DynamicCheck])]) -> String {
     let mut header: Vec<String> = RECORDS_HEADER[..RECORDS_HEADER.len() - 1].iter().map(|h| h.to_string()).collect();
     for (name, _) in blocks {
         header.push(format!("{name}_max_control_displacement_m"));
         header.push(format!("{name}_overturned"));
+    }
+    if !blocks.is_empty() {
+        header.push(SEAT_IMPULSE_COLUMN.into());
     }
     header.push("error".into());
     let mut out = header.join(",") + "\n";
@@ -290,6 +299,9 @@ pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck], blocks: &[(&str, &[
             push(&mut row, response, true);
             for (_, block) in blocks {
                 push(&mut row, &block[c].at_one.responses[i], false);
+            }
+            if !blocks.is_empty() {
+                row.push(response.as_ref().ok().and_then(|r| r.max_seat_impulse_ratio).map(number).unwrap_or_default());
             }
             row.push(response.as_ref().err().map(|e| field(e)).unwrap_or_default());
             out.push_str(&row.join(","));

@@ -29,6 +29,7 @@ mod regression_spectrum_dt;
 mod regression_spectrum_hangs;
 mod regression_spectrum_period_count;
 mod regression_spectrum_record_peak;
+mod regression_stack_seat_impulse_ratio;
 mod run;
 mod shard;
 mod spectrum;

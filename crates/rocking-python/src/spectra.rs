@@ -8,7 +8,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_codes::PeriodGrid;
-use rocking_scenario::{code_spectra_columns, read_record, record_names, record_spectra_in_g, AssessmentFile, ErrorKind, DEFAULT_G};
+use rocking_scenario::{code_spectra_columns, read_record, record_names, record_spectra_in_g, same_record_twice, AssessmentFile, ErrorKind, DEFAULT_G};
 use std::path::{Path, PathBuf};
 
 /// The periods `(from, to, count)`, checked, or a `ValueError` naming `periods`.
@@ -37,6 +37,14 @@ pub fn spectrum_raw<'py>(py: Python<'py>, records: Vec<PathBuf>, damping: f64, p
     rocking_codes::check_damping(damping).map_err(|e| PyValueError::new_err(e.to_string()))?;
     if records.is_empty() {
         return Err(PyValueError::new_err("records: give at least one record file"));
+    }
+    if let Some((i, j)) = same_record_twice(&records) {
+        return Err(PyValueError::new_err(format!(
+            "records: {} is given twice (as {} and {}): a spectrum has one column per file",
+            records[j].display(),
+            records[i].display(),
+            records[j].display()
+        )));
     }
     let read = py.detach(|| records.iter().map(|p| read_record(p, DEFAULT_G)).collect::<Result<Vec<_>, ErrorKind>>());
     let read = read.map_err(|kind| match kind {

@@ -341,6 +341,41 @@ fn checks_table(out: &mut String, m: &MechanismView<'_>, q: f64) {
     let _ = writeln!(out, "</table>");
 }
 
+/// The report's warning when a run of the dynamic checks of a stack broke the
+/// model's assumption that a seated block stays seated through an impact
+/// elsewhere (its seat impulse ratio above 1, docs/src/model.md): how many
+/// runs, and the largest ratio with its record and λ. `None` when none did.
+fn seat_impulse_warning(done: &Assessment) -> Option<String> {
+    let set = done.set.as_ref()?;
+    let mut runs = 0;
+    let mut largest: Option<(f64, &str, f64)> = None;
+    for check in &done.dynamic {
+        for point in std::iter::once(&check.at_one).chain(&check.scan) {
+            for (response, record) in point.responses.iter().zip(&set.records) {
+                let Some(ratio) = response.as_ref().ok().and_then(|r| r.max_seat_impulse_ratio) else {
+                    continue;
+                };
+                if ratio > 1.0 {
+                    runs += 1;
+                    if largest.is_none_or(|(r, _, _)| ratio > r) {
+                        largest = Some((ratio, record.name.as_str(), point.lambda));
+                    }
+                }
+            }
+        }
+    }
+    let (ratio, record, lambda) = largest?;
+    Some(format!(
+        "<p class=\"note\"><b>Warning: {runs} run{} of the dynamic checks break{} the model's assumption that a seated block stays seated through an impact elsewhere</b> (a seat impulse ratio |M<sub>imp</sub>| / (V<sub>imp</sub> B/2) above 1; the largest {} for {} at λ = {}): the dynamic verdicts resting on {} are outside the model's validity. Each record's ratio at λ = 1 is in records.csv (<code>max_seat_impulse_ratio</code>).</p>",
+        if runs == 1 { "" } else { "s" },
+        if runs == 1 { "s" } else { "" },
+        sig(ratio, 3),
+        esc(record),
+        sig(lambda, 3),
+        if runs == 1 { "it" } else { "them" }
+    ))
+}
+
 /// The page.
 pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result<String> {
     let (capacity, checks, dynamic) = (&done.capacity, &done.checks, done.dynamic_part());
@@ -399,6 +434,9 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
             sig(d.zeta_e, 3),
             verdict(&d)
         );
+    }
+    if let Some(warning) = seat_impulse_warning(done) {
+        let _ = writeln!(out, "{warning}");
     }
 
     if stacked {

@@ -20,8 +20,8 @@ use anyhow::Context;
 use rocking::{AccelerationUnit, CsvOptions, Record};
 use rocking_codes::{default_period_range, fit_record_set, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT, DEFAULT_PERIODS};
 use rocking_scenario::{
-    code_spectra_columns, csv_line, dynamic_limit_states, read_record_with, record_names, record_spectra_in_g, spreadsheet_text, AssessmentFile, SpectrumKind,
-    ACCELERATION_UNITS, DEFAULT_G,
+    code_spectra_columns, csv_line, dynamic_limit_states, read_record_with, record_names, record_spectra_in_g, same_record_twice, spreadsheet_text,
+    AssessmentFile, SpectrumKind, ACCELERATION_UNITS, DEFAULT_G,
 };
 use std::path::{Path, PathBuf};
 
@@ -137,6 +137,14 @@ fn records_form(args: &Args, periods: &[f64]) -> anyhow::Result<()> {
         units: args.units.unwrap_or_default(),
         dt: args.dt,
     };
+    if let Some((i, j)) = same_record_twice(&args.records) {
+        anyhow::bail!(
+            "{} is given twice (as {} and {}): a spectrum has one column per file",
+            args.records[j].display(),
+            args.records[i].display(),
+            args.records[j].display()
+        );
+    }
     let records: Vec<Record> = args
         .records
         .iter()

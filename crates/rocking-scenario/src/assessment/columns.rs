@@ -79,6 +79,14 @@ pub fn record_names(paths: &[String]) -> Vec<String> {
     }
 }
 
+/// The first two of `paths` that are one file (the same path, or the same
+/// file by its canonical path): `(i, j)`, `i < j`. A spectrum has one column
+/// per file given, so a file given twice is refused.
+pub fn same_record_twice(paths: &[std::path::PathBuf]) -> Option<(usize, usize)> {
+    let canonical: Vec<_> = paths.iter().map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone())).collect();
+    (1..paths.len()).find_map(|j| (0..j).find(|&i| canonical[i] == canonical[j]).map(|i| (i, j)))
+}
+
 /// Each record's pseudo-acceleration spectrum in g (its values in m/s² divided by
 /// `g`) at `periods` (s) and `damping_pct`; an error names the record by its place.
 pub fn record_spectra_in_g(records: &[Record], periods: &[f64], damping_pct: f64, g: f64) -> Result<Vec<Vec<f64>>, rocking_codes::Error> {

@@ -11,7 +11,7 @@ mod columns;
 mod keys;
 mod site;
 
-pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, SpectrumColumn, SpectrumKind};
+pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, same_record_twice, SpectrumColumn, SpectrumKind};
 pub use keys::ASSESSMENT_KEY_DOCS;
 pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
 
