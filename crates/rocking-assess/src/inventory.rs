@@ -113,6 +113,41 @@ fn columns(header: &csv::StringRecord, code: Code, file: &Path) -> Result<Vec<Co
     Ok(out)
 }
 
+/// Whether `text` is a number written with a decimal comma (`4,5`, `-0,25`),
+/// as a spreadsheet of an Italian or a French locale writes it.
+fn decimal_comma(text: &str) -> bool {
+    let digits = text.strip_prefix(['-', '+']).unwrap_or(text);
+    digits.split_once(',').is_some_and(|(whole, part)| {
+        !whole.is_empty() && !part.is_empty() && whole.bytes().all(|b| b.is_ascii_digit()) && part.bytes().all(|b| b.is_ascii_digit())
+    })
+}
+
+/// Refuses a cell of `row` holding a number with a decimal comma, naming its row and column.
+fn refuse_decimal_comma(row: &Line, file: &Path, name: &str, text: &str) -> Result<(), String> {
+    if decimal_comma(text) {
+        return Err(row.fault(
+            file,
+            name,
+            format!(
+                "{text:?} has a decimal comma: write numbers with a decimal point ({})",
+                text.replacen(',', ".", 1)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The field separator of a towers' file: the comma, or the `;` or the TAB
+/// a spreadsheet writes (in a locale whose decimal mark is a comma), whichever
+/// of the three the header line holds most of (the comma on a tie).
+fn separator(text: &[u8]) -> u8 {
+    let header = text.split(|&b| b == b'\n').next().unwrap_or_default();
+    let count = |sep: u8| header.iter().filter(|&&b| b == sep).count();
+    [b';', b'\t']
+        .into_iter()
+        .fold(b',', |best, sep| if count(sep) > count(best) { sep } else { best })
+}
+
 /// A cell as a TOML value: a number, a boolean or a quoted string as TOML reads it, else the text as a string.
 fn cell_value(cell: &str) -> Value {
     format!("v = {cell}")
@@ -159,6 +194,7 @@ fn coordinate(row: &Line, file: &Path, name: &str, limit: f64) -> Result<f64, St
     let text = row
         .get(name)
         .ok_or_else(|| row.fault(file, name, "missing: a tower needs its place (WGS84 degrees)"))?;
+    refuse_decimal_comma(row, file, name, text)?;
     crate::town::degrees(text, limit).ok_or_else(|| match text.trim().parse::<f64>() {
         Ok(x) => row.fault(file, name, format!("must be within ±{limit} degrees, got {x}")),
         Err(_) => row.fault(file, name, format!("not a number: {text:?}")),
@@ -248,6 +284,7 @@ fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Resul
         let value = if matches!(given.name.as_str(), "soil" | "topography") {
             Value::String(given.text.clone())
         } else {
+            refuse_decimal_comma(row, file, &given.name, &given.text)?;
             cell_value(&given.text)
         };
         // A block's key by its name (`belfry.width`), as a sweep's axis names
@@ -325,7 +362,13 @@ impl Inventory {
         }
 
         let cannot_read = |e: csv::Error| towers_error(format!("cannot read {}: {e}", file.display()));
-        let mut reader = csv::ReaderBuilder::new().flexible(true).trim(csv::Trim::All).from_reader(towers);
+        // A spreadsheet's file: a UTF-8 byte-order mark, a `;` or a TAB between fields.
+        let towers = towers.strip_prefix(b"\xEF\xBB\xBF".as_slice()).unwrap_or(towers);
+        let mut reader = csv::ReaderBuilder::new()
+            .flexible(true)
+            .trim(csv::Trim::All)
+            .delimiter(separator(towers))
+            .from_reader(towers);
         let header = reader.headers().map_err(cannot_read)?.clone();
         let columns = columns(&header, input.file.site.code, file).map_err(towers_error)?;
         // A column that names no key is the header's fault, told once (not on every row).
