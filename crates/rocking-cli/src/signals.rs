@@ -8,7 +8,9 @@
 //! run created for them (if still empty), so that nothing of the
 //! interrupted run is left behind; a commit under way (the moves of
 //! `output::Staging::commit`) is let finish first, so that the folder holds
-//! one run's files whatever the moment of the signal.
+//! one run's files whatever the moment of the signal. `assess` keeps
+//! nothing of a run cut short ([`stop_at_once`]): its first signal does what
+//! a second does elsewhere.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -16,6 +18,10 @@ use std::sync::{Mutex, MutexGuard, Once, PoisonError};
 
 /// Set by the first signal.
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// Set by a command that keeps nothing of a run cut short ([`stop_at_once`]):
+/// the first signal then ends the process as a second one does.
+static AT_ONCE: AtomicBool = AtomicBool::new(false);
 
 /// The staging folders to remove when a second signal ends the process, each
 /// with the folders created for it (the outermost first), removed after it if empty.
@@ -27,7 +33,8 @@ pub fn interrupted() -> &'static AtomicBool {
     INSTALL.call_once(|| {
         // Without a handler (another one is set) a signal simply ends the process.
         let _ = ctrlc::set_handler(|| {
-            if INTERRUPTED.swap(true, Ordering::SeqCst) {
+            let at_once = AT_ONCE.load(Ordering::SeqCst);
+            if INTERRUPTED.swap(true, Ordering::SeqCst) || at_once {
                 for (dir, created) in staging().drain(..) {
                     let _ = std::fs::remove_dir_all(dir);
                     // `remove_dir` removes only an empty folder: one holding another run's files stays.
@@ -37,12 +44,27 @@ pub fn interrupted() -> &'static AtomicBool {
                         }
                     }
                 }
-                eprintln!("interrupted twice: stopping now, nothing written");
+                eprintln!(
+                    "{}",
+                    if at_once {
+                        "interrupted: nothing written"
+                    } else {
+                        "interrupted twice: stopping now, nothing written"
+                    }
+                );
                 std::process::exit(130);
             }
         });
     });
     &INTERRUPTED
+}
+
+/// Installs the handler so that the first signal ends the process at once
+/// (exit 130, one line), the output folders being written left as they
+/// were: for `assess`, whose outputs are whole or nothing.
+pub fn stop_at_once() {
+    AT_ONCE.store(true, Ordering::SeqCst);
+    interrupted();
 }
 
 fn staging() -> MutexGuard<'static, Vec<(PathBuf, Vec<PathBuf>)>> {

@@ -12,6 +12,7 @@ mod guard;
 mod hardening;
 mod inventory;
 mod keys;
+mod regression_assess_interrupted;
 mod regression_assess_record_fails_to_run;
 mod regression_block_name_on_one_line;
 mod regression_concurrent_runs;

@@ -78,6 +78,8 @@ pub fn write_files(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Ass
 }
 
 fn assess(args: &Args) -> anyhow::Result<()> {
+    // Ctrl-C or SIGTERM: the output folder left as it was, exit 130.
+    crate::signals::stop_at_once();
     let started = std::time::Instant::now();
     let text = std::fs::read_to_string(&args.assessment).with_context(|| format!("cannot read {}", args.assessment.display()))?;
     // The file's errors already name the file, the key and the cause.
