@@ -27,6 +27,8 @@ pub struct Assessment {
     /// The method named to carry the verdict (`assessment.verdict_method`);
     /// `None`: the most refined computed.
     pub verdict_method: Option<Method>,
+    /// Whether a dynamic check on an incompatible set may carry the verdict (`assessment.accept_incompatible_set`).
+    pub accept_incompatible_set: bool,
 }
 
 /// The mechanism of a block on the tower (the belfry on its shaft): the block
@@ -61,6 +63,8 @@ pub struct MechanismView<'a> {
     pub checks: &'a [Check],
     /// Its dynamic checks.
     pub dynamic: &'a [DynamicCheck],
+    /// Whether a dynamic check on an incompatible set may carry its verdict.
+    pub accept_incompatible_set: bool,
 }
 
 impl Assessment {
@@ -136,6 +140,7 @@ impl Assessment {
             dynamic,
             blocks,
             verdict_method: input.verdict_method(),
+            accept_incompatible_set: input.file.accept_incompatible_set,
         })
     }
 
@@ -147,6 +152,7 @@ impl Assessment {
             capacity: &self.capacity,
             checks: &self.checks,
             dynamic: &self.dynamic,
+            accept_incompatible_set: self.accept_incompatible_set,
         };
         std::iter::once(tower)
             .chain(self.blocks.iter().map(|b| MechanismView {
@@ -155,6 +161,7 @@ impl Assessment {
                 capacity: &b.capacity,
                 checks: &b.checks,
                 dynamic: &b.dynamic,
+                accept_incompatible_set: self.accept_incompatible_set,
             }))
             .collect()
     }
@@ -210,7 +217,7 @@ impl Assessment {
             &input.site,
             &self.checks,
             self.dynamic_part(),
-            self.verdict_method,
+            (self.verdict_method, self.accept_incompatible_set),
         );
         if self.blocks.is_empty() {
             return out;
@@ -220,7 +227,14 @@ impl Assessment {
             .iter()
             .map(|m| {
                 let dynamic = self.set.as_ref().map(|set| (set, m.dynamic));
-                let one = assessment_json(input.name(), m.capacity, &input.site, m.checks, dynamic, self.verdict_method);
+                let one = assessment_json(
+                    input.name(),
+                    m.capacity,
+                    &input.site,
+                    m.checks,
+                    dynamic,
+                    (self.verdict_method, self.accept_incompatible_set),
+                );
                 serde_json::json!({
                     "name": m.name,
                     "block": m.block,
@@ -272,9 +286,13 @@ impl MechanismView<'_> {
         all
     }
 
-    /// The checks that may carry its verdict: the completed ones.
+    /// The checks that may carry its verdict: the kinematic ones and the
+    /// completed dynamic ones on a compatible set (or on any, when accepted:
+    /// [`DynamicCheck::verdict_check`]).
     pub fn verdict_candidates(&self) -> Vec<Check> {
-        self.completed()
+        let mut all = self.checks.to_vec();
+        all.extend(self.dynamic.iter().filter_map(|d| d.verdict_check(self.accept_incompatible_set)));
+        all
     }
 
     /// The verdict of each of its ultimate limit states ([`verdicts`]), `named` the method named to carry it.

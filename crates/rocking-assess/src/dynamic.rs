@@ -129,6 +129,21 @@ pub struct DynamicCheck {
     pub error: Option<String>,
 }
 
+impl DynamicCheck {
+    /// Whether its set is compatible with the code's spectrum (NTC 2018
+    /// §3.2.3.6): the mean of the scaled set within 0.90–1.30 of the target
+    /// over the fitting range. A check on an incompatible set is not valid.
+    pub fn is_valid(&self) -> bool {
+        self.fitted.compatibility.holds
+    }
+
+    /// The check, if it may carry the verdict: completed, and valid unless
+    /// `accept_incompatible_set` (`assessment.accept_incompatible_set`).
+    pub fn verdict_check(&self, accept_incompatible_set: bool) -> Option<Check> {
+        self.check.filter(|_| accept_incompatible_set || self.is_valid())
+    }
+}
+
 /// The combined response of a set (m): the mean of the responses with at least 7
 /// records, the largest with 3 to 6 (NTC 2018 §7.3.5), overturning counted as d0.
 pub fn combined_response(responses: &[f64], rule: SetRule) -> f64 {

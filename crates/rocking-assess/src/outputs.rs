@@ -178,7 +178,9 @@ pub fn verdict_json(v: &Verdict) -> Value {
 /// "verdicts", "governing", "damage", "dynamic"}`: the kinematic checks, then
 /// the dynamic ones (`dynamic`: the set and its checks, if the file has a
 /// record set); `verdicts` the check that carries each ultimate limit state's
-/// verdict ([`verdicts`], `named` the method of `assessment.verdict_method`),
+/// verdict ([`verdicts`], `rule` the method of `assessment.verdict_method` and
+/// `assessment.accept_incompatible_set`: a dynamic check on a set outside
+/// NTC 2018 §3.2.3.6's band carries none unless accepted),
 /// `governing` the one of least ζ_E among them, `damage` the activation check
 /// (the damage state), reported beside it.
 pub fn assessment_json(
@@ -187,8 +189,9 @@ pub fn assessment_json(
     site: &Site,
     checks: &[Check],
     dynamic: Option<(&RecordSet, &[DynamicCheck])>,
-    named: Option<Method>,
+    rule: (Option<Method>, bool),
 ) -> Value {
+    let (named, accept_incompatible_set) = rule;
     let mut sites = Map::new();
     for role in Role::ALL {
         sites.insert(site.limit_state(role).as_str().to_string(), spectrum_json(&site.spectrum(role)));
@@ -202,7 +205,7 @@ pub fn assessment_json(
     let mut completed: Vec<Check> = checks.to_vec();
     if let Some((_, dynamic)) = dynamic {
         all.extend(dynamic.iter().map(dynamic_check_json));
-        completed.extend(dynamic.iter().filter_map(|d| d.check));
+        completed.extend(dynamic.iter().filter_map(|d| d.verdict_check(accept_incompatible_set)));
     }
     out.insert("checks".into(), Value::Array(all));
     let verdicts = verdicts(&completed, named);
@@ -355,6 +358,7 @@ pub fn dynamic_json(set: &RecordSet, c: &DynamicCheck) -> Value {
         "lambda_fails": c.bracket.map(|b| b.1),
         "scan": c.scan.iter().map(|p| json!({"lambda": p.lambda, "response_m": p.combined, "holds": p.holds})).collect::<Vec<_>>(),
         "completed": c.check.is_some(),
+        "valid": c.is_valid(),
         "error": c.error,
     })
 }

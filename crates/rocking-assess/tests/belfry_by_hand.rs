@@ -181,8 +181,10 @@ fn the_belfrys_dynamic_check_reads_its_own_rotation() {
     let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
     let site = &file[file.find("[site]").unwrap()..];
     let text = format!(
-        "{SMALL}{site}records = [\"records/synthetic/kt_01.AT2\", \"records/synthetic/kt_02.AT2\", \"records/synthetic/kt_03.AT2\"]\nfree_after = 3.0\nlambda = {{ from = 0.5, to = 4.0, step = 0.5 }}\n"
+        "{SMALL}{site}records = [\"records/synthetic/kt_01.AT2\", \"records/synthetic/kt_02.AT2\", \"records/synthetic/kt_03.AT2\"]\nfree_after = 3.0\nlambda = {{ from = 0.5, to = 4.0, step = 0.5 }}\naccept_incompatible_set = true\n"
     );
+    // The three synthetic records are not compatible with the spectrum
+    // (tests/incompatible_set.rs): accepted here, so that their checks carry the verdict.
     let input = AssessmentInput::from_toml_str(&text, &records_dir().join("assess.toml")).unwrap();
     let done = Assessment::run(&input).unwrap();
     let belfry = &done.blocks[0];

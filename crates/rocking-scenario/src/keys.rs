@@ -25,6 +25,8 @@ pub enum KeyKind {
     Table,
     /// A list of strings or numbers (`assessment.records`, `assessment.period_range`).
     List,
+    /// `true` or `false` (`assessment.accept_incompatible_set`).
+    Boolean,
 }
 
 impl KeyKind {
@@ -35,6 +37,7 @@ impl KeyKind {
             KeyKind::Points => "list of [x, y]",
             KeyKind::Table => "table",
             KeyKind::List => "list",
+            KeyKind::Boolean => "boolean",
         }
     }
 }

@@ -117,6 +117,15 @@ impl<'a> Section<'a> {
             .ok_or_else(|| Fault::new(self.key(key), ErrorKind::Missing(format!("required: {what}"))))
     }
 
+    /// An optional boolean (`true` or `false`).
+    pub(crate) fn boolean(&self, key: &str) -> Result<Option<bool>, Fault> {
+        match self.table.get(key) {
+            None => Ok(None),
+            Some(Value::Boolean(b)) => Ok(Some(*b)),
+            Some(v) => Err(self.wrong_type(key, "true or false", v)),
+        }
+    }
+
     /// An optional string.
     pub(crate) fn string(&self, key: &str) -> Result<Option<&'a str>, Fault> {
         match self.table.get(key) {

@@ -122,6 +122,32 @@ fn assess(args: &Args) -> anyhow::Result<()> {
         lines.extend(m.checks.iter().map(check_line));
         for d in m.dynamic {
             match &d.check {
+                Some(c) if !d.is_valid() => {
+                    let ratios = &d.fitted.compatibility;
+                    let range = done.set.as_ref().map_or((0.0, 0.0), |s| s.range);
+                    let what = if done.accept_incompatible_set {
+                        "accepted by assessment.accept_incompatible_set: it carries the verdict"
+                    } else {
+                        "not valid: the set is not compatible, out of the verdict"
+                    };
+                    lines.push(format!(
+                        "{} ({what}: mean/code {}–{} over {}–{} s, outside 0.9–1.3, NTC 2018 §3.2.3.6)",
+                        check_line(c),
+                        sig(ratios.least_ratio, 3),
+                        sig(ratios.greatest_ratio, 3),
+                        sig(range.0, 3),
+                        sig(range.1, 3)
+                    ));
+                    if done.accept_incompatible_set {
+                        eprintln!(
+                            "warning: {}: the {} non-linear dynamic check's record set is not compatible with the code's spectrum (NTC 2018 §3.2.3.6: mean/code {}–{}); assessment.accept_incompatible_set lets it carry the verdict",
+                            args.assessment.display(),
+                            d.limit_state,
+                            sig(ratios.least_ratio, 3),
+                            sig(ratios.greatest_ratio, 3)
+                        );
+                    }
+                }
                 Some(c) => lines.push(check_line(c)),
                 None => lines.push(format!(
                     "  {:4} {:20} could not be completed: {}",

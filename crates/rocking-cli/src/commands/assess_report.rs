@@ -540,6 +540,17 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                 COMPATIBILITY_LOWER,
                 COMPATIBILITY_UPPER
             );
+            if !c.holds {
+                let _ = writeln!(
+                    out,
+                    "<p class=\"fails\">{}</p>",
+                    if done.accept_incompatible_set {
+                        "The set is not compatible with the code's spectrum (NTC 2018 §3.2.3.6): assessment.accept_incompatible_set lets this check carry the verdict all the same."
+                    } else {
+                        "Not valid: the set is not compatible with the code's spectrum (NTC 2018 §3.2.3.6), so this check stays out of the verdict (assessment.accept_incompatible_set = true would let it in, with a warning)."
+                    }
+                );
+            }
             let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
             // A stack's table: one max d* column per mechanism under a shared
             // head, a fall marked in its cell, so that the five blocks a tower

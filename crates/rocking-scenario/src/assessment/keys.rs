@@ -237,6 +237,15 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
     )
     .choices(&["linear_kinematic", "nonlinear_kinematic", "nonlinear_dynamic"]),
     key(
+        "assessment.accept_incompatible_set",
+        Boolean,
+        "",
+        "false",
+        "true or false",
+        "Lets a dynamic check on a record set whose mean spectrum leaves the band 0.90–1.30 of the code's (NTC 2018 §3.2.3.6) carry the verdict, with a warning; without it such a check is reported not valid.",
+        "true",
+    ),
+    key(
         "assessment.records",
         List,
         "",

@@ -35,6 +35,7 @@ pub const ASSESSMENT_KEYS: &[&str] = &[
     "free_after",
     "lambda",
     "verdict_method",
+    "accept_incompatible_set",
 ];
 /// The sections of an assessment file besides a scenario's (less `[ground]`).
 pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment"];
@@ -103,6 +104,8 @@ pub struct AssessmentFile {
     pub capacity: Capacity,
     /// The method named to carry the verdict; `None`: the most refined computed.
     pub verdict_method: Option<VerdictMethod>,
+    /// Whether a dynamic check on a set outside NTC 2018 §3.2.3.6's band may still carry the verdict.
+    pub accept_incompatible_set: bool,
     /// The records of the set, in order; empty without a set.
     pub records: Vec<SetEntry>,
     /// `units` and `dt` of the set's CSV records (as `[ground]` takes them for a CSV record).
@@ -183,6 +186,7 @@ impl AssessmentFile {
                 ("nonlinear_dynamic", VerdictMethod::NonlinearDynamic),
             ],
         )?;
+        let accept_incompatible_set = a.boolean("accept_incompatible_set")?.unwrap_or(false);
         let records = match a.get("records") {
             Some(Value::Array(items)) if items.iter().any(Value::is_table) => given_records(items)?,
             Some(v) => crate::study::glob_records("assessment", Some(v), &folder)?
@@ -237,6 +241,7 @@ impl AssessmentFile {
             q,
             capacity,
             verdict_method,
+            accept_incompatible_set,
             records,
             csv,
             csv_keys,
