@@ -119,9 +119,9 @@ pub use run::{Outcome, RunOptions};
 pub use scenario::{parse_toml, Case, Scenario, SECTIONS, TOP_LEVEL_KEYS};
 pub use simulation::{DEFAULT_DURATION, DEFAULT_G, DEFAULT_OUTPUT_DT, MAX_HISTORY_ROWS};
 pub use study::{
-    fit as fit_fragility, fit_until as fit_fragility_until, log_likelihood, pga, pgv, probability as fragility_probability, Fit, LimitState, Measure, Stripe,
-    Study, StudyRecord, Tally, Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER, FRACTIONS_HEADER, FRAGILITY_HEADER, INTERRUPTED as FIT_INTERRUPTED,
-    METHOD as FIT_METHOD, STUDY_KEYS,
+    fit as fit_fragility, fit_until as fit_fragility_until, log_likelihood, pga, pgv, probability as fragility_probability, Fit, LimitState, Measure, Risk,
+    Stripe, Study, StudyRecord, StudySite, Tally, Threshold, CASE_COLUMNS, DEFAULT_FREE_AFTER, FIFTY_YEARS, FRACTIONS_HEADER, FRAGILITY_HEADER, HAZARD_HEADER,
+    INTERRUPTED as FIT_INTERRUPTED, METHOD as FIT_METHOD, RISK_HEADER, STUDY_KEYS,
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
 pub use sweep::{

@@ -25,6 +25,20 @@ pub const STRIPES_CSV: &str = "stripes.csv";
 pub const FRAGILITY_CSV: &str = "fragility.csv";
 /// One row per limit state and level: the observed fraction.
 pub const FRACTIONS_CSV: &str = "fractions.csv";
+/// With a `[site]`: the site's hazard curve, one row per return period of the grid.
+pub const HAZARD_CSV: &str = "hazard.csv";
+/// With a `[site]`: one row per limit state, its mean annual frequency over the hazard curve.
+pub const RISK_CSV: &str = "risk.csv";
+
+/// The files of the fits: `fragility.csv`, `fractions.csv`, and with a site `hazard.csv`, `risk.csv`.
+fn fit_files(study: &Study, tally: &rocking_scenario::Tally, fits: &[rocking_scenario::Fit]) -> Vec<(&'static str, String)> {
+    let mut files = vec![(FRAGILITY_CSV, tally.fragility_csv(fits)), (FRACTIONS_CSV, tally.fractions_csv())];
+    if let Some(site) = study.site() {
+        files.push((HAZARD_CSV, site.hazard_csv()));
+        files.push((RISK_CSV, site.risk_csv(study.limit_states(), fits)));
+    }
+    files
+}
 
 /// Arguments of `rocking fragility`.
 #[derive(Debug, clap::Args)]
@@ -72,7 +86,7 @@ pub fn fit_merged(study: &Study, stripes: &Path, out: &Path) -> anyhow::Result<V
     }
     let fits = tally.fits();
     let mut written = Vec::new();
-    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
+    for (name, text) in fit_files(study, &tally, &fits) {
         let target = out.join(name);
         let temp = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
@@ -95,7 +109,10 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let study = Study::from_toml_str(&text, &args.study)?;
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.study));
     let stripes_path = dir.join(STRIPES_CSV);
-    let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV, SHARD_JSON].iter().map(|f| dir.join(f)).collect();
+    let mut outputs: Vec<PathBuf> = [STRIPES_CSV, FRAGILITY_CSV, FRACTIONS_CSV, HAZARD_CSV, RISK_CSV, SHARD_JSON]
+        .iter()
+        .map(|f| dir.join(f))
+        .collect();
     if args.plot {
         outputs.extend(["ida.svg", "ida.png", "fragility.svg", "fragility.png"].iter().map(|f| dir.join(f)));
     }
@@ -179,7 +196,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     if interrupted.load(Ordering::Relaxed) {
         return Err(Interrupted::keep(staging, done.written, study.len(), stripes_path, "cases"));
     }
-    for (name, text) in [(FRAGILITY_CSV, tally.fragility_csv(&fits)), (FRACTIONS_CSV, tally.fractions_csv())] {
+    for (name, text) in fit_files(&study, &tally, &fits) {
         std::fs::write(staging.path(name), text).with_context(|| format!("cannot write {}", dir.join(name).display()))?;
     }
 
@@ -211,6 +228,24 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
             _ => format!("  {}: {}", state.name, fit.method),
         });
     }
+    if let Some(site) = study.site() {
+        for (state, fit) in study.limit_states().iter().zip(&fits) {
+            if let (Some(m), Some(b)) = (fit.median, fit.beta) {
+                let r = site.risk(m, b);
+                lines.push(format!(
+                    "  {} at the site: {} per year (return period {} years), {} in 50 years{}",
+                    state.name,
+                    sig(r.frequency.annual_frequency, 4),
+                    sig(r.return_period, 4),
+                    sig(r.probability_50y, 3),
+                    match (site.reference_period, r.probability_reference) {
+                        (Some(vr), Some(p)) => format!(", {} in VN·CU = {} years", sig(p, 3), sig(vr, 4)),
+                        _ => String::new(),
+                    }
+                ));
+            }
+        }
+    }
     if args.verbose {
         lines.push(format!(
             "  {} threads, {} ms per case ({} ms of one thread's time)",
@@ -222,7 +257,15 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
             lines.push(format!("  peak memory (VmHWM) {} MB", sig(kb as f64 / 1024.0, 3)));
         }
     }
-    lines.push(format!("wrote {STRIPES_CSV}, {FRAGILITY_CSV}, {FRACTIONS_CSV} in {}", dir.display()));
+    let risk_files = if study.site().is_some() {
+        format!(", {HAZARD_CSV}, {RISK_CSV}")
+    } else {
+        String::new()
+    };
+    lines.push(format!(
+        "wrote {STRIPES_CSV}, {FRAGILITY_CSV}, {FRACTIONS_CSV}{risk_files} in {}",
+        dir.display()
+    ));
     if args.plot {
         let figures = StudyFigures {
             title: study.name().to_string(),

@@ -33,7 +33,7 @@ use tempfile::TempDir;
 /// Every file name this tool writes into an output folder: a manifest's
 /// entry is removed only if it is one of these (a manifest edited by hand
 /// cannot make a run remove another file).
-pub const KNOWN: [&str; 41] = [
+pub const KNOWN: [&str; 43] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -50,6 +50,8 @@ pub const KNOWN: [&str; 41] = [
     "stripes.csv",
     "fragility.csv",
     "fractions.csv",
+    "hazard.csv",
+    "risk.csv",
     "ida.svg",
     "ida.png",
     "fragility.svg",

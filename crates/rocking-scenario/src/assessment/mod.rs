@@ -10,6 +10,7 @@
 mod columns;
 mod keys;
 mod site;
+pub(crate) use site::parse as parse_site;
 
 pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, same_record_twice, SpectrumColumn, SpectrumKind};
 pub use keys::ASSESSMENT_KEY_DOCS;

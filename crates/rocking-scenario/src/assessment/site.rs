@@ -96,6 +96,8 @@ pub struct Site {
     pub source: SiteSource,
     /// Each limit state's elastic spectrum at 5% damping, in the code's order.
     pub spectra: Vec<(LimitState, CodeSpectrum)>,
+    /// The site parameters at the grid's nine return periods, when from a grid (a study's hazard curve).
+    pub hazard: Option<rocking_codes::SiteHazard>,
 }
 
 impl Site {
@@ -150,6 +152,7 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
             }
         }
     }
+    let mut kept_hazard = None;
     let spectra = match code {
         Code::Ntc2018 => {
             other_code("spectrum_type")?;
@@ -173,6 +176,7 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
                         ));
                     }
                     let (hazard, nominal_life, use_coefficient, source) = grid_site(&site, path, folder, grids)?;
+                    kept_hazard = Some(hazard);
                     // The checks' limit states.
                     [LimitState::Sld, LimitState::Slv, LimitState::Slc]
                         .into_iter()
@@ -237,7 +241,13 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
             ErrorKind::Missing(format!("give the site parameters: {}{grid}", names.join(", "))),
         ));
     }
-    Ok(Site { code, soil, source, spectra })
+    Ok(Site {
+        code,
+        soil,
+        source,
+        spectra,
+        hazard: kept_hazard,
+    })
 }
 
 /// The dotted name of a limit state's table.

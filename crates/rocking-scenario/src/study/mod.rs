@@ -12,10 +12,12 @@
 mod fit;
 mod limit;
 mod measure;
+mod risk;
 
 pub use fit::{fit, fit_until, log_likelihood, probability, Fit, Stripe, INTERRUPTED, METHOD};
 pub use limit::{LimitState, Tally, Threshold, FRACTIONS_HEADER, FRAGILITY_HEADER};
 pub use measure::{pga, pgv, Measure};
+pub use risk::{Risk, StudySite, FIFTY_YEARS, HAZARD_HEADER, RISK_HEADER};
 
 use crate::error::{closest, ErrorKind, Fault};
 use crate::ground::RecordCache;
@@ -70,6 +72,7 @@ pub struct Study {
     limit_states: Vec<LimitState>,
     summary_keys: Vec<String>,
     cache: RecordCache,
+    site: Option<StudySite>,
 }
 
 impl Study {
@@ -114,6 +117,7 @@ impl Study {
                 ErrorKind::NotApplicable("a study takes its ground motions from study.records: remove [ground]".into()),
             )));
         }
+        let site_table = table.remove("site");
         let simulation = match table.get("simulation") {
             Some(Value::Table(t)) => Some(t),
             _ => None,
@@ -154,6 +158,7 @@ impl Study {
         let limit_states = limit::parse(study.get("limit_state"), &template).map_err(fail)?;
         let ground_keys = ground_keys(&study).map_err(fail)?;
         let folder = origin.parent().unwrap_or(Path::new("")).to_path_buf();
+        let site = site_table.map(|v| risk::parse(&v, &folder, measure)).transpose().map_err(fail)?;
         let paths = glob_records("study", study.get("records"), &folder).map_err(fail)?;
         // Counted before a record is read: records × levels cases.
         let max_cases = parse_max_cases(&study).map_err(fail)?;
@@ -183,6 +188,7 @@ impl Study {
             limit_states,
             summary_keys: template.into_iter().map(|(k, _)| k).collect(),
             cache: RecordCache::default(),
+            site,
         };
         for path in paths {
             let record = this.read_record(path, &ground_keys, &folder)?;
@@ -362,6 +368,10 @@ impl Study {
     /// The limit states, in file order.
     pub fn limit_states(&self) -> &[LimitState] {
         &self.limit_states
+    }
+    /// The site and its hazard curve, when the study names one (`[site]`).
+    pub fn site(&self) -> Option<&StudySite> {
+        self.site.as_ref()
     }
 
     /// The columns of `stripes.csv`: `record`, `level`, `scale`, the scalar
