@@ -255,12 +255,25 @@ class Fragility:
             fit, when there is none).
         fractions: The columns of ``fractions.csv``: ``limit_state``, ``level``,
             ``cases``, ``exceeded``, one entry per limit state and level.
+        hazard: With a ``[site]``, the columns of ``hazard.csv`` (the site's
+            hazard curve of surface PGA at the grid's nine return periods); else ``None``.
+        risk: With a ``[site]``, the columns of ``risk.csv`` (each limit state's
+            mean annual frequency of exceedance, ``NaN`` where no fit exists); else ``None``.
     """
 
-    def __init__(self, stripes: Dict[str, "np.ndarray"], fragility: Dict[str, "np.ndarray"], fractions: Dict[str, "np.ndarray"]) -> None:
+    def __init__(
+        self,
+        stripes: Dict[str, "np.ndarray"],
+        fragility: Dict[str, "np.ndarray"],
+        fractions: Dict[str, "np.ndarray"],
+        hazard: Optional[Dict[str, "np.ndarray"]] = None,
+        risk: Optional[Dict[str, "np.ndarray"]] = None,
+    ) -> None:
         self.stripes = stripes
         self.fragility = fragility
         self.fractions = fractions
+        self.hazard = hazard
+        self.risk = risk
 
     def __repr__(self) -> str:
         n = len(next(iter(self.stripes.values()))) if self.stripes else 0
@@ -286,7 +299,7 @@ def fragility(study: Union[str, "os.PathLike[str]", Mapping[str, Any]], *, threa
         KeyboardInterrupt: Ctrl-C stops the study (the cases under way stop at their next event).
     """
     raw = _fragility_raw(study, threads)
-    return Fragility(raw["stripes"], raw["fragility"], raw["fractions"])
+    return Fragility(raw["stripes"], raw["fragility"], raw["fractions"], raw.get("hazard"), raw.get("risk"))
 
 
 PathLike = Union[str, "os.PathLike[str]"]

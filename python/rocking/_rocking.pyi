@@ -99,7 +99,7 @@ def sweep_file_len_raw(path: Union[str, "os.PathLike[str]"], text: Optional[str]
 def fragility_raw(
     study: Union[str, "os.PathLike[str]", Mapping[str, Any]], threads: Optional[int] = None
 ) -> Dict[str, Dict[str, "np.ndarray"]]:
-    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns; see ``rocking.fragility``.
+    """Runs a fragility study with the GIL released: ``{"stripes", "fragility", "fractions"}`` columns (and ``"hazard"``, ``"risk"`` with a ``[site]``); see ``rocking.fragility``.
 
     Raises ``FileNotFoundError``/``OSError`` (a file cannot be read), ``ValueError`` (bad input).
     """

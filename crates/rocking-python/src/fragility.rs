@@ -15,7 +15,8 @@ use std::path::{Path, PathBuf};
 /// Runs a study given as the path of a study file or as a dict with its keys
 /// (relative record patterns then resolve against the current directory).
 /// Returns `{"stripes": {column: array}, "fragility": {column: array},
-/// "fractions": {column: array}}`.
+/// "fractions": {column: array}}`, and with a `[site]` also `"hazard"` and
+/// `"risk"` (the columns of hazard.csv and risk.csv).
 #[pyfunction]
 #[pyo3(signature = (study, threads=None))]
 pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: Option<i64>) -> PyResult<Bound<'py, PyDict>> {
@@ -83,5 +84,32 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
     out.set_item("stripes", stripes)?;
     out.set_item("fragility", fragility)?;
     out.set_item("fractions", fractions)?;
+    // With a [site]: the hazard curve and each limit state's risk (NaN where no fit), as hazard.csv and risk.csv.
+    if let Some(site) = study.site() {
+        let points = site.curve.points();
+        let hazard = PyDict::new(py);
+        hazard.set_item("return_period_years", floats(py, points.iter().map(|p| p.return_period).collect()))?;
+        hazard.set_item("ag_g", floats(py, points.iter().map(|p| p.ag).collect()))?;
+        hazard.set_item("S", floats(py, points.iter().map(|p| p.s).collect()))?;
+        hazard.set_item("pga_g", floats(py, points.iter().map(|p| p.pga).collect()))?;
+        hazard.set_item("annual_frequency", floats(py, points.iter().map(|p| p.annual_frequency).collect()))?;
+        let risks: Vec<Option<rocking_scenario::Risk>> = fits.iter().map(|f| f.median.zip(f.beta).map(|(m, b)| site.risk(m, b))).collect();
+        let of = |value: &dyn Fn(&rocking_scenario::Risk) -> Option<f64>| -> Vec<f64> {
+            risks.iter().map(|r| r.as_ref().and_then(value).unwrap_or(f64::NAN)).collect()
+        };
+        let risk = PyDict::new(py);
+        risk.set_item("limit_state", text(py, states.iter().map(|s| s.name.clone()).collect()))?;
+        risk.set_item("median", floats(py, fits.iter().map(|f| f.median.unwrap_or(f64::NAN)).collect()))?;
+        risk.set_item("beta", floats(py, fits.iter().map(|f| f.beta.unwrap_or(f64::NAN)).collect()))?;
+        risk.set_item("annual_frequency", floats(py, of(&|r| Some(r.frequency.annual_frequency))))?;
+        risk.set_item("return_period_years", floats(py, of(&|r| Some(r.return_period))))?;
+        risk.set_item("probability_50y", floats(py, of(&|r| Some(r.probability_50y))))?;
+        risk.set_item("reference_period_years", floats(py, of(&|_| site.reference_period)))?;
+        risk.set_item("probability_VR", floats(py, of(&|r| r.probability_reference)))?;
+        risk.set_item("share_below_30y", floats(py, of(&|r| Some(r.frequency.share_below))))?;
+        risk.set_item("share_above_2475y", floats(py, of(&|r| Some(r.frequency.share_above))))?;
+        out.set_item("hazard", hazard)?;
+        out.set_item("risk", risk)?;
+    }
     Ok(out)
 }
