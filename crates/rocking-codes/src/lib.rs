@@ -46,6 +46,7 @@ mod ec8;
 mod elastic;
 mod error;
 mod fit;
+mod floor;
 mod grid;
 mod hazard;
 mod ntc;
@@ -61,6 +62,10 @@ pub use error::Error;
 pub use fit::{
     compatibility, default_period_range, fit_record_set, fitted_scale, periods_in_range, set_rule, Compatibility, FittedSet, SetRule, COMPATIBILITY_LOWER,
     COMPATIBILITY_UPPER, DEFAULT_RANGE_FROM, DEFAULT_RANGE_TO, MIN_RECORDS, RECORDS_FOR_MEAN,
+};
+pub use floor::{
+    ec8_floor_spectrum, floor_acceleration, floor_amplification, floor_spectrum, modal_floor_acceleration, modal_floor_spectrum, FLOOR_PLATEAU_END,
+    FLOOR_PLATEAU_START,
 };
 pub use grid::{
     great_circle_distance_km, inverse_distance_weighting, log_log_interpolation, GridNode, HazardGrid, SiteHazard, EARTH_RADIUS_KM, GRID_RETURN_PERIODS,
