@@ -1002,8 +1002,10 @@ pub fn outputs_markdown_of(history: &[Column<Sample>], points: &[PointColumn], e
     out.push_str(
         "\nWith `[[block]]` the tower's fields are those of the tower (block 1) in the stack, and `overturned` is true when any block overturned. \
          The derived quantities (`alpha_rad` … `uplift_acceleration_g`) are the tower's alone; `rocking check` prints the ground acceleration \
-         that lifts each interface of the stack. The peaks of θ are located by root finding; the top's acceleration, the friction demands \
-         and the slip's peak are read at the ends of sixteen equal parts of every step and at every event.\n",
+         that lifts each interface of the stack. The peaks of θ are located by root finding; the top's acceleration and the friction \
+         demands at the ends of every step and at their extrema inside it, located on their exact time derivatives (an event's instant \
+         in the regime that holds after it: a regime that another event ends at the same instant, as an impact that at once sets the \
+         building sliding, is not read); the slip's peak at the ends of every step and at every event.\n",
     );
     out
 }
