@@ -19,7 +19,7 @@
 //! Exit status: 0 on success, 1 on an input or physics error (one line on
 //! stderr naming the file, the key and what is wrong), 2 on bad usage, 130
 //! when a sweep or a study is interrupted by Ctrl-C (after writing the rows finished) or
-//! a run is (writing nothing).
+//! a run, an assessment or an inventory is (writing nothing); 143 for SIGTERM, 129 for SIGHUP.
 
 mod commands;
 mod format;
@@ -86,7 +86,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if e.is::<commands::sweep::Interrupted>() || e.is::<commands::run::Interrupted>() => {
             eprintln!("{e}");
-            ExitCode::from(130)
+            ExitCode::from(crate::signals::exit_status())
         }
         Err(e) => {
             eprintln!("error: {e:#}");

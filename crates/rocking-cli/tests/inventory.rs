@@ -8,7 +8,7 @@ use crate::util::{arg, assert_shards_merge_to_whole, csv_table, read, rocking, r
 use std::path::Path;
 
 /// The town's assessment file: its own tower, subsoil B, the synthetic grid at `lon`, `lat`.
-fn base(grid: &Path) -> String {
+pub fn base(grid: &Path) -> String {
     format!(
         "[tower]\nwidth = 4.5\nheight = 24.0\nmass = 4.0e5\n\n[site]\nsoil = \"B\"\ngrid = '{}'\nlon = 14.33\nlat = 41.07\nCU = 1.5\n\n[assessment]\nconfidence_factor = 1.35\n",
         grid.display()
@@ -277,79 +277,4 @@ fn with_a_record_set_the_dynamic_checks_are_those_of_rocking_assess() {
     };
     assert_row_is_assess(&header, &rows[0], &assess(dir.path(), "a", &file(3.6, 30.0, "B", 14.34, 41.06)));
     assert_row_is_assess(&header, &rows[1], &assess(dir.path(), "b", &file(5.0, 20.0, "C", 14.41, 41.10)));
-}
-
-/// Ctrl-C while the towers run: the command ends with 130, after the towers
-/// under way, keeping the rows finished (complete, the first ones in input
-/// order), their own assessments (`--details`) and an `inventory.geojson` of
-/// those towers, and no staging folder. Told without a clock: the signal goes
-/// once the first tower's own assessment is on disk (`--details` writes it as
-/// the tower ends; the rows are buffered), with 29 towers of the dynamic
-/// checks still to go, and the output shows the stop: fewer rows than towers,
-/// and the command's last line says how many.
-#[cfg(unix)]
-#[test]
-fn ctrl_c_keeps_the_towers_finished() {
-    use std::time::Duration;
-    // Only a guard against a hang: no test waits this long unless the command is stuck.
-    let hang = Duration::from_secs(600);
-    let dir = tempdir();
-    let grid = root().join("data/hazard/synthetic_grid.txt");
-    let records = root().join("data/records/synthetic");
-    let assessment = format!(
-        "[assessment]\nconfidence_factor = 1.35\nrecords = ['{0}/kt_01.AT2', '{0}/kt_02.AT2', '{0}/kt_03.AT2']\n",
-        records.display()
-    );
-    let assess_file = write(
-        dir.path(),
-        "town.toml",
-        &base(&grid).replace("[assessment]\nconfidence_factor = 1.35\n", &assessment),
-    );
-    let towers_count = 30;
-    let rows: String = (0..towers_count).map(|i| format!("T{i:02},,14.{},41.06\n", 34 + i % 10)).collect();
-    let towers = write(dir.path(), "towers.csv", &format!("id,name,lon,lat\n{rows}"));
-    let out = dir.path().join("out");
-    let args = [
-        "inventory",
-        arg(&towers),
-        "--assess",
-        arg(&assess_file),
-        "--out",
-        arg(&out),
-        "--threads",
-        "2",
-        "--details",
-    ];
-    // Interrupted once the first tower has ended.
-    let first_tower = |staging: &Path| staging.join("towers").join("T00").join("report.html").exists();
-    let r = crate::util::interrupted(&args, &out, "-INT", hang, first_tower);
-    let stderr = r.stderr;
-    assert_eq!(r.code, Some(130), "{stderr}");
-    let (header, rows) = inventory_csv(&out);
-    // Stopped before its end, as the output shows: fewer rows than towers, and the last line says so.
-    assert!(!rows.is_empty() && rows.len() < towers_count, "{} rows", rows.len());
-    assert!(
-        stderr.contains(&format!("interrupted: wrote {} of {towers_count} towers", rows.len())),
-        "{stderr}"
-    );
-    for (i, row) in rows.iter().enumerate() {
-        assert_eq!(cell(&header, row, "id"), format!("T{i:02}"));
-        assert!(!cell(&header, row, "SLC_nonlinear_dynamic_zeta_E").is_empty(), "row {i} incomplete");
-        assert!(
-            out.join("towers").join(format!("T{i:02}")).join("report.html").exists(),
-            "row {i} without its assessment"
-        );
-    }
-    let parsed: geojson::GeoJson = read(&out.join("inventory.geojson")).parse().unwrap_or_else(|e| panic!("{e}"));
-    let geojson::GeoJson::FeatureCollection(collection) = parsed else {
-        panic!("not a FeatureCollection")
-    };
-    assert_eq!(collection.features.len(), rows.len());
-    // The staging folder moved into place: nothing of it is left.
-    let left: Vec<_> = std::fs::read_dir(&out)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .flatten()
-        .filter(|e| e.file_name().to_string_lossy().starts_with(".rocking-partial-"))
-        .collect();
-    assert!(left.is_empty(), "{left:?}");
 }

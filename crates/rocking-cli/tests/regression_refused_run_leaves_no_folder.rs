@@ -109,35 +109,33 @@ fn a_refused_merge_leaves_no_output_folder() {
     assert!(!out.exists(), "{:?}", names(dir.path()));
 }
 
-/// A second Ctrl-C ends the process at once: its staging folder was removed,
-/// the output folder it had made was left, empty. Both go now.
+/// A second signal ends the process at once: its staging folder was removed,
+/// the output folder it had made was left, empty. Both go now. Told without
+/// a clock: the sweep is stopped (SIGSTOP) while SIGINT and SIGTERM are sent,
+/// so that both are pending when it goes on (SIGCONT) and its handler reads
+/// them one after the other, before the cases the first one stops can end.
 #[cfg(unix)]
 #[test]
-fn a_second_ctrl_c_leaves_no_output_folder() {
+fn a_second_signal_leaves_no_output_folder() {
     use std::process::{Command, Stdio};
     use std::time::Duration;
     let dir = tempdir();
-    synthetic_records(dir.path(), "records");
-    // A λ scan of 800 values over three records at two limit states: 4,800
-    // runs, minutes for the one tower, which the first Ctrl-C lets finish.
-    let text = tower_on_b() + "records = [\"records/*.AT2\"]\nlambda = { from = 0.01, to = 8.0, step = 0.01 }\n";
-    let assess = write(dir.path(), "assess.toml", &text);
-    let towers = write(dir.path(), "towers.csv", "id,lon,lat\nA,14.4,41.0\n");
+    let file = write(dir.path(), "long.toml", crate::regression_interrupted_sweep::LONG);
     let out = dir.path().join("new/out");
     let mut child = Command::new(env!("CARGO_BIN_EXE_rocking"))
-        .args(["inventory", arg(&towers), "--assess", arg(&assess), "--out", arg(&out), "--threads", "1"])
+        .args(["sweep", arg(&file), "--out", arg(&out), "--threads", "2"])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("cannot start rocking: {e}"));
     let limit = Duration::from_secs(60);
     assert!(crate::util::staging_folder(&out, limit).is_some(), "no staging folder in {limit:?}");
-    for _ in 0..2 {
-        let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status();
-        assert!(kill.is_ok_and(|s| s.success()), "cannot send SIGINT");
-        std::thread::sleep(Duration::from_millis(200));
+    for signal in ["-STOP", "-INT", "-TERM", "-CONT"] {
+        let kill = Command::new("kill").args([signal, &child.id().to_string()]).status();
+        assert!(kill.is_ok_and(|s| s.success()), "cannot send {signal}");
     }
-    let (code, stderr) = crate::util::wait_exit(&mut child, limit, "a second SIGINT");
+    let (code, stderr) = crate::util::wait_exit(&mut child, limit, "SIGINT and SIGTERM");
+    // The status of the first signal: pending signals are delivered lowest number first (SIGINT, 2).
     assert_eq!(code, Some(130), "{stderr}");
     assert!(stderr.contains("interrupted twice: stopping now, nothing written"), "{stderr}");
     assert!(!dir.path().join("new").exists(), "{:?}", names(dir.path()));

@@ -20,6 +20,7 @@ mod regression_csv_injection;
 mod regression_fragility_with_blocks;
 mod regression_interrupted_sweep;
 mod regression_inventory_block_columns;
+mod regression_inventory_interrupted;
 mod regression_inventory_no_tower_assessed;
 mod regression_merge_bounds;
 mod regression_merge_into_a_used_folder;

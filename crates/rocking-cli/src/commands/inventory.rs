@@ -87,6 +87,9 @@ fn inventory_fingerprint(towers: &[u8], assess: &[u8]) -> String {
 
 /// Assesses the towers and writes the files.
 pub fn execute(args: &Args) -> anyhow::Result<()> {
+    // A signal: the output folder left as it was (a town cut short must not replace the last
+    // whole one), exit 130 for Ctrl-C, 143 for SIGTERM.
+    crate::signals::stop_at_once();
     let started = std::time::Instant::now();
     let text = std::fs::read_to_string(&args.assess).with_context(|| format!("cannot read {}", args.assess.display()))?;
     let file = &args.towers;
