@@ -9,6 +9,7 @@ use crate::input::AssessmentInput;
 use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv, verdict_json};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, PoisonError};
 
 /// The outcome of an assessment.
@@ -83,6 +84,19 @@ impl Assessment {
     /// record's run of the dynamic checks, in order (`done` is 1, 2, 3, …):
     /// the runs done, and the most there can be ([`most_runs`] of each check).
     pub fn run_observed(input: &AssessmentInput, cache: &RecordCache, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Self, Error> {
+        let done = Self::run_until(input, cache, progress, &AtomicBool::new(false))?;
+        Ok(done.expect("an assessment never halted ends"))
+    }
+
+    /// As [`Assessment::run_observed`], stopped once `halted` is set (Ctrl-C
+    /// in the Python package): no record's run begins after it, and the
+    /// assessment is `None`, whatever it had done.
+    pub fn run_until(
+        input: &AssessmentInput,
+        cache: &RecordCache,
+        progress: &(dyn Fn(usize, usize) + Sync),
+        halted: &AtomicBool,
+    ) -> Result<Option<Self>, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
         let mut blocks = (1..=input.blocks().len())
@@ -117,7 +131,7 @@ impl Assessment {
             };
             let mut per_role = roles
                 .into_iter()
-                .map(|role| dynamic_checks_ticking(input, &set, &mechanisms, role, &tick))
+                .map(|role| dynamic_checks_ticking(input, &set, &mechanisms, role, &tick, halted))
                 .collect::<Result<Vec<_>, _>>()?;
             // Regrouped by mechanism: the tower's first, then each block's.
             let mut by_mechanism: Vec<Vec<DynamicCheck>> = (0..mechanisms.len()).map(|_| Vec::new()).collect();
@@ -133,7 +147,10 @@ impl Assessment {
             }
             (Some(set), tower)
         };
-        Ok(Self {
+        if halted.load(Ordering::Relaxed) {
+            return Ok(None);
+        }
+        Ok(Some(Self {
             capacity,
             checks,
             set,
@@ -141,7 +158,7 @@ impl Assessment {
             blocks,
             verdict_method: input.verdict_method(),
             accept_incompatible_set: input.file.accept_incompatible_set,
-        })
+        }))
     }
 
     /// Every mechanism: the tower's, then each block's.

@@ -29,6 +29,7 @@ use rayon::prelude::*;
 use rocking::{GroundMotion, Record};
 use rocking_codes::{default_period_range, fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT};
 use rocking_scenario::{Case, Error, Fault, RecordCache, RunOptions, Scenario};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The bisection of λ stops when the bracket is this narrow.
 pub const LAMBDA_TOLERANCE: f64 = 1e-3;
@@ -316,18 +317,32 @@ struct Control<'a> {
 }
 
 /// Runs of the set, one per (λ, record) pair in parallel: each run's responses, per mechanism.
-fn runs(set: &RecordSet, scales: &[f64], lambdas: &[f64], controls: &[Control<'_>], tick: Tick<'_>) -> Vec<Result<Vec<RecordResponse>, String>> {
+/// Once `halted` is set the runs not yet begun are not run (each an error saying so).
+fn runs(
+    set: &RecordSet,
+    scales: &[f64],
+    lambdas: &[f64],
+    controls: &[Control<'_>],
+    tick: Tick<'_>,
+    halted: &AtomicBool,
+) -> Vec<Result<Vec<RecordResponse>, String>> {
     let n = scales.len();
     let mechanisms: Vec<(usize, &Capacity)> = controls.iter().map(|c| (c.block, c.capacity)).collect();
     (0..lambdas.len() * n)
         .into_par_iter()
         .map(|k| {
+            if halted.load(Ordering::Relaxed) {
+                return Err(HALTED.to_string());
+            }
             let r = set.run_mechanisms(k % n, lambdas[k / n] * scales[k % n], &mechanisms);
             tick();
             r
         })
         .collect()
 }
+
+/// The error of a run that [`runs`] did not begin because it was halted.
+const HALTED: &str = "stopped before it began";
 
 /// The points of mechanism `m` of the runs at `lambdas` (in the order of [`runs`]).
 fn points(runs: &[Result<Vec<RecordResponse>, String>], lambdas: &[f64], m: usize, rule: SetRule, control: Control<'_>) -> Vec<LambdaPoint> {
@@ -370,19 +385,22 @@ pub fn dynamic_check(input: &AssessmentInput, set: &RecordSet, capacity: &Capaci
 
 /// As [`dynamic_check`], `tick` told after each record's run (at most [`most_runs`]).
 pub fn dynamic_check_ticking(input: &AssessmentInput, set: &RecordSet, capacity: &Capacity, role: Role, tick: Tick<'_>) -> Result<DynamicCheck, Error> {
-    Ok(dynamic_checks_ticking(input, set, &[(0, capacity)], role, tick)?.remove(0))
+    Ok(dynamic_checks_ticking(input, set, &[(0, capacity)], role, tick, &AtomicBool::new(false))?.remove(0))
 }
 
 /// The non-linear dynamic checks of the life-safety or collapse state `role`
 /// of several mechanisms on the same runs, each `(k, capacity)` with its
 /// control point block `k`'s θ (0 the tower), in order; `tick` told after
-/// each record's run (at most [`most_runs_of`]).
+/// each record's run (at most [`most_runs_of`]). Once `halted` is set no
+/// further run begins and the checks are left incomplete: the caller that
+/// set it discards them.
 pub fn dynamic_checks_ticking(
     input: &AssessmentInput,
     set: &RecordSet,
     mechanisms: &[(usize, &Capacity)],
     role: Role,
     tick: Tick<'_>,
+    halted: &AtomicBool,
 ) -> Result<Vec<DynamicCheck>, Error> {
     let origin = input.origin();
     let spectrum = input.site.spectrum(role);
@@ -409,9 +427,9 @@ pub fn dynamic_checks_ticking(
     let rule = fitted.rule;
     let scales = fitted.scales.clone();
     // The set at λ = 1 and the scan: every (λ, record) pair in parallel, once for all mechanisms.
-    let at_one_runs = runs(set, &scales, &[1.0], &controls, tick);
+    let at_one_runs = runs(set, &scales, &[1.0], &controls, tick, halted);
     let lambdas = input.lambda.values();
-    let scan_runs = runs(set, &scales, &lambdas, &controls, tick);
+    let scan_runs = runs(set, &scales, &lambdas, &controls, tick, halted);
     let ag = spectrum.ag();
     let incomplete = |p: &LambdaPoint| {
         p.responses
@@ -451,7 +469,7 @@ pub fn dynamic_checks_ticking(
         if let (Some((mut lo, mut hi)), None) = (bracket, &error) {
             while hi - lo > LAMBDA_TOLERANCE {
                 let mid = 0.5 * (lo + hi);
-                let p = points(&runs(set, &scales, &[mid], &[control], tick), &[mid], 0, rule, control).remove(0);
+                let p = points(&runs(set, &scales, &[mid], &[control], tick, halted), &[mid], 0, rule, control).remove(0);
                 if !p.complete {
                     error = incomplete(&p);
                     break;

@@ -2,7 +2,8 @@
 //! spectrum`'s `spectra.csv` as NumPy arrays, computed by the same functions.
 
 use crate::convert::table_of;
-use crate::error::{file_error, scenario_error};
+use crate::error::{file_error, scenario_error, with_note};
+use crate::sweep::interruptible;
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -10,6 +11,7 @@ use pyo3::types::PyDict;
 use rocking_codes::PeriodGrid;
 use rocking_scenario::{code_spectra_columns, read_record, record_names, record_spectra_in_g, same_record_twice, AssessmentFile, ErrorKind, DEFAULT_G};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The periods `(from, to, count)`, checked, or a `ValueError` naming `periods`.
 fn periods_of(periods: (f64, f64, usize)) -> PyResult<Vec<f64>> {
@@ -26,6 +28,9 @@ fn columns<'py>(py: Python<'py>, periods: Vec<f64>, columns: Vec<(String, Vec<f6
     }
     Ok(out)
 }
+
+/// Periods whose ordinates are computed between two looks for Ctrl-C.
+const PERIODS_BETWEEN_CHECKS: usize = 16;
 
 /// The pseudo-acceleration spectra (g) of record files (format guessed, as
 /// `[ground]` reads them) at `damping` (%) and the log-spaced `periods`
@@ -51,9 +56,29 @@ pub fn spectrum_raw<'py>(py: Python<'py>, records: Vec<PathBuf>, damping: f64, p
         ErrorKind::Read { os_error, .. } => file_error(kind.to_string(), os_error),
         other => PyValueError::new_err(other.to_string()),
     })?;
-    let spectra = py
-        .detach(|| record_spectra_in_g(&read, &periods, damping, DEFAULT_G))
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    // Ctrl-C looked for between parts of the periods (each period's ordinate is its own
+    // oscillator's, so the parts join exactly): a long record over many periods stops soon.
+    let ordinates = AtomicUsize::new(0);
+    let spectra = interruptible(py, |halted| {
+        read.iter()
+            .map(|record| {
+                let mut column = Vec::with_capacity(periods.len());
+                for part in periods.chunks(PERIODS_BETWEEN_CHECKS) {
+                    if halted.load(Ordering::Relaxed) {
+                        break;
+                    }
+                    column.extend(record_spectra_in_g(std::slice::from_ref(record), part, damping, DEFAULT_G)?.concat());
+                    ordinates.fetch_add(part.len(), Ordering::Relaxed);
+                }
+                Ok(column)
+            })
+            .collect::<Result<Vec<Vec<f64>>, rocking_codes::Error>>()
+    })
+    .map_err(|interrupt| {
+        let (done, total) = (ordinates.load(Ordering::Relaxed), read.len() * periods.len());
+        with_note(py, interrupt, &format!("rocking.spectrum: stopped after {done} of {total} ordinates"))
+    })?
+    .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let names = record_names(&records.iter().map(|p| p.display().to_string()).collect::<Vec<_>>());
     columns(py, periods, names.into_iter().zip(spectra).collect())
 }
