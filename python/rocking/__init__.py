@@ -15,9 +15,11 @@ scenarios as the ``rocking`` command and gives the same numbers::
 
 Errors raise one exception per kind, each with the one-line message of the
 command line, ``file: key: what is wrong`` (``<dict>`` in place of the file
-for a dict): ``FileNotFoundError``/``OSError`` for a file that cannot be read
-(a scenario, a sweep file, a record), ``ValueError`` for bad input,
-``RuntimeError`` for a numerical failure of a run.
+for a dict), and its parts as attributes ``.file``, ``.key`` and ``.reason``
+(``None`` where it has none), so that a program need not parse the text:
+``FileNotFoundError``/``OSError`` for a file that cannot be read (a scenario,
+a sweep file, a record), :class:`InputError` (a ``ValueError``) for bad input,
+:class:`SimulationError` (a ``RuntimeError``) for a numerical failure of a run.
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ from ._rocking import DERIVED_JSON as _DERIVED_JSON
 from ._rocking import EVENT_COLUMNS as _EVENT_COLUMNS
 from ._rocking import HISTORY_COLUMNS as _HISTORY_COLUMNS
 from ._rocking import KEYS_JSON as _KEYS_JSON
-from ._rocking import Scenario, __version__
+from ._rocking import InputError, Scenario, SimulationError, __version__
 from ._rocking import assess_raw as _assess_raw
 from ._rocking import derived as _derived
 from ._rocking import fragility_raw as _fragility_raw
@@ -49,7 +51,7 @@ if TYPE_CHECKING:
     import distributed
     import pandas
 
-__all__ = ["DERIVED", "KEYS", "Assessment", "Fragility", "Result", "Scenario", "ScenarioLike", "assess", "code_spectrum", "derived", "fragility", "inventory", "run", "spectrum", "sweep", "__version__"]
+__all__ = ["DERIVED", "KEYS", "Assessment", "Fragility", "InputError", "Result", "Scenario", "ScenarioLike", "SimulationError", "assess", "code_spectrum", "derived", "fragility", "inventory", "run", "spectrum", "sweep", "__version__"]
 
 ScenarioLike = Union[Scenario, Mapping[str, Any], str, "os.PathLike[str]"]
 """A :class:`Scenario`, a dict of its keys (:meth:`Scenario.from_dict`), or the path of a TOML file (:meth:`Scenario.from_toml`)."""

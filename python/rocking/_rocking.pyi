@@ -15,11 +15,26 @@ KEYS_JSON: str
 DERIVED_JSON: str
 """The derived quantities' descriptions: ``[{"name", "unit", "meaning"}, …]``."""
 
-# Errors, one exception per kind, each with the one-line message of the command:
+# Errors, one exception per kind, each with the one-line message of the command
+# and its parts as attributes (.file, .key, .reason; None where it has none):
 #   FileNotFoundError / OSError  a file cannot be read (the scenario, a sweep file, a record)
-#   ValueError                   bad input (``file: key: what is wrong``)
-#   RuntimeError                 a numerical failure of a run
-#   KeyboardInterrupt            Ctrl-C (or the exception of the SIGINT handler) during a run or a sweep
+#   InputError (a ValueError)    bad input (``file: key: what is wrong``)
+#   SimulationError (a RuntimeError)  a numerical failure of a run
+#   KeyboardInterrupt            Ctrl-C (or the exception of the SIGINT handler) during a long call
+
+class InputError(ValueError):
+    """Bad input: ``str()`` is ``file: key: reason``, the command's line."""
+
+    file: Optional[str]
+    key: Optional[str]
+    reason: str
+
+class SimulationError(RuntimeError):
+    """A run that failed numerically: ``str()`` is the command's line."""
+
+    file: Optional[str]
+    key: Optional[str]
+    reason: str
 
 class Scenario:
     """A validated scenario: a tower, a building or both, a ground motion, initial state and settings."""

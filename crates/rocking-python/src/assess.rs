@@ -6,7 +6,7 @@
 use crate::convert::table_of;
 use crate::error::{scenario_error, with_note};
 use crate::sweep::{interruptible, thread_count};
-use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_assess::{Assessment, AssessmentInput};
@@ -25,7 +25,7 @@ pub fn assess_raw<'py>(py: Python<'py>, file: &Bound<'py, PyAny>, threads: Optio
         let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
         py.detach(|| AssessmentInput::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
     } else {
-        let table = table_of(file, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
+        let table = table_of(file, "").map_err(|u| u.error("<dict>"))?;
         py.detach(|| AssessmentInput::from_table(table, Path::new("<dict>")))
             .map_err(|e| scenario_error(&e))?
     };

@@ -20,13 +20,9 @@ pub struct Unsupported {
 }
 
 impl Unsupported {
-    /// The one-line message, `origin: key: reason` (the form of the scenario's errors).
-    pub fn message(&self, origin: &str) -> String {
-        if self.key.is_empty() {
-            format!("{origin}: {}", self.reason)
-        } else {
-            format!("{origin}: {}: {}", self.key, self.reason)
-        }
+    /// Its `InputError`, `origin: key: reason` (the form of the scenario's errors).
+    pub fn error(&self, origin: &str) -> pyo3::PyErr {
+        crate::error::input_error(Some(origin), (!self.key.is_empty()).then_some(self.key.as_str()), self.reason.clone())
     }
 }
 

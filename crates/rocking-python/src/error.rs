@@ -1,24 +1,78 @@
 //! Errors as Python exceptions, with the message the `rocking` command prints
-//! (`file: key: what is wrong`, on one line), one exception per kind as polars
-//! does: `OSError` (its subclass by the error number: `FileNotFoundError`,
-//! `PermissionError`, …) for a file that cannot be read, `ValueError` for bad
-//! input, `RuntimeError` for a numerical failure of a run, `KeyboardInterrupt`
-//! for a run stopped by Ctrl-C.
+//! (`file: key: what is wrong`, on one line), one exception class per kind as
+//! polars does, each carrying the parts of its message as attributes (`.file`,
+//! `.key`, `.reason`; `None` where the error has none), so that a program
+//! reads them without parsing the text: `OSError` (its subclass by the error
+//! number: `FileNotFoundError`, `PermissionError`, …) for a file that cannot
+//! be read, `rocking.InputError` (a `ValueError`) for bad input,
+//! `rocking.SimulationError` (a `RuntimeError`) for a numerical failure of a
+//! run, `KeyboardInterrupt` for a run stopped by Ctrl-C. The message is made
+//! from the parts in one place, `rocking_scenario::Error`'s `Display`.
 
+use pyo3::create_exception;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::PyErr;
-use rocking_scenario::ErrorKind;
+use rocking_scenario::{ErrorKind, Fault};
 use std::path::Path;
 
-/// The exception of a scenario error.
+create_exception!(
+    rocking,
+    InputError,
+    PyValueError,
+    "Bad input: a file, a key or a value the tool refuses. `.file` names the file (or the origin given for a dict), `.key` the dotted key at fault (`tower.width`; None for the whole file), `.reason` what is wrong; str() is `file: key: reason`, the command's line."
+);
+create_exception!(
+    rocking,
+    SimulationError,
+    PyRuntimeError,
+    "A run that failed numerically (its equations lost their solution, a step too small). `.file`, `.key` and `.reason` as for InputError."
+);
+
+/// The exception of a scenario error, with its parts as attributes.
 pub fn scenario_error(e: &rocking_scenario::Error) -> PyErr {
-    match e.kind() {
-        ErrorKind::Simulation(rocking::Error::Stopped { .. }) => PyKeyboardInterrupt::new_err(e.to_string()),
-        ErrorKind::Simulation(_) => PyRuntimeError::new_err(e.to_string()),
-        ErrorKind::Read { os_error, .. } => file_error(e.to_string(), *os_error),
-        _ => PyValueError::new_err(e.to_string()),
+    let message = e.to_string();
+    let err = match e.kind() {
+        ErrorKind::Simulation(rocking::Error::Stopped { .. }) => PyKeyboardInterrupt::new_err(message),
+        ErrorKind::Simulation(_) => SimulationError::new_err(message),
+        ErrorKind::Read { os_error, .. } => file_error(message, *os_error),
+        _ => InputError::new_err(message),
+    };
+    with_parts(err, Some(&e.file.display().to_string()), e.key(), &e.kind().to_string())
+}
+
+/// An `InputError` of `key` in `file` (`None`: an argument of a call, no
+/// file): its message made as a scenario error's is.
+pub fn input_error(file: Option<&str>, key: Option<&str>, reason: impl Into<String>) -> PyErr {
+    let fault = Fault {
+        key: key.map(str::to_string),
+        kind: ErrorKind::Invalid(reason.into()),
+    };
+    match file {
+        Some(file) => scenario_error(&fault.in_file(Path::new(file))),
+        None => with_parts(InputError::new_err(fault.to_string()), None, key, &fault.kind.to_string()),
     }
+}
+
+/// The `InputError` of a code's function given a value out of its range
+/// (the parameter its key), in `file` if one.
+pub fn code_error(file: Option<&str>, e: &rocking_codes::Error) -> PyErr {
+    match e {
+        rocking_codes::Error::InvalidParameter { name, reason } => input_error(file, Some(name), reason.clone()),
+        other => input_error(file, None, other.to_string()),
+    }
+}
+
+/// `err` with the attributes `file`, `key` and `reason`.
+pub fn with_parts(err: PyErr, file: Option<&str>, key: Option<&str>, reason: &str) -> PyErr {
+    Python::attach(|py| {
+        let value = err.value(py);
+        // Setting an attribute of an exception instance fails only for a class with __slots__; none here.
+        let _ = value.setattr("file", file);
+        let _ = value.setattr("key", key);
+        let _ = value.setattr("reason", reason);
+    });
+    err
 }
 
 /// The exception of a file that cannot be read: the `OSError` subclass of its
@@ -44,7 +98,8 @@ pub fn file_error(message: String, errno: Option<i32>) -> PyErr {
 /// The exception of an I/O error on `path`, with the command's message
 /// (`cannot read PATH: reason (os error N)`).
 pub fn io_error(e: &std::io::Error, path: &Path) -> PyErr {
-    file_error(format!("cannot read {}: {e}", path.display()), e.raw_os_error())
+    let err = file_error(format!("cannot read {}: {e}", path.display()), e.raw_os_error());
+    with_parts(err, Some(&path.display().to_string()), None, &format!("cannot read it: {e}"))
 }
 
 /// `err` with `note` added to its notes (`BaseException.add_note`, shown

@@ -6,7 +6,6 @@ use crate::convert::table_of;
 use crate::error::scenario_error;
 use crate::sweep::{column, gather, interruptible, thread_count, Told};
 use numpy::PyArray1;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use rocking_scenario::Study;
@@ -25,7 +24,7 @@ pub fn fragility_raw<'py>(py: Python<'py>, study: &Bound<'py, PyAny>, threads: O
         let text = rocking_scenario::file::read_text(&path, rocking_scenario::file::MAX_INPUT_BYTES).map_err(|e| crate::error::io_error(&e, &path))?;
         py.detach(|| Study::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
     } else {
-        let table = table_of(study, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
+        let table = table_of(study, "").map_err(|u| u.error("<dict>"))?;
         py.detach(|| Study::from_table(table, Path::new("<dict>"))).map_err(|e| scenario_error(&e))?
     };
 

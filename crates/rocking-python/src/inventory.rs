@@ -9,7 +9,7 @@
 use crate::convert::table_of;
 use crate::error::scenario_error;
 use crate::sweep::{column, gather, thread_count, Told};
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_assess::{calling_pool, Inventory, InventoryError};
@@ -23,7 +23,7 @@ const DICT: &str = "<dict>";
 fn inventory_error(e: &InventoryError) -> PyErr {
     match e {
         InventoryError::Assessment(e) => scenario_error(e),
-        other => PyValueError::new_err(other.to_string()),
+        other => crate::error::input_error(None, None, other.to_string()),
     }
 }
 
@@ -44,7 +44,7 @@ fn build(py: Python<'_>, towers: &Path, assess: &Bound<'_, PyAny>, towers_text: 
         let text = text_of(&path, assess_text)?;
         py.detach(|| Inventory::new(&text, &path, csv.as_bytes(), towers))
     } else {
-        let table = table_of(assess, "").map_err(|u| PyValueError::new_err(u.message(DICT)))?;
+        let table = table_of(assess, "").map_err(|u| u.error(DICT))?;
         py.detach(|| Inventory::from_table(table, Path::new(DICT), csv.as_bytes(), towers, GridCache::default()))
     }
     .map_err(|e| inventory_error(&e))

@@ -33,6 +33,8 @@ fn _rocking(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // The descriptions of the keys and of the derived quantities, as JSON text the package reads.
     m.add("KEYS_JSON", rocking_scenario::keys_json().to_string())?;
     m.add("DERIVED_JSON", rocking_scenario::columns::derived_json().to_string())?;
+    m.add("InputError", m.py().get_type::<error::InputError>())?;
+    m.add("SimulationError", m.py().get_type::<error::SimulationError>())?;
     m.add_class::<scenario::PyScenario>()?;
     m.add_function(wrap_pyfunction!(run::run_raw, m)?)?;
     m.add_function(wrap_pyfunction!(run::derived, m)?)?;

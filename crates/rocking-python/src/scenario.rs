@@ -3,7 +3,6 @@
 
 use crate::convert::{table_of, table_to_py};
 use crate::error::scenario_error;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_scenario::{get_dotted, parse_toml, set_dotted, Scenario};
@@ -72,7 +71,7 @@ impl PyScenario {
     /// Raises `ValueError` naming the key (`<dict>: tower.hieght: unknown key ...`).
     #[staticmethod]
     fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let mut table = table_of(d, "").map_err(|u| PyValueError::new_err(u.message(DICT_ORIGIN)))?;
+        let mut table = table_of(d, "").map_err(|u| u.error(DICT_ORIGIN))?;
         for key in RECORD_KEYS {
             if let Some(Value::String(file)) = get_dotted(&table, key) {
                 if Path::new(file).is_relative() {
@@ -121,7 +120,8 @@ impl PyScenario {
     /// resolves to the same file from another working directory.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String, PathBuf))> {
         let this = slf.get();
-        let text = toml::to_string(&this.table).map_err(|e| PyValueError::new_err(format!("{}: cannot pickle the scenario: {e}", this.origin.display())))?;
+        let text = toml::to_string(&this.table)
+            .map_err(|e| crate::error::input_error(Some(&this.origin.display().to_string()), None, format!("cannot pickle the scenario: {e}")))?;
         let origin = if this.origin == Path::new(DICT_ORIGIN) {
             this.origin.clone()
         } else {

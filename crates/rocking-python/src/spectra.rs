@@ -2,10 +2,9 @@
 //! spectrum`'s `spectra.csv` as NumPy arrays, computed by the same functions.
 
 use crate::convert::table_of;
-use crate::error::{file_error, scenario_error, with_note};
+use crate::error::{code_error, file_error, input_error, scenario_error, with_note};
 use crate::sweep::interruptible;
 use numpy::PyArray1;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rocking_codes::PeriodGrid;
@@ -16,7 +15,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// The periods `(from, to, count)`, checked, or a `ValueError` naming `periods`.
 fn periods_of(periods: (f64, f64, usize)) -> PyResult<Vec<f64>> {
     let (from, to, count) = periods;
-    PeriodGrid { from, to, count }.periods().map_err(|e| PyValueError::new_err(e.to_string()))
+    PeriodGrid { from, to, count }.periods().map_err(|e| code_error(None, &e))
 }
 
 /// `{"period_s": array, name: array, …}` in order.
@@ -39,22 +38,26 @@ const PERIODS_BETWEEN_CHECKS: usize = 16;
 #[pyo3(signature = (records, damping, periods))]
 pub fn spectrum_raw<'py>(py: Python<'py>, records: Vec<PathBuf>, damping: f64, periods: (f64, f64, usize)) -> PyResult<Bound<'py, PyDict>> {
     let periods = periods_of(periods)?;
-    rocking_codes::check_damping(damping).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    rocking_codes::check_damping(damping).map_err(|e| code_error(None, &e))?;
     if records.is_empty() {
-        return Err(PyValueError::new_err("records: give at least one record file"));
+        return Err(input_error(None, Some("records"), "give at least one record file"));
     }
     if let Some((i, j)) = same_record_twice(&records) {
-        return Err(PyValueError::new_err(format!(
-            "records: {} is given twice (as {} and {}): a spectrum has one column per file",
-            records[j].display(),
-            records[i].display(),
-            records[j].display()
-        )));
+        return Err(input_error(
+            None,
+            Some("records"),
+            format!(
+                "{} is given twice (as {} and {}): a spectrum has one column per file",
+                records[j].display(),
+                records[i].display(),
+                records[j].display()
+            ),
+        ));
     }
     let read = py.detach(|| records.iter().map(|p| read_record(p, DEFAULT_G)).collect::<Result<Vec<_>, ErrorKind>>());
     let read = read.map_err(|kind| match kind {
         ErrorKind::Read { os_error, .. } => file_error(kind.to_string(), os_error),
-        other => PyValueError::new_err(other.to_string()),
+        other => input_error(None, None, other.to_string()),
     })?;
     // Ctrl-C looked for between parts of the periods (each period's ordinate is its own
     // oscillator's, so the parts join exactly): a long record over many periods stops soon.
@@ -78,7 +81,7 @@ pub fn spectrum_raw<'py>(py: Python<'py>, records: Vec<PathBuf>, damping: f64, p
         let (done, total) = (ordinates.load(Ordering::Relaxed), read.len() * periods.len());
         with_note(py, interrupt, &format!("rocking.spectrum: stopped after {done} of {total} ordinates"))
     })?
-    .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    .map_err(|e| code_error(None, &e))?;
     let names = record_names(&records.iter().map(|p| p.display().to_string()).collect::<Vec<_>>());
     columns(py, periods, names.into_iter().zip(spectra).collect())
 }
@@ -94,10 +97,11 @@ pub fn code_spectrum_raw<'py>(py: Python<'py>, site: &Bound<'py, PyAny>, periods
         let text = std::fs::read_to_string(&path).map_err(|e| crate::error::io_error(&e, &path))?;
         py.detach(|| AssessmentFile::from_toml_str(&text, &path)).map_err(|e| scenario_error(&e))?
     } else {
-        let table = table_of(site, "").map_err(|u| PyValueError::new_err(u.message("<dict>")))?;
+        let table = table_of(site, "").map_err(|u| u.error("<dict>"))?;
         py.detach(|| AssessmentFile::from_table(table, Path::new("<dict>")))
             .map_err(|e| scenario_error(&e))?
     };
-    let spectra = code_spectra_columns(&file.site, &periods, file.g).map_err(|e| PyValueError::new_err(format!("{}: site: {e}", file.origin().display())))?;
+    let spectra =
+        code_spectra_columns(&file.site, &periods, file.g).map_err(|e| input_error(Some(&file.origin().display().to_string()), Some("site"), e.to_string()))?;
     columns(py, periods, spectra.into_iter().map(|c| (c.name, c.values)).collect())
 }

@@ -9,7 +9,7 @@ use crate::convert::table_of;
 use crate::error::scenario_error;
 use crate::scenario::PyScenario;
 use numpy::PyArray1;
-use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use rocking_scenario::columns::{Kind, SUMMARY, SUMMARY_BLOCKS};
@@ -55,7 +55,7 @@ pub fn sweep_len_raw(py: Python<'_>, scenario: &Bound<'_, PyScenario>, axes: &Bo
 fn build(py: Python<'_>, scenario: &Bound<'_, PyScenario>, axes: &Bound<'_, PyAny>) -> PyResult<Sweep> {
     let scenario = scenario.get();
     let origin = scenario.origin();
-    let axes = table_of(axes, "sweep").map_err(|u| PyValueError::new_err(u.message(&origin.display().to_string())))?;
+    let axes = table_of(axes, "sweep").map_err(|u| u.error(&origin.display().to_string()))?;
     let mut table = scenario.table().clone();
     table.insert("sweep".to_string(), Value::Table(axes));
     // Building the sweep parses its first cases and may read a record: without the GIL.
@@ -107,7 +107,7 @@ pub(crate) fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
         Some(n) => match usize::try_from(n) {
             // The command's limit (`--threads` takes 1..=4096).
             Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(Some(n)),
-            _ => Err(PyValueError::new_err(format!("threads: {n} is not in 1..={MAX_THREADS}"))),
+            _ => Err(crate::error::input_error(None, Some("threads"), format!("{n} is not in 1..={MAX_THREADS}"))),
         },
     }
 }
@@ -185,7 +185,12 @@ pub(crate) fn gather(
     match finished {
         Ok(_) => Ok(columns),
         Err(RunError::Stopped(e)) => Err(e),
-        Err(e) => Err(PyRuntimeError::new_err(format!("{}: {e}", origin.display()))),
+        Err(e) => Err(crate::error::with_parts(
+            crate::error::SimulationError::new_err(format!("{}: {e}", origin.display())),
+            Some(&origin.display().to_string()),
+            None,
+            &e.to_string(),
+        )),
     }
 }
 
