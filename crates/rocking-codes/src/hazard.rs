@@ -172,10 +172,24 @@ impl HazardCurve {
 
     /// `λ(a)` (1/year) at the surface PGA `a` (g, > 0).
     pub fn annual_frequency(&self, pga: f64) -> f64 {
-        let segments = self.segments();
-        let k = self.points[1..self.points.len() - 1].partition_point(|p| p.pga <= pga);
-        let (k0, slope) = segments[k];
+        let (k0, slope) = self.segment_at(pga);
         k0 * libm::pow(pga, -slope)
+    }
+
+    /// The power law `(k0, k)` of the segment that holds at `pga` (g, > 0).
+    fn segment_at(&self, pga: f64) -> (f64, f64) {
+        let k = self.points[1..self.points.len() - 1].partition_point(|p| p.pga <= pga);
+        self.segments()[k]
+    }
+
+    /// The integrand of [`HazardCurve::limit_state_frequency`] per unit of
+    /// `ln a` at the surface PGA `a` (g, > 0): `Φ(ln(a/θ)/β) |dλ/d ln a|`,
+    /// `|dλ/d ln a| = k λ(a)` on the segment's power law. Its integral over
+    /// `ln a` is `λ_LS`; divided by `λ_LS` it shows where that frequency comes
+    /// from (the risk figure).
+    pub fn limit_state_density(&self, theta: f64, beta: f64, pga: f64) -> f64 {
+        let (k0, slope) = self.segment_at(pga);
+        standard_normal_cdf(libm::log(pga / theta) / beta) * slope * k0 * libm::pow(pga, -slope)
     }
 
     /// The mean annual frequency of exceeding a limit state whose fragility is
