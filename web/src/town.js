@@ -48,7 +48,8 @@ export class TownView {
       <p class="note">Each row of a towers' CSV (<code>id</code>, <code>name</code>, <code>lon</code>, <code>lat</code> in WGS84 degrees, and any key of
       the assessment file as a column, e.g. <code>tower.width</code>, <code>soil</code>) is assessed as <code>rocking inventory</code> assesses it:
       the assessment file with the row's cells set in it, the site's hazard from the grid at the tower's place. ζ<sub>E</sub> = a<sub>g,capacity</sub> / a<sub>g</sub>;
-      a check fails when ζ<sub>E</sub> &lt; 1, and the governing check is the one of least ζ<sub>E</sub>.</p>
+      a check fails when ζ<sub>E</sub> &lt; 1. Each tower's verdict is that of the worse of its ultimate limit states, each carried by the most
+      refined method computed (non-linear dynamic, else non-linear kinematic, else linear kinematic; <code>assessment.verdict_method</code> may name another).</p>
       <div class="row">
         <label>Assessment file <select id="town-assess">${withGrid.map((a, i) => `<option value="${i}"${i === first ? " selected" : ""}>${esc(a.path)}</option>`).join("")}</select></label>
         or your own <input type="file" id="town-assess-file" accept=".toml,text/plain" aria-label="your own assessment file">
@@ -202,7 +203,7 @@ export class TownView {
     const failing = town.ranking.filter((i) => town.towers[i].zeta_E < 1).length;
     const bad = town.towers.filter((t) => t.zeta_E === null);
     $("town-summary").textContent =
-      `${town.towers.length} towers: ${assessed} assessed, ${failing} of them with a check that fails (ζ_E < 1), ${bad.length} not assessed.`;
+      `${town.towers.length} towers: ${assessed} assessed, ${failing} of them failing (verdict ζ_E < 1), ${bad.length} not assessed.`;
     if (bad.length > 0) this.showError(bad.map((t) => t.error).join("\n"));
     drawMap($("town-map"), town, `${town.towers.length} towers of ${this.towers.name}`);
     const head = `<tr><th>rank</th><th>id</th><th>name</th><th>ζ<sub>E</sub></th><th>governing check</th></tr>`;

@@ -43,7 +43,7 @@ def test_the_report_opens_and_prints_to_a4(browser, tmp_path, example):
     assert requests == [], requests
     if EXAMPLES[example] is not None:
         assert page.locator("figure svg").count() == EXAMPLES[example]
-    assert "Governing check" in page.inner_text("body")
+    assert "Verdict: " in page.inner_text("body")
     page.emulate_media(media="print")
     heights = page.eval_on_selector_all("figure", "fs => fs.map(f => f.getBoundingClientRect().height)")
     assert heights and max(heights) < PRINTABLE_HEIGHT_PX, heights
