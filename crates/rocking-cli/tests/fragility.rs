@@ -268,6 +268,41 @@ fn the_example_study_runs() {
     for f in ["ida.svg", "fragility.svg"] {
         assert!(read(&dir.path().join(f)).contains("bell tower on a sliding church"), "{f}");
     }
+    // No site, no hazard: no risk figure.
+    assert!(!dir.path().join("risk.svg").exists());
+}
+
+/// A study with a site and `--plot` draws the risk figure, whose legend gives
+/// each fitted limit state's λ_LS and its share beyond 2475 years as
+/// risk.csv has them, to the 3 significant digits it prints.
+#[test]
+fn a_study_with_a_site_draws_where_its_risk_comes_from() {
+    let dir = tempdir();
+    let r = rocking(&["fragility", "examples/fragility/risk-at-a-site.toml", "--out", arg(dir.path()), "--plot"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    assert!(dir.path().join("risk.png").exists());
+    let svg = read(&dir.path().join("risk.svg"));
+    assert!(svg.contains("bell tower on a sliding church: risk at a site"));
+    let (header, rows) = csv_table(&dir.path().join("risk.csv"));
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no {name} in risk.csv"));
+    let (name, frequency, above) = (column("limit_state"), column("annual_frequency"), column("share_above_2475y"));
+    assert_eq!(rows.len(), 3);
+    for row in &rows {
+        let label = format!("{}: λ_LS = ", row[name]);
+        let at = svg.find(&label).unwrap_or_else(|| panic!("no legend entry {label}"));
+        let rest = &svg[at + label.len()..];
+        let shown: f64 = rest.split(' ').next().and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{rest}"));
+        let expected: f64 = row[frequency].parse().unwrap_or_else(|e| panic!("{e}"));
+        // Three significant digits: within half a unit of the third.
+        assert!((shown - expected).abs() <= 5e-3 * expected, "{shown} against {expected}");
+        let share = rest
+            .split("per year, ")
+            .nth(1)
+            .and_then(|t| t.split('%').next())
+            .and_then(|t| t.parse::<f64>().ok());
+        let expected: f64 = 100.0 * row[above].parse::<f64>().unwrap_or_else(|e| panic!("{e}"));
+        assert!(share.is_some_and(|s| (s - expected).abs() <= 5e-3 * expected), "{share:?} against {expected}");
+    }
 }
 
 /// The output folder holds one run's files: a second run without `--plot`

@@ -114,7 +114,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
         .map(|f| dir.join(f))
         .collect();
     if args.plot {
-        outputs.extend(["ida.svg", "ida.png", "fragility.svg", "fragility.png"].iter().map(|f| dir.join(f)));
+        outputs.extend(
+            ["ida.svg", "ida.png", "fragility.svg", "fragility.png", "risk.svg", "risk.png"]
+                .iter()
+                .map(|f| dir.join(f)),
+        );
     }
     let mut inputs = vec![args.study.clone()];
     inputs.extend(study.inputs());
@@ -286,6 +290,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
                     fit: fits[i].median.zip(fits[i].beta),
                 })
                 .collect(),
+            site: study.site().map(|site| site.curve.clone()),
         };
         crate::plot::study_figures(staging.folder(), &figures).context("drawing the figures")?;
     }

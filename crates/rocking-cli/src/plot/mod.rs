@@ -15,6 +15,7 @@ mod ida;
 mod labels;
 mod legend;
 mod raster;
+mod risk;
 mod scale;
 mod slip;
 mod spectra;
@@ -138,6 +139,8 @@ pub struct StudyFigures {
     pub ida: Vec<IdaCurve>,
     /// One entry per limit state.
     pub states: Vec<StateCurve>,
+    /// The site's hazard curve, when the study names a site (the risk figure).
+    pub site: Option<rocking_codes::HazardCurve>,
 }
 
 /// A limit state's points and curve in the fragility figure.
@@ -162,10 +165,14 @@ impl StudyFigures {
     }
 }
 
-/// Draws the figures of a fragility study into `dir`: `ida` and `fragility` (SVG and PNG).
+/// Draws the figures of a fragility study into `dir`: `ida` and `fragility`,
+/// and `risk` with a site (SVG and PNG).
 pub fn study_figures(dir: &Path, figures: &StudyFigures) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = style::render(dir, "ida", ida::SIZE, &ida::IdaFigure(figures))?;
     files.extend(style::render(dir, "fragility", fragility::SIZE, &fragility::FragilityFigure(figures))?);
+    if let Some(curve) = &figures.site {
+        files.extend(style::render(dir, "risk", risk::SIZE, &risk::RiskFigure { study: figures, curve })?);
+    }
     Ok(files)
 }
 
