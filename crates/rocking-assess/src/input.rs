@@ -113,7 +113,7 @@ impl AssessmentInput {
                 ErrorKind::NotApplicable("a dynamic check runs each record plus assessment.free_after: remove simulation.duration".into()),
             )));
         }
-        let scenario = Scenario::from_table(with_ground(&file.scenario, none_ground(), 1.0), &origin)?;
+        let scenario = Scenario::from_table(with_ground(&file.scenario, none_ground(), 1.0, file.confidence_factor), &origin)?;
         if scenario.model().tower().is_none() {
             return Err(fail(Fault::new(
                 "tower",
@@ -211,7 +211,12 @@ impl AssessmentInput {
     /// file's folder or a text, a CSV record with the set's `units` and
     /// `dt`) and `simulation.duration` the given one.
     pub fn record_table(&self, record: &SetEntry, duration: f64) -> Result<Table, Error> {
-        Ok(with_ground(&self.file.scenario, self.file.record_ground(record)?, duration))
+        Ok(with_ground(
+            &self.file.scenario,
+            self.file.record_ground(record)?,
+            duration,
+            self.file.confidence_factor,
+        ))
     }
 
     /// The names of the blocks on the tower, the lowest first.
@@ -281,8 +286,21 @@ fn none_ground() -> Table {
 }
 
 /// The scenario table `base` with `[ground]` and `simulation.duration` set.
-fn with_ground(base: &Table, ground: Table, duration: f64) -> Table {
+/// The scenario of `base` under `ground` for `duration` s. A masonry strength
+/// `tower.compressive_strength` (f_m) becomes its design value
+/// `f_d = f_m / FC` (`confidence_factor`), the one the hinge is placed with.
+fn with_ground(base: &Table, ground: Table, duration: f64, confidence_factor: f64) -> Table {
     let mut table = base.clone();
+    if let Some(Value::Table(tower)) = table.get_mut("tower") {
+        let f_m = match tower.get("compressive_strength") {
+            Some(Value::Float(f)) => Some(*f),
+            Some(Value::Integer(i)) => Some(*i as f64),
+            _ => None,
+        };
+        if let Some(f_m) = f_m {
+            tower.insert("compressive_strength".into(), Value::Float(f_m / confidence_factor));
+        }
+    }
     table.insert("ground".into(), Value::Table(ground));
     if let Value::Table(s) = table.entry("simulation").or_insert_with(|| Value::Table(Table::new())) {
         s.insert("duration".into(), Value::Float(duration));

@@ -236,6 +236,16 @@ const TOWER_KEYS: &[KeyDoc] = &[
     .shown("t", "tower wall thickness")
     .sets(P::TowerWallThickness),
     key(
+        "tower.compressive_strength",
+        Number,
+        "MPa",
+        "none: infinitely strong, the tower rocks on its base's edges",
+        "> 0; not with radius and alpha, nor with [[block]]",
+        "Compressive strength f_m of the masonry: the tower rocks on the centroid of the strip along its base's edge that carries its weight at 0.85 f_d (f_d = f_m in a run, f_m / FC in an assessment), not on the edge.",
+        "2.0",
+    )
+    .shown("f_m", "masonry compressive strength"),
+    key(
         "tower.inertia_pivot",
         Number,
         "kg·m²",

@@ -128,3 +128,4 @@ pub use sweep::{
     csv_line, run_cases, spreadsheet_text, Axis, AxisSpec, Cases, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN,
     MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW,
 };
+pub use tower::{hinge_inset, STRESS_BLOCK_FACTOR};

@@ -144,7 +144,7 @@ impl Scenario {
         let sim = simulation::parse(section("simulation")?.as_ref())?;
         let (tower, points) = match &tower_section {
             Some(s) => {
-                let (t, p) = tower::parse(s)?;
+                let (t, p) = tower::parse(s, sim.g)?;
                 (Some(t), p)
             }
             None => (None, Vec::new()),
@@ -158,6 +158,12 @@ impl Scenario {
         }
         let (blocks, block_names) = crate::block::parse(table, tower.as_ref())?;
         if !blocks.is_empty() {
+            if tower_section.as_ref().is_some_and(|s| s.has("compressive_strength")) {
+                return Err(Fault::new(
+                    "tower.compressive_strength",
+                    ErrorKind::NotApplicable("applies to a tower alone: with [[block]] above it the blocks rock on their bases' edges (remove it)".into()),
+                ));
+            }
             if tower_section.as_ref().is_some_and(|s| s.has("restitution")) {
                 return Err(Fault::new(
                     "tower.restitution",

@@ -207,6 +207,17 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
     .shown("FC", "confidence factor")
     .placeholder("1.35"),
     key(
+        "assessment.knowledge_level",
+        Text,
+        "",
+        "none (FC as given, else 1.35)",
+        "\"LC1\", \"LC2\" or \"LC3\"",
+        "Knowledge level of the building (Circolare 2019 §C8.5.4): sets FC to 1.35, 1.2 or 1 unless confidence_factor is given.",
+        "\"LC2\"",
+    )
+    .shown("LC", "knowledge level")
+    .choices(&["LC1", "LC2", "LC3"]),
+    key(
         "assessment.q",
         Number,
         "",

@@ -27,6 +27,7 @@ use toml::{Table, Value};
 /// The keys of `[assessment]`.
 pub const ASSESSMENT_KEYS: &[&str] = &[
     "confidence_factor",
+    "knowledge_level",
     "q",
     "capacity",
     "records",
@@ -171,9 +172,11 @@ impl AssessmentFile {
         let assessment_value = table.remove("assessment");
         let a = Section::new("assessment", assessment_value.as_ref().unwrap_or(&empty))?;
         a.only(ASSESSMENT_KEYS)?;
+        // The knowledge level sets FC (Circolare 2019 §C8.5.4, Table C8.5.IV) unless FC is given.
+        let level_factor = a.choice("knowledge_level", &[("LC1", 1.35), ("LC2", 1.2), ("LC3", 1.0)])?;
         let confidence_factor = positive(
             "assessment.confidence_factor",
-            a.number("confidence_factor")?.unwrap_or(DEFAULT_CONFIDENCE_FACTOR),
+            a.number("confidence_factor")?.or(level_factor).unwrap_or(DEFAULT_CONFIDENCE_FACTOR),
         )?;
         let q = positive("assessment.q", a.number("q")?.unwrap_or(DEFAULT_Q))?;
         let capacity = a

@@ -165,6 +165,33 @@ impl Tower {
         })
     }
 
+    /// The same body rocking about two points `inset` (m) inside its base
+    /// corners, a hinge moved inward by a masonry of finite compressive
+    /// strength: its mass and its inertia about its centre of mass kept,
+    /// `b' = b − inset`, `R' = √(b'² + h²)`, `α' = atan(b'/h)`,
+    /// `I_O' = I_G + m R'²` (`I_G = I_O − m R²`), and Housner's restitution
+    /// about the new points unless `restitution` overrides it. `inset` must be
+    /// in `[0, b)`; an error otherwise.
+    pub fn with_pivot_inset(&self, inset: f64, restitution: Option<f64>) -> Result<Self, Error> {
+        let (b, h) = (self.half_width(), self.radius * libm::cos(self.alpha));
+        if !(inset.is_finite() && (0.0..b).contains(&inset)) {
+            return Err(Error::InvalidParameter {
+                parameter: Parameter::TowerRadius,
+                reason: format!("a pivot {inset} m inside the corners of a base {} m wide leaves no base to rock on", 2.0 * b),
+            });
+        }
+        let centroidal = self.inertia_pivot - self.mass * self.radius * self.radius;
+        let b_inset = b - inset;
+        let radius = libm::hypot(b_inset, h);
+        Self::from_properties(
+            self.mass,
+            centroidal + self.mass * radius * radius,
+            radius,
+            libm::atan2(b_inset, h),
+            restitution,
+        )
+    }
+
     /// Housner's coefficient of restitution of this tower's geometry,
     /// `r = 1 − 2 m R² sin²α / I_O` (whatever [`Tower::restitution`] was given).
     pub fn housner_restitution(&self) -> f64 {
@@ -218,6 +245,40 @@ fn housner_restitution(mass: f64, inertia_pivot: f64, radius: f64, alpha: f64) -
 
 #[cfg(test)]
 mod tests {
+
+    /// A solid 4 m × 12 m block (m = 1.5e5 kg) rocking on points 0.15 m inside
+    /// its corners, by hand: I_G = m (B² + H²)/12 = 1.9e6 kg·m², b' = 1.85 m,
+    /// h = 6 m, I_O' = I_G + m (b'² + h²); r = 1 − 2 m b'² / I_O'. No inset
+    /// is the block itself. Round-off of a few operations: 1e-14.
+    #[test]
+    fn a_pivot_inset_keeps_the_centroidal_inertia() {
+        let geometry = TowerGeometry {
+            width: 4.0,
+            height: 12.0,
+            depth: None,
+            section: Section::Solid,
+            mass: MassInput::Mass(1.5e5),
+            inertia_pivot: None,
+            restitution: None,
+        };
+        let t = Tower::from_geometry(&geometry).unwrap_or_else(|e| panic!("{e}"));
+        let same = t.with_pivot_inset(0.0, None).unwrap_or_else(|e| panic!("{e}"));
+        assert_relative_eq!(same.inertia_pivot(), t.inertia_pivot(), max_relative = 1e-14);
+        assert_relative_eq!(same.radius(), t.radius(), max_relative = 1e-14);
+        assert_relative_eq!(same.alpha(), t.alpha(), max_relative = 1e-14);
+        let inset = t.with_pivot_inset(0.15, None).unwrap_or_else(|e| panic!("{e}"));
+        let m = 1.5e5;
+        let ig = m * (16.0 + 144.0) / 12.0;
+        let io = ig + m * (1.85f64.powi(2) + 36.0);
+        assert_relative_eq!(inset.inertia_pivot(), io, max_relative = 1e-14);
+        assert_relative_eq!(inset.radius(), (1.85f64.powi(2) + 36.0).sqrt(), max_relative = 1e-14);
+        assert_relative_eq!(inset.alpha(), (1.85f64 / 6.0).atan(), max_relative = 1e-14);
+        assert_relative_eq!(inset.restitution(), 1.0 - 2.0 * m * 1.85f64.powi(2) / io, max_relative = 1e-14);
+        // A given restitution is kept; an inset reaching the centre is refused.
+        assert_eq!(t.with_pivot_inset(0.15, Some(0.9)).map(|t| t.restitution()).ok(), Some(0.9));
+        assert!(t.with_pivot_inset(2.0, None).is_err());
+    }
+
     use super::*;
     use approx::assert_relative_eq;
 
