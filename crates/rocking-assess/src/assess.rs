@@ -9,7 +9,7 @@ use crate::input::AssessmentInput;
 use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv, verdict_json};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Mutex, PoisonError};
 
 /// The outcome of an assessment.
@@ -30,6 +30,31 @@ pub struct Assessment {
     pub verdict_method: Option<Method>,
     /// Whether a dynamic check on an incompatible set may carry the verdict (`assessment.accept_incompatible_set`).
     pub accept_incompatible_set: bool,
+    /// The principal direction of these checks.
+    pub direction: Direction,
+    /// The assessment in the other principal direction (every body turned a
+    /// quarter), when a body's depth differs from its width
+    /// ([`AssessmentInput::turned`]); the verdict is the worse of the two.
+    pub turned: Option<Box<Assessment>>,
+}
+
+/// A principal direction of the tower's plan.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    /// The file's: rocking across each body's `width` (in the plane of the width).
+    Width,
+    /// The other: rocking across each body's `depth` (the bodies turned a quarter).
+    Depth,
+}
+
+impl Direction {
+    /// `"width"` or `"depth"`: the dimension the body rocks across.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Width => "width",
+            Self::Depth => "depth",
+        }
+    }
 }
 
 /// The mechanism of a block on the tower (the belfry on its shaft): the block
@@ -66,6 +91,8 @@ pub struct MechanismView<'a> {
     pub dynamic: &'a [DynamicCheck],
     /// Whether a dynamic check on an incompatible set may carry its verdict.
     pub accept_incompatible_set: bool,
+    /// The principal direction it rocks in.
+    pub direction: Direction,
 }
 
 impl Assessment {
@@ -91,11 +118,42 @@ impl Assessment {
     /// As [`Assessment::run_observed`], stopped once `halted` is set (Ctrl-C
     /// in the Python package): no record's run begins after it, and the
     /// assessment is `None`, whatever it had done.
+    ///
+    /// A tower whose depth differs from its width (or a block's) is assessed
+    /// in both principal directions, the file's first; the progress counts
+    /// the runs of both.
     pub fn run_until(
         input: &AssessmentInput,
         cache: &RecordCache,
         progress: &(dyn Fn(usize, usize) + Sync),
         halted: &AtomicBool,
+    ) -> Result<Option<Self>, Error> {
+        let told = AtomicUsize::new(0);
+        let first = |done: usize, most: usize| {
+            told.store(done, Ordering::Relaxed);
+            progress(done, most);
+        };
+        let Some(mut done) = Self::run_direction(input, cache, &first, halted, Direction::Width)? else {
+            return Ok(None);
+        };
+        if let Some(turned) = input.turned()? {
+            let before = told.load(Ordering::Relaxed);
+            let then = |done: usize, most: usize| progress(before + done, before + most);
+            match Self::run_direction(&turned, cache, &then, halted, Direction::Depth)? {
+                Some(other) => done.turned = Some(Box::new(other)),
+                None => return Ok(None),
+            }
+        }
+        Ok(Some(done))
+    }
+
+    /// The assessment of `input` in one principal `direction`.
+    fn run_direction(
+        input: &AssessmentInput,
+        cache: &RecordCache,
+        progress: &(dyn Fn(usize, usize) + Sync),
+        halted: &AtomicBool,
+        direction: Direction,
     ) -> Result<Option<Self>, Error> {
         let capacity = input.capacity()?;
         let checks = input.kinematic_checks(&capacity)?;
@@ -158,6 +216,8 @@ impl Assessment {
             blocks,
             verdict_method: input.verdict_method(),
             accept_incompatible_set: input.file.accept_incompatible_set,
+            direction,
+            turned: None,
         }))
     }
 
@@ -170,6 +230,7 @@ impl Assessment {
             checks: &self.checks,
             dynamic: &self.dynamic,
             accept_incompatible_set: self.accept_incompatible_set,
+            direction: self.direction,
         };
         std::iter::once(tower)
             .chain(self.blocks.iter().map(|b| MechanismView {
@@ -179,15 +240,26 @@ impl Assessment {
                 checks: &b.checks,
                 dynamic: &b.dynamic,
                 accept_incompatible_set: self.accept_incompatible_set,
+                direction: self.direction,
             }))
             .collect()
     }
 
+    /// Every mechanism in both principal directions: this direction's, then the turned one's.
+    pub fn mechanisms_both_ways(&self) -> Vec<MechanismView<'_>> {
+        let mut all = self.mechanisms();
+        if let Some(turned) = &self.turned {
+            all.extend(turned.mechanisms());
+        }
+        all
+    }
+
     /// The governing mechanism and its verdict: the least ζ_E of every
-    /// mechanism's [`MechanismView::verdict`] (the tower's first, so that it
-    /// governs a tie). The damage state's activation is not part of it.
+    /// mechanism's [`MechanismView::verdict`] in both principal directions
+    /// (the tower's first and the file's direction first, so that they
+    /// govern a tie). The damage state's activation is not part of it.
     pub fn governing_verdict(&self) -> Option<(MechanismView<'_>, Verdict)> {
-        self.mechanisms()
+        self.mechanisms_both_ways()
             .into_iter()
             .filter_map(|m| m.verdict(self.verdict_method).map(|v| (m, v)))
             .reduce(|best, x| if x.1.check.zeta_e < best.1.check.zeta_e { x } else { best })
@@ -212,7 +284,7 @@ impl Assessment {
     /// The damage state's check that governs, reported beside the verdict:
     /// the activation of least ζ_E of every mechanism (the tower's first).
     pub fn damage(&self) -> Option<(MechanismView<'_>, Check)> {
-        self.mechanisms()
+        self.mechanisms_both_ways()
             .into_iter()
             .filter_map(|m| m.checks.iter().find(|c| c.method == Method::Activation).map(|c| (m, *c)))
             .reduce(|best, x| if x.1.zeta_e < best.1.zeta_e { x } else { best })
@@ -236,7 +308,7 @@ impl Assessment {
             self.dynamic_part(),
             (self.verdict_method, self.accept_incompatible_set),
         );
-        if self.blocks.is_empty() {
+        if self.blocks.is_empty() && self.turned.is_none() {
             return out;
         }
         let mechanisms: Vec<serde_json::Value> = self
@@ -265,12 +337,23 @@ impl Assessment {
             })
             .collect();
         if let serde_json::Value::Object(map) = &mut out {
-            map.insert("mechanisms".into(), serde_json::Value::Array(mechanisms));
-            // The governing verdict and damage check of every mechanism, named.
+            if !self.blocks.is_empty() {
+                map.insert("mechanisms".into(), serde_json::Value::Array(mechanisms));
+            }
+            if let Some(turned) = &self.turned {
+                // The turned bodies have this input's name and site: only their plan differs.
+                map.insert("direction".into(), serde_json::json!(self.direction.as_str()));
+                map.insert("other_direction".into(), turned.json(input));
+            }
+            // The governing verdict and damage check of every mechanism (in both directions), named.
+            let both = self.turned.is_some();
             let named = |found: Option<(MechanismView<'_>, serde_json::Value)>| {
                 found.map_or(serde_json::Value::Null, |(m, mut g)| {
                     if let serde_json::Value::Object(g) = &mut g {
                         g.insert("mechanism".into(), serde_json::json!(m.name));
+                        if both {
+                            g.insert("direction".into(), serde_json::json!(m.direction.as_str()));
+                        }
                     }
                     g
                 })

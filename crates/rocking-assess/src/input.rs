@@ -219,6 +219,40 @@ impl AssessmentInput {
         ))
     }
 
+    /// The assessment of the other principal direction: the tower and every
+    /// block turned a quarter (each one's `width` and `depth` exchanged, a
+    /// missing `depth` being the width), or `None` when every body's depth is
+    /// its width (the same assessment) or the tower is given by `radius` and
+    /// `alpha` (no plan).
+    pub fn turned(&self) -> Result<Option<AssessmentInput>, Error> {
+        let mut file = self.file.clone();
+        let mut turned_any = false;
+        let mut turn = |body: &mut Table| {
+            let width = body.get("width").cloned();
+            if let Some(width) = width {
+                let depth = body.get("depth").cloned().unwrap_or_else(|| width.clone());
+                let number = |v: &Value| v.as_float().or_else(|| v.as_integer().map(|i| i as f64));
+                turned_any |= number(&depth) != number(&width);
+                body.insert("width".into(), depth);
+                body.insert("depth".into(), width);
+            }
+        };
+        if let Some(Value::Table(tower)) = file.scenario.get_mut("tower") {
+            turn(tower);
+        }
+        if let Some(Value::Array(blocks)) = file.scenario.get_mut("block") {
+            for block in blocks.iter_mut() {
+                if let Value::Table(block) = block {
+                    turn(block);
+                }
+            }
+        }
+        if !turned_any {
+            return Ok(None);
+        }
+        Self::new(file).map(Some)
+    }
+
     /// The names of the blocks on the tower, the lowest first.
     pub fn blocks(&self) -> &rocking_scenario::BlockNames {
         self.scenario.blocks()

@@ -520,17 +520,32 @@ impl Inventory {
             }
         }
         let mut cells = self.identity(index);
-        let completed = done.mechanisms()[0].completed();
+        // The tower's checks, each the worse of the two principal directions when it has two.
+        let mut completed = done.mechanisms()[0].completed();
+        if let Some(turned) = &done.turned {
+            completed.extend(turned.mechanisms()[0].completed());
+        }
         for (state, method) in &self.checks {
-            match completed.iter().find(|c| c.limit_state == *state && c.method == *method) {
+            let worst = completed
+                .iter()
+                .filter(|c| c.limit_state == *state && c.method == *method)
+                .reduce(|a, b| if b.zeta_e < a.zeta_e { b } else { a });
+            match worst {
                 Some(c) => cells.extend([Cell::Float(c.ag_capacity.value()), Cell::Float(c.zeta_e)]),
                 None => cells.extend([Cell::Empty, Cell::Empty]),
             }
         }
-        // The tower's checks in the columns; the governing of every mechanism, a block's named.
+        // The governing of every mechanism in both directions, a block's named, the depth's said.
+        let across = |m: &crate::MechanismView<'_>| match m.direction {
+            crate::Direction::Width => String::new(),
+            crate::Direction::Depth => " across the depth".to_string(),
+        };
         match done.governing_mechanism() {
-            Some((m, g)) if m.block > 0 => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {} {}", m.name, g.limit_state, g.method))]),
-            Some((_, g)) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}", g.limit_state, g.method))]),
+            Some((m, g)) if m.block > 0 => cells.extend([
+                Cell::Float(g.zeta_e),
+                Cell::Text(format!("{} {} {}{}", m.name, g.limit_state, g.method, across(&m))),
+            ]),
+            Some((m, g)) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}{}", g.limit_state, g.method, across(&m)))]),
             None => cells.extend([Cell::Empty, Cell::Empty]),
         }
         // A dynamic check that could not be completed: the others stand, the reason is the error.

@@ -55,7 +55,7 @@ mod search;
 mod site;
 mod town;
 
-pub use assess::{Assessment, BlockMechanism, MechanismView};
+pub use assess::{Assessment, BlockMechanism, Direction, MechanismView};
 pub use capacity::{
     activation_acceleration, activation_multiplier, collapse_displacement, exact_acceleration_at, exact_capacity_curve, linear_capacity_curve,
     rigid_column_centre, secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind,

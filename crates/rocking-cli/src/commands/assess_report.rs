@@ -376,6 +376,54 @@ fn seat_impulse_warning(done: &Assessment) -> Option<String> {
     ))
 }
 
+/// Both principal directions: the plan's two dimensions, and the verdict of
+/// each with the checks of the other direction (those below are the file's).
+fn other_direction(done: &Assessment, turned: &Assessment, input: &AssessmentInput) -> String {
+    let line = |a: &Assessment| {
+        a.mechanisms()
+            .into_iter()
+            .filter_map(|m| m.verdict(a.verdict_method).map(|v| (m, v)))
+            .reduce(|best, x| if x.1.check.zeta_e < best.1.check.zeta_e { x } else { best })
+            .map_or_else(
+                || "no check completed".to_string(),
+                |(m, v)| {
+                    let g = v.check;
+                    format!(
+                        "{}{} {}, ζ<sub>E</sub> = {}{} ({})",
+                        if a.blocks.is_empty() { String::new() } else { format!("{}, ", esc(m.name)) },
+                        g.limit_state,
+                        g.method.text(input.file.q).name,
+                        if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+                        sig(g.zeta_e, 3),
+                        verdict(&g)
+                    )
+                },
+            )
+    };
+    let mut rows = String::new();
+    for m in turned.mechanisms() {
+        for c in m.completed() {
+            let _ = write!(
+                rows,
+                "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}{}</td><td>{}</td></tr>",
+                esc(m.name),
+                c.limit_state,
+                c.method.text(input.file.q).name,
+                if c.ag_capacity.is_lower_bound() { "≥ " } else { "" },
+                sig(c.zeta_e, 3),
+                verdict(&c)
+            );
+        }
+    }
+    format!(
+        "<section id=\"directions\"><h2>Both principal directions</h2><p>A body of the tower is not square in plan (its depth differs from its width): the tower is assessed rocking across each body's width, the file's direction, whose checks the sections below give, and across each body's depth, the bodies turned a quarter, whose checks are in this table. The verdict is the worse of the two.</p>\
+         <p>Across the width: {}.<br>Across the depth: {}.</p>\
+         <table><tr><th>mechanism</th><th>LS</th><th>method</th><th>ζ<sub>E</sub></th><th>verdict</th></tr>{rows}</table></section>",
+        line(done),
+        line(turned)
+    )
+}
+
 /// The page.
 pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result<String> {
     let (capacity, checks, dynamic) = (&done.capacity, &done.checks, done.dynamic_part());
@@ -413,15 +461,23 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         let g = v.check;
         let _ = writeln!(
             out,
-            "<p><b>Verdict: {}{} {}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
+            "<p><b>Verdict: {}{} {}{}, ζ<sub>E</sub> = {}{}</b> ({}).</p>",
             if stacked { format!("{}, ", esc(m.name)) } else { String::new() },
             g.limit_state,
             g.method.text(input.file.q).name,
+            if done.turned.is_some() {
+                format!(", rocking across its {}", m.direction.as_str())
+            } else {
+                String::new()
+            },
             if g.ag_capacity.is_lower_bound() { "≥ " } else { "" },
             sig(g.zeta_e, 3),
             verdict(&g)
         );
         let _ = writeln!(out, "<p class=\"note\">{}</p>", verdict_basis(done, input));
+    }
+    if let Some(turned) = &done.turned {
+        let _ = writeln!(out, "{}", other_direction(done, turned, input));
     }
     if let Some((m, d)) = done.damage() {
         let _ = writeln!(
