@@ -476,20 +476,25 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         );
         let _ = writeln!(out, "<p class=\"note\">{}</p>", verdict_basis(done, input));
     }
-    if let Some(turned) = &done.turned {
-        let _ = writeln!(out, "{}", other_direction(done, turned, input));
-    }
     if let Some((m, d)) = done.damage() {
         let _ = writeln!(
             out,
-            "<p>Damage limit state, beside the verdict: {}{} {}, ζ<sub>E</sub> = {}{} ({}).</p>",
+            "<p>Damage limit state, beside the verdict: {}{} {}{}, ζ<sub>E</sub> = {}{} ({}).</p>",
             if stacked { format!("{}, ", esc(m.name)) } else { String::new() },
             d.limit_state,
             d.method.text(input.file.q).name,
+            if done.turned.is_some() {
+                format!(", rocking across its {}", m.direction.as_str())
+            } else {
+                String::new()
+            },
             if d.ag_capacity.is_lower_bound() { "≥ " } else { "" },
             sig(d.zeta_e, 3),
             verdict(&d)
         );
+    }
+    if let Some(turned) = &done.turned {
+        let _ = writeln!(out, "{}", other_direction(done, turned, input));
     }
     if let Some(warning) = seat_impulse_warning(done) {
         let _ = writeln!(out, "{warning}");
