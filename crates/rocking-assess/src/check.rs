@@ -100,6 +100,25 @@ impl Unit {
     }
 }
 
+/// Where a check takes the mechanism to stand.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Level {
+    /// At ground level, on a rigid support: the ground's spectra (or records).
+    Ground,
+    /// On the elastic support's top: the floor spectrum (Circolare 2019 §C7.2.3).
+    Support,
+}
+
+impl Level {
+    /// Its name in the outputs: `ground` or `support`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Level::Ground => "ground",
+            Level::Support => "support",
+        }
+    }
+}
+
 /// The ratio `ζ_E = a_g,capacity / a_g` of a limit state (Circolare 2019 §C8.7.1.2.1.5
 /// and the Civil Protection's ranking of buildings): the check holds when ζ_E ≥ 1.
 pub fn acceleration_ratio(ag_capacity: f64, ag: f64) -> f64 {
@@ -127,6 +146,11 @@ pub struct Check {
     pub zeta_e: f64,
     /// Whether it holds: ζ_E ≥ 1.
     pub holds: bool,
+    /// Where it takes the mechanism to stand.
+    pub level: Level,
+    /// The peak floor acceleration `a_Z` (g) of the support's top at the limit
+    /// state's `a_g` (a check at height); `None` at ground level.
+    pub a_z: Option<f64>,
 }
 
 impl Check {
@@ -148,7 +172,14 @@ impl Check {
             ag_capacity,
             zeta_e,
             holds: zeta_e >= 1.0 || ag_capacity.is_lower_bound(),
+            level: Level::Ground,
+            a_z: None,
         }
+    }
+
+    /// The check at `level`, with the peak floor acceleration `a_z` (g) of a check at height.
+    pub fn at(self, level: Level, a_z: Option<f64>) -> Self {
+        Self { level, a_z, ..self }
     }
 }
 

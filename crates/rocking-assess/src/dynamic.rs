@@ -128,6 +128,10 @@ pub struct DynamicCheck {
     pub check: Option<Check>,
     /// Why it could not be completed.
     pub error: Option<String>,
+    /// Whether the mechanism stands on an elastic support that these runs
+    /// leave out (the coupled model is not in the engine yet): the check is at
+    /// ground level, not at height, and carries no verdict.
+    pub below_support: bool,
 }
 
 impl DynamicCheck {
@@ -140,8 +144,10 @@ impl DynamicCheck {
 
     /// The check, if it may carry the verdict: completed, and valid unless
     /// `accept_incompatible_set` (`assessment.accept_incompatible_set`).
+    /// A check run at ground level under a mechanism that stands on a support
+    /// ([`DynamicCheck::below_support`]) never does.
     pub fn verdict_check(&self, accept_incompatible_set: bool) -> Option<Check> {
-        self.check.filter(|_| accept_incompatible_set || self.is_valid())
+        self.check.filter(|_| !self.below_support && (accept_incompatible_set || self.is_valid()))
     }
 }
 
@@ -507,6 +513,7 @@ pub fn dynamic_checks_ticking(
             bracket,
             check,
             error,
+            below_support: input.at_height(),
         });
     }
     Ok(checks)

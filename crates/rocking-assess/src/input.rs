@@ -7,6 +7,7 @@
 
 use crate::capacity::{Capacity, CurveKind};
 use crate::check::{Check, Method};
+use crate::height::SupportModes;
 use crate::outputs::number;
 use crate::site::{Role, Site};
 use rocking_scenario::{AssessmentFile, Error, ErrorKind, Fault, Scenario, SetEntry, VerdictMethod};
@@ -89,6 +90,9 @@ pub struct AssessmentInput {
     pub site: Site,
     /// The λ scan.
     pub lambda: LambdaScan,
+    /// The support's modes at each limit state, with a `[support]`: the
+    /// kinematic checks take the floor spectrum of its top.
+    pub support: Option<SupportModes>,
 }
 
 impl AssessmentInput {
@@ -162,7 +166,20 @@ impl AssessmentInput {
         let (from, to, step) = file.lambda;
         let lambda = LambdaScan { from, to, step };
         lambda.check().map_err(fail)?;
-        Ok(Self { file, scenario, site, lambda })
+        let support = match &file.support {
+            None => None,
+            Some(_) => {
+                let [damage, life_safety, collapse] = Role::ALL.map(|role| file.support_modes(role.limit_state(ntc)).unwrap_or_default());
+                Some(SupportModes::new(damage, life_safety, collapse).map_err(|e| fail(Fault::invalid("support", e.to_string())))?)
+            }
+        };
+        Ok(Self {
+            file,
+            scenario,
+            site,
+            lambda,
+            support,
+        })
     }
 
     /// The file.
@@ -183,6 +200,12 @@ impl AssessmentInput {
             rocking_scenario::Capacity::Linear => CurveKind::Linear,
             rocking_scenario::Capacity::Exact => CurveKind::Exact,
         }
+    }
+    /// Whether the mechanisms stand on an elastic support (`[support]`): the
+    /// kinematic checks are at height, the dynamic ones (on a rigid support)
+    /// are reported at ground level and carry no verdict.
+    pub fn at_height(&self) -> bool {
+        self.support.is_some()
     }
     /// The method `assessment.verdict_method` names to carry the verdict; `None`: the most refined computed.
     pub fn verdict_method(&self) -> Option<Method> {
@@ -277,8 +300,11 @@ impl AssessmentInput {
     /// `ag` (1e-320 g, whose ζ_E = a_g,capacity / a_g overflows), its site (an
     /// `F0` of 1e308, whose demand does), or `assessment.q` (a `q` of 1e308).
     pub fn kinematic_checks(&self, capacity: &Capacity) -> Result<Vec<Check>, Error> {
-        let checks =
-            crate::kinematic_checks(capacity, &self.site, self.file.q).map_err(|e| Fault::invalid("assessment.q", e.to_string()).in_file(self.origin()))?;
+        let checks = match &self.support {
+            None => crate::kinematic_checks(capacity, &self.site, self.file.q),
+            Some(support) => crate::kinematic_checks_at_height(capacity, &self.site, support, self.file.q),
+        }
+        .map_err(|e| Fault::invalid("assessment.q", e.to_string()).in_file(self.origin()))?;
         match checks.iter().find(|c| !c.is_finite()) {
             None => Ok(checks),
             Some(c) => {

@@ -47,6 +47,7 @@ mod capacity;
 mod check;
 mod dynamic;
 mod error;
+mod height;
 mod input;
 mod inventory;
 mod kinematic;
@@ -61,12 +62,16 @@ pub use capacity::{
     rigid_column_centre, secant_period_slc, secant_period_slv, ultimate_displacement_slc, ultimate_displacement_slv, Capacity, CurveKind,
     DEFAULT_CONFIDENCE_FACTOR,
 };
-pub use check::{acceleration_ratio, least_zeta_e, verdict, verdicts, Check, Method, MethodText, Unit, Verdict};
+pub use check::{acceleration_ratio, least_zeta_e, verdict, verdicts, Check, Level, Method, MethodText, Unit, Verdict};
 pub use dynamic::{
     combined_response, dynamic_check, dynamic_check_ticking, dynamic_checks_ticking, most_runs, most_runs_of, DynamicCheck, LambdaPoint, RecordResponse,
     RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
 };
 pub use error::Error;
+pub use height::{
+    activation_check_at_height, first_period, floor_displacement_demand, floor_spectrum_at, kinematic_checks_at_height, linear_kinematic_check_at_height,
+    nonlinear_kinematic_check_at_height, peak_floor_acceleration, SupportModes, EC8_HEIGHT_RATIO,
+};
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA, MAX_LAMBDA_VALUES};
 pub use inventory::{calling_pool, Inventory, InventoryError, OnAssessed};
 pub use kinematic::{

@@ -98,6 +98,7 @@ mod scenario;
 mod simulation;
 mod study;
 mod summary;
+mod support;
 mod sweep;
 mod tower;
 
@@ -106,9 +107,9 @@ mod tests;
 
 pub use assessment::{
     code_spectra_columns, dynamic_limit_states, kinematic_damping_pct, read_record, read_record_with, record_names, record_spectra_in_g, same_record_twice,
-    AssessmentFile, Capacity, Code, GridCache, SetEntry, Site, SiteSource, SpectrumColumn, SpectrumKind, VerdictMethod, ASSESSMENT_KEYS, ASSESSMENT_KEY_DOCS,
-    ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q, DEFAULT_USE_COEFFICIENT,
-    EC8_STATE_KEYS, KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, SITE_KEYS,
+    AssessmentFile, Capacity, Code, GridCache, SetEntry, Site, SiteSource, SpectrumColumn, SpectrumKind, SupportState, VerdictMethod, ASSESSMENT_KEYS,
+    ASSESSMENT_KEY_DOCS, ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q,
+    DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, SITE_KEYS, SUPPORT_STATE_KEYS,
 };
 pub use block::{names as block_names, set_named_key, BlockNames, BLOCK, MAX_ABOVE};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};
@@ -124,6 +125,7 @@ pub use study::{
     INTERRUPTED as FIT_INTERRUPTED, METHOD as FIT_METHOD, RISK_HEADER, STUDY_KEYS,
 };
 pub use summary::{summary_fields, summary_json, summary_scalars};
+pub use support::{Support, SupportMode, SupportShape, DEFAULT_SUPPORT_DAMPING, MAX_SUPPORT_MODES, SUPPORT_KEYS, SUPPORT_MODE_KEYS};
 pub use sweep::{
     csv_line, run_cases, spreadsheet_text, Axis, AxisSpec, Cases, Cell, Finished, Row, RunError, Shard, Sweep, DEFAULT_MAX_CASES, ERROR_COLUMN,
     MAX_AXIS_VALUES, MAX_CASES_KEY, SWEEPABLE_KEYS, WALL_TIME_KEY, WINDOW,

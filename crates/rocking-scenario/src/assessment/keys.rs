@@ -313,12 +313,133 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "The scan of the record set's multiplier λ in the dynamic checks.",
         "{ from = 0.1, to = 2.0, step = 0.1 }",
     ),
+    key(
+        "assessment.support",
+        Table,
+        "",
+        "none (the support's own values)",
+        "with a [support]; one table per ultimate limit state: SLV, SLC (EC8: SD, NC)",
+        "The support's values at an ultimate limit state (Circolare 2019 §C8.7.1.2.1.4: a masonry building's period grows by 50–100% and its damping reaches 10–20%); the damage state keeps the support's own.",
+        "{ SLV = { period_factor = 1.5, damping = 0.10 } }",
+    )
+    .off_form(),
+    key(
+        "assessment.support.<LS>.period_factor",
+        Number,
+        "",
+        "1",
+        "> 0",
+        "Every period of the support multiplied by it at the limit state.",
+        "1.5",
+    )
+    .off_form(),
+    key(
+        "assessment.support.<LS>.damping",
+        Number,
+        "",
+        "the support's own",
+        "(0, 1)",
+        "Every damping ratio of the support at the limit state (a fraction of critical).",
+        "0.10",
+    )
+    .off_form(),
+    key(
+        "support.mass",
+        Number,
+        "kg",
+        "required with [support]",
+        "> 0",
+        "Mass m_s of the elastic support the tower stands on (the church, the shaft), its whole mass. With it the checks take the floor spectrum of its top (Circolare 2019 §C7.2.3; EN 1998-1 eq. 4.25).",
+        "1.5e6",
+    )
+    .off_form(),
+    key(
+        "support.period",
+        Number,
+        "s",
+        "required (or [[support.mode]])",
+        "> 0",
+        "Period of the support alone (without the tower and the blocks on it), its one mode.",
+        "0.35",
+    )
+    .off_form(),
+    key(
+        "support.damping",
+        Number,
+        "",
+        "0.05",
+        "[0, 1); > 0 in an assessment",
+        "Damping ratio of the support's one mode, a fraction of critical.",
+        "0.05",
+    )
+    .off_form(),
+    key(
+        "support.shape",
+        Text,
+        "",
+        "\"sdof\"",
+        "\"sdof\" (Γ = 1, m_eff = m_s), \"linear\" (Γ = 1.5, m_eff = 0.75 m_s) or \"cantilever\" (Γ = 1.5660, m_eff = 0.6131 m_s)",
+        "The shape of the support's one mode: its participation factor Γ (the shape 1 where the tower stands) and effective mass.",
+        "\"cantilever\"",
+    )
+    .off_form(),
+    key(
+        "support.mode",
+        Table,
+        "",
+        "none (one mode from period, damping, shape)",
+        "1 to 6 tables [[support.mode]]; not with period, damping, shape",
+        "The support's modes one by one (sweeps and inventory columns name them support.mode.1.period, …).",
+        "[{ period = 0.35, participation = 1.566, effective_mass = 0.613 }]",
+    )
+    .off_form(),
+    key(
+        "support.mode.<k>.period",
+        Number,
+        "s",
+        "required",
+        "> 0",
+        "Period T_k of the support's mode k.",
+        "0.35",
+    )
+    .off_form(),
+    key(
+        "support.mode.<k>.damping",
+        Number,
+        "",
+        "0.05",
+        "[0, 1); > 0 in an assessment",
+        "Damping ratio ζ_k of mode k, a fraction of critical.",
+        "0.05",
+    )
+    .off_form(),
+    key(
+        "support.mode.<k>.participation",
+        Number,
+        "",
+        "required",
+        "not 0",
+        "Participation factor Γ_k of mode k, its shape normalised to 1 where the tower stands.",
+        "1.566",
+    )
+    .off_form(),
+    key(
+        "support.mode.<k>.effective_mass",
+        Number,
+        "",
+        "required",
+        "(0, 1]; the modes' sum at most 1",
+        "Effective mass of mode k, a fraction of support.mass.",
+        "0.613",
+    )
+    .off_form(),
 ];
 
 #[cfg(test)]
 mod tests {
     use super::ASSESSMENT_KEY_DOCS;
-    use crate::assessment::{AssessmentFile, ASSESSMENT_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+    use crate::assessment::{AssessmentFile, ASSESSMENT_KEYS, NTC_STATE_KEYS, SITE_KEYS, SUPPORT_STATE_KEYS};
+    use crate::support::{SUPPORT_KEYS, SUPPORT_MODE_KEYS};
     use std::path::Path;
 
     /// The choices the page's form offers are those the parser takes: a value
@@ -365,6 +486,9 @@ mod tests {
         let mut parsed: Vec<String> = SITE_KEYS.iter().map(|k| format!("site.{k}")).collect();
         parsed.extend(NTC_STATE_KEYS.iter().map(|k| format!("site.<LS>.{k}")));
         parsed.extend(ASSESSMENT_KEYS.iter().map(|k| format!("assessment.{k}")));
+        parsed.extend(SUPPORT_STATE_KEYS.iter().map(|k| format!("assessment.support.<LS>.{k}")));
+        parsed.extend(SUPPORT_KEYS.iter().map(|k| format!("support.{k}")));
+        parsed.extend(SUPPORT_MODE_KEYS.iter().map(|k| format!("support.mode.<k>.{k}")));
         documented.sort();
         parsed.sort();
         assert_eq!(documented, parsed);

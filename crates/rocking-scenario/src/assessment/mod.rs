@@ -18,6 +18,7 @@ pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_
 
 use crate::error::{ErrorKind, Fault};
 use crate::read::{as_number, non_negative, positive, with_article, Section};
+use crate::support::{Support, SupportMode};
 use crate::{Error, DEFAULT_G};
 use rocking::{CsvOptions, Record, RecordFormat};
 use rocking_codes::LimitState;
@@ -38,9 +39,32 @@ pub const ASSESSMENT_KEYS: &[&str] = &[
     "lambda",
     "verdict_method",
     "accept_incompatible_set",
+    "support",
 ];
 /// The sections of an assessment file besides a scenario's (less `[ground]`).
-pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment"];
+pub const ASSESSMENT_SECTIONS: &[&str] = &["site", "assessment", "support"];
+/// The keys of each `[assessment.support.<LS>]`.
+pub const SUPPORT_STATE_KEYS: &[&str] = &["period_factor", "damping"];
+
+/// The support's values at one ultimate limit state (`[assessment.support.SLV]`,
+/// §C8.7.1.2.1.4 of the Circolare 2019: at the ultimate limit states a masonry
+/// building's equivalent period grows and its damping rises).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SupportState {
+    /// Every `T_k` of the support multiplied by it (> 0; 1 when not given).
+    pub period_factor: f64,
+    /// Every `ζ_k` replaced by it (a fraction in [0, 1)), when given.
+    pub damping: Option<f64>,
+}
+
+impl Default for SupportState {
+    fn default() -> Self {
+        Self {
+            period_factor: 1.0,
+            damping: None,
+        }
+    }
+}
 
 /// The confidence factor FC when not given (knowledge level LC1, Circolare §C8.5.4).
 pub const DEFAULT_CONFIDENCE_FACTOR: f64 = 1.35;
@@ -122,6 +146,12 @@ pub struct AssessmentFile {
     pub lambda: (f64, f64, f64),
     /// Gravity (m/s²): `simulation.g`, or 9.81.
     pub g: f64,
+    /// The elastic support under the tower (`[support]`), if given: the checks
+    /// take the floor spectrum of its top (Circolare 2019 §C7.2.3).
+    pub support: Option<Support>,
+    /// The support's values of each ultimate limit state given
+    /// (`[assessment.support.<LS>]`); the others keep the support's own.
+    pub support_states: Vec<(LimitState, SupportState)>,
     /// The scenario's own sections (name, tower, building, simulation…), not validated here.
     pub scenario: Table,
 }
@@ -223,6 +253,26 @@ impl AssessmentFile {
             None => DEFAULT_LAMBDA,
             Some(v) => lambda(v)?,
         };
+        let support = table.remove("support").map(|v| crate::support::parse(&v)).transpose()?;
+        if support.is_some() && table.get("tower").and_then(|t| t.get("restitution")).is_some() {
+            return Err(Fault::new(
+                "tower.restitution",
+                ErrorKind::NotApplicable("does not apply to a tower on a [support]: its impacts follow the law of generalised momentum (remove it)".into()),
+            ));
+        }
+        let support_states = match a.get("support") {
+            None => Vec::new(),
+            Some(_) if support.is_none() => {
+                return Err(Fault::new(
+                    "assessment.support",
+                    ErrorKind::NotApplicable("needs a [support]: the values of a limit state are those of the support under the tower".into()),
+                ));
+            }
+            Some(v) => support_states(v, site.code)?,
+        };
+        if let Some(support) = &support {
+            check_support_damping(support)?;
+        }
         let g = match table.get("simulation").and_then(|s| s.get("g")) {
             Some(v) => positive(
                 "simulation.g",
@@ -253,8 +303,34 @@ impl AssessmentFile {
             free_after,
             lambda,
             g,
+            support,
+            support_states,
             scenario: table,
         })
+    }
+
+    /// The support's modes at the limit state `state`: its own, every period
+    /// times the state's `period_factor` and every damping its `damping`
+    /// when `[assessment.support.<state>]` gives them; `None` without a support.
+    pub fn support_modes(&self, state: LimitState) -> Option<Vec<SupportMode>> {
+        let support = self.support.as_ref()?;
+        let values = self.support_state(state);
+        Some(
+            support
+                .modes
+                .iter()
+                .map(|m| SupportMode {
+                    period: m.period * values.period_factor,
+                    damping: values.damping.unwrap_or(m.damping),
+                    ..*m
+                })
+                .collect(),
+        )
+    }
+
+    /// The support's values at `state` (the support's own when not given).
+    pub fn support_state(&self, state: LimitState) -> SupportState {
+        self.support_states.iter().find(|(s, _)| *s == state).map(|(_, v)| *v).unwrap_or_default()
     }
 
     /// The file.
@@ -424,6 +500,93 @@ fn given_records(items: &[Value]) -> Result<Vec<SetEntry>, Fault> {
         });
     }
     Ok(entries)
+}
+
+/// `[assessment.support]`: one table per ultimate limit state of the code
+/// (SLV, SLC; EC8's SD, NC), each with `period_factor` and `damping`.
+fn support_states(value: &Value, code: Code) -> Result<Vec<(LimitState, SupportState)>, Fault> {
+    let t = Section::new("assessment.support", value)?;
+    let states = dynamic_limit_states(code);
+    let names: Vec<&'static str> = states.iter().map(|s| s.as_str()).collect();
+    if let Some(k) = t.keys().find(|k| !names.contains(k)) {
+        let why = if code.limit_states().iter().any(|s| s.as_str() == k) {
+            format!(
+                "the support's values may change at the ultimate limit states ({}) only: {k} keeps the support's own",
+                names.join(", ")
+            )
+        } else {
+            ErrorKind::unknown_key(k, &names).to_string()
+        };
+        return Err(Fault::invalid(format!("assessment.support.{k}"), why));
+    }
+    states
+        .iter()
+        .filter_map(|state| t.get(state.as_str()).map(|v| (*state, v)))
+        .map(|(state, v)| {
+            let prefix = format!("assessment.support.{state}");
+            let Value::Table(s) = v else {
+                return Err(Fault::new(
+                    prefix,
+                    ErrorKind::WrongType {
+                        expected: "a table { period_factor, damping }",
+                        got: with_article(v),
+                    },
+                ));
+            };
+            if let Some(k) = s.keys().find(|k| !SUPPORT_STATE_KEYS.contains(&k.as_str())) {
+                return Err(Fault::new(format!("{prefix}.{k}"), ErrorKind::unknown_key(k, SUPPORT_STATE_KEYS)));
+            }
+            let number = |k: &str| -> Result<Option<f64>, Fault> {
+                s.get(k)
+                    .map(|v| {
+                        as_number(v).ok_or_else(|| {
+                            Fault::new(
+                                format!("{prefix}.{k}"),
+                                ErrorKind::WrongType {
+                                    expected: "a number",
+                                    got: with_article(v),
+                                },
+                            )
+                        })
+                    })
+                    .transpose()
+            };
+            let period_factor = positive(&format!("{prefix}.period_factor"), number("period_factor")?.unwrap_or(1.0))?;
+            let damping = number("damping")?;
+            if let Some(d) = damping {
+                if !(d.is_finite() && d > 0.0 && d < 1.0) {
+                    return Err(Fault::invalid(
+                        format!("{prefix}.damping"),
+                        format!("must be a fraction of critical in (0, 1) (0.10 for 10%), got {d}"),
+                    ));
+                }
+            }
+            Ok((state, SupportState { period_factor, damping }))
+        })
+        .collect()
+}
+
+/// The floor spectrum of the Circolare 2019 ([C7.2.6]) divides by the square
+/// root of each mode's damping: a support whose mode is undamped at a limit
+/// state cannot be checked (the engine's coupled model can run it).
+fn check_support_damping(support: &Support) -> Result<(), Fault> {
+    for (k, mode) in support.modes.iter().enumerate() {
+        if mode.damping > 0.0 {
+            continue;
+        }
+        // The damage state always takes the support's own damping: a mode
+        // undamped there is refused whatever the ultimate states give.
+        let key = if support.shape.is_some() {
+            "support.damping".to_string()
+        } else {
+            format!("support.mode.{}.damping", k + 1)
+        };
+        return Err(Fault::invalid(
+            key,
+            "must be > 0 in an assessment: the floor spectrum of the Circolare 2019 ([C7.2.6]) amplifies by 1.1 ξ^(-1/2), infinite at 0",
+        ));
+    }
+    Ok(())
 }
 
 /// A `[from, to]` pair of finite numbers.
