@@ -86,17 +86,25 @@ def check(what, value, reference, tolerance, relative=True):
     return diff, passed
 
 
-def write_table(name, columns, rows, caption=None, csv_only=()):
-    """validation/results/NAME.csv (every digit) and NAME.md (rounded for reading).
-    `columns` is a list of (key, header, format) with format a str.format spec;
-    the keys of `csv_only` go to the CSV alone."""
+def write_table(name, columns, rows, caption=None, csv_only=(), *, digits):
+    """validation/results/NAME.csv (every number to `digits` significant
+    digits) and NAME.md (rounded for reading). `columns` is a list of (key,
+    header, format) with format a str.format spec; the keys of `csv_only` go
+    to the CSV alone. `digits` is stated by each script: two more than its
+    tightest relative tolerance needs, so that the table shows every
+    comparison to spare and a move of the engine in a later digit (within
+    every tolerance) leaves the committed table as it is. A number below
+    ROUND_OFF in magnitude (a difference of two implementations at the
+    round-off, a creep of 1e-16 m) is written as 0 in the CSV and as
+    "< 1e-12" in the table: its digits are noise, and every tolerance here is
+    1e-10 or wider."""
     RESULTS.mkdir(parents=True, exist_ok=True)
     keys = [key for key, _, _ in columns] + list(csv_only)
     with open(RESULTS / f"{name}.csv", "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
         writer.writerow(keys)
         for row in rows:
-            writer.writerow([_plain(row[key]) for key in keys])
+            writer.writerow([_plain(row[key], digits) for key in keys])
     lines = []
     if caption:
         lines += [caption, ""]
@@ -108,15 +116,24 @@ def write_table(name, columns, rows, caption=None, csv_only=()):
             value = row[key]
             if isinstance(value, float) and value != value:  # NaN: not applicable
                 cells.append("—")
+            elif isinstance(value, float) and 0 < abs(value) < ROUND_OFF:
+                cells.append(f"< {ROUND_OFF:.0e}")
             else:
                 cells.append(format(value, fmt) if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value))
         lines.append("| " + " | ".join(cells) + " |")
     (RESULTS / f"{name}.md").write_text("\n".join(lines) + "\n")
 
 
-def _plain(value):
+# Numbers below this are round-off here (see write_table).
+ROUND_OFF = 1e-12
+
+
+def _plain(value, digits):
     if isinstance(value, float):  # numpy's floats too, written as plain numbers
-        return repr(float(value))
+        if abs(value) < ROUND_OFF:
+            return "0"
+        text = format(float(value), f".{digits}g")
+        return "0" if text == "-0" else text
     return value
 
 

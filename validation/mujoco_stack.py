@@ -52,6 +52,10 @@ from scipy.optimize import brentq
 
 import mjcf
 from common import check, finish, run, save_figure, write_table
+
+# The tables' numbers to 11 significant digits: two more than the tightest
+# relative tolerance of this script's comparisons (TOL_ENGINE_RATIO = 1e-9) needs.
+SIGNIFICANT_DIGITS = 11
 from stack.reference import Stack
 
 G = 9.81
@@ -674,6 +678,7 @@ def main():
             ("peak_normal", "the normal force", ".5f"),
         ],
         tilted,
+        digits=SIGNIFICANT_DIGITS,
     )
     seated = []
     for case, blocks in SEATED.items():
@@ -693,6 +698,7 @@ def main():
             ("within", "within", ""),
         ],
         [{k: plain(v) if k in ("model", "reference", "MuJoCo") else v for k, v in r.items()} for r in rows],
+        digits=SIGNIFICANT_DIGITS,
     )
     write_table(
         "mujoco-stack-engine",
@@ -706,6 +712,7 @@ def main():
             ("within", "within", ""),
         ],
         engine_rows,
+        digits=SIGNIFICANT_DIGITS,
     )
     write_table(
         "mujoco-stack-convergence",
@@ -722,6 +729,7 @@ def main():
             ("overturn_ms", "overturning time (ms)", ".1f"),
         ],
         convergence,
+        digits=SIGNIFICANT_DIGITS,
     )
     write_table(
         "mujoco-stack-seated",
@@ -733,6 +741,7 @@ def main():
             ("mujoco_rate", "MuJoCo, tc = 1 ms, ζ 1 (rad/s)", ".5f"),
         ],
         seated,
+        digits=SIGNIFICANT_DIGITS,
     )
     restarted, landings = restart_tables(SCENARIOS[RESTARTED])
     figure(results)
@@ -805,6 +814,7 @@ def contact_restitution():
         + [(f"mujoco_{n}", f"MuJoCo, dt = tc/{n}", ".5f") for n in DROP_STEPS]
         + [("difference", f"difference at tc/{DROP_STEPS[-1]}", ".2%"), ("within", f"within {TOL_DROP:.0%}", "")],
         rows,
+        digits=SIGNIFICANT_DIGITS,
     )
     return rows
 
@@ -886,6 +896,7 @@ def contact_sequence(scenario):
             ("final_diff_mm", "final slip − model's (mm)", "+.3f"),
         ],
         rows,
+        digits=SIGNIFICANT_DIGITS,
     )
     sequence_figure(scenario, rows)
 
@@ -985,6 +996,7 @@ def restart_tables(scenario):
             ("within", "within 3%", ""),
         ],
         restarted,
+        digits=SIGNIFICANT_DIGITS,
     )
     columns = [
         ("t", "impact (s)", ".4f"),
@@ -1004,7 +1016,7 @@ def restart_tables(scenario):
         ("flight_damped_ms", "there, the belfry's longest time off the shaft (ms)", ".1f"),
         ("within", "within 3% (critically damped, tc = 1 ms) and 0.5% (damped)", ""),
     ]
-    write_table("mujoco-stack-landings", columns, landings)
+    write_table("mujoco-stack-landings", columns, landings, digits=SIGNIFICANT_DIGITS)
     bounces = []
     for name, block in BOUNCING.items():
         for level_tc in (2e-3, 1e-3):
@@ -1024,6 +1036,7 @@ def restart_tables(scenario):
             ("within", "within 0.2%", ""),
         ],
         bounces,
+        digits=SIGNIFICANT_DIGITS,
     )
     return restarted, landings
 
