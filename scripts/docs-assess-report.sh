@@ -16,10 +16,11 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 figures=docs/src/figures/assess
-out=target/docs-assess
+target="${CARGO_TARGET_DIR:-target}"
+out="$target/docs-assess"
 cargo build --release --locked -p rocking-cli --bin rocking
 rm -rf "$out"
-target/release/rocking assess examples/sant-anna-cervino/assess.toml --out "$out"
+"$target/release/rocking" assess examples/sant-anna-cervino/assess.toml --out "$out"
 cp "$out/report.html" "$out/assessment.json" "$figures/"
 chromium="${ROCKING_CHROMIUM:-$(command -v chromium || command -v chromium-browser || true)}"
 if [[ -z "$chromium" ]]; then
@@ -27,5 +28,5 @@ if [[ -z "$chromium" ]]; then
     exit 1
 fi
 "$chromium" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=900,2300 \
-    --screenshot="$root/$figures/report-top.png" "file://$root/$out/report.html" 2>/dev/null
+    --screenshot="$root/$figures/report-top.png" "file://$(cd "$out" && pwd)/report.html" 2>/dev/null
 echo "wrote $figures/report.html, assessment.json, report-top.png"

@@ -245,9 +245,14 @@ fn the_docs_example_report_is_the_generated_one() {
     let dir = tempdir();
     let r = rocking(&["assess", "examples/sant-anna-cervino/assess.toml", "--out", arg(dir.path())]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
+    // The report's closing section is of the run (its date, the commit): left out.
+    let of_the_run = |text: String| match (text.find("<section id=\"provenance\">"), text.find("</section>\n</body>")) {
+        (Some(a), Some(b)) if a < b => format!("{}{}", &text[..a], &text[b + "</section>\n".len()..]),
+        _ => text,
+    };
     for name in ["report.html", "assessment.json"] {
-        let committed = read(&root().join("docs/src/figures/assess").join(name));
-        let generated = read(&dir.path().join(name));
+        let committed = of_the_run(read(&root().join("docs/src/figures/assess").join(name)));
+        let generated = of_the_run(read(&dir.path().join(name)));
         // Compared line by line so that a failure names the first line that differs.
         for (i, (c, g)) in committed.lines().zip(generated.lines()).enumerate() {
             assert!(
@@ -406,4 +411,39 @@ fn a_belfry_is_a_mechanism_of_its_own() {
             assert!(svg.contains(color), "no point filled {color} in the ADRS figure");
         }
     }
+}
+
+/// The report's closing section (issue 47, item 1): the date the report was
+/// made (SOURCE_DATE_EPOCH = 86,400 s: 1970-01-02 00:00:00 UTC, by hand),
+/// the commit of the checkout the command was built from (`git rev-parse
+/// HEAD`, asked here), each input file's SHA-256 as `sha256sum` computes it,
+/// and the statement of NTC 2018 §10.2.
+#[cfg(unix)]
+#[test]
+fn the_report_closes_with_what_made_it() {
+    use std::process::Command;
+    let dir = tempdir();
+    let file = write(dir.path(), "assess.toml", &tower_on_b());
+    let out = dir.path().join("out");
+    let run = Command::new(env!("CARGO_BIN_EXE_rocking"))
+        .args(["assess", arg(&file), "--out", arg(&out)])
+        .env("SOURCE_DATE_EPOCH", "86400")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let report = read(&out.join("report.html"));
+    let section = &report[report.find("<section id=\"provenance\">").unwrap_or_else(|| panic!("no closing section"))..];
+    assert!(section.contains("<span id=\"made-on\">1970-01-02 00:00:00</span>"), "{section}");
+    let git = Command::new("git")
+        .args(["rev-parse", "HEAD"])
+        .current_dir(root())
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let commit = String::from_utf8_lossy(&git.stdout).trim().to_string();
+    assert!(section.contains(&format!("<code id=\"commit\">{commit}</code>")), "{section}");
+    let sum = Command::new("sha256sum").arg(&file).output().unwrap_or_else(|e| panic!("{e}"));
+    let digest = String::from_utf8_lossy(&sum.stdout).split_whitespace().next().unwrap_or_default().to_string();
+    assert_eq!(digest.len(), 64);
+    assert!(section.contains(&format!("<code>sha256:{digest}</code>")), "{section}");
+    assert!(section.contains("NTC 2018 §10.2") && section.contains("judgement of the engineer"), "{section}");
 }

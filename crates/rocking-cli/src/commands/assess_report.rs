@@ -679,6 +679,44 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
             }
         }
     }
+    let _ = writeln!(out, "{}", provenance(input));
     let _ = writeln!(out, "</body></html>");
     Ok(out)
+}
+
+/// The closing section: when and by what the report was made, the
+/// fingerprints of the files it was made from, and the statement NTC 2018
+/// §10.2 asks of a calculation made by software. On lines of their own
+/// between its tags (the tests of the committed example report leave it out:
+/// it is of the run).
+fn provenance(input: &AssessmentInput) -> String {
+    // SOURCE_DATE_EPOCH (the reproducible-builds convention) fixes the date.
+    let date = std::env::var("SOURCE_DATE_EPOCH")
+        .ok()
+        .and_then(|s| s.parse::<i64>().ok())
+        .and_then(|s| jiff::Timestamp::from_second(s).ok())
+        .unwrap_or_else(jiff::Timestamp::now);
+    let mut files = vec![input.origin().to_path_buf()];
+    files.extend(input.inputs());
+    let rows: String = files
+        .iter()
+        .map(|f| {
+            let digest = std::fs::read(f).map_or_else(|e| format!("not read: {e}"), |bytes| crate::shard::fingerprint(&bytes));
+            format!(
+                "<tr><td><code>{}</code></td><td><code>{}</code></td></tr>\n",
+                esc(&f.display().to_string()),
+                esc(&digest)
+            )
+        })
+        .collect();
+    format!(
+        "<section id=\"provenance\">\n<h2>About this report</h2>\n\
+         <p>Made on <span id=\"made-on\">{}</span> (UTC) by rocking {} (commit <code id=\"commit\">{}</code>), from these files:</p>\n\
+         <table id=\"fingerprints\"><tr><th>file</th><th>SHA-256</th></tr>\n{rows}</table>\n\
+         <p id=\"software\">NTC 2018 §10.2: the calculation was made by rocking, open-source software that integrates the rocking of rigid blocks on a sliding building and checks them to NTC 2018 and the Circolare 2019 n. 7 as its book describes (the model, its assumptions, and the checks of each formula); its validation against closed forms, papers and other programs is the book's validation page, with the tables and the commands that reproduce them. The software does not judge: whether the model fits the building, the inputs are right and the results acceptable is the judgement of the engineer who signs the calculation.</p>\n\
+         </section>",
+        date.strftime("%Y-%m-%d %H:%M:%S"),
+        env!("CARGO_PKG_VERSION"),
+        env!("ROCKING_COMMIT"),
+    )
 }
