@@ -173,8 +173,7 @@ impl Assessment {
             (None, Vec::new())
         } else {
             // One fitting range for every mechanism: stretched to the longest T_SLC.
-            let t_slc = blocks.iter().map(|b| b.capacity.t_slc).fold(capacity.t_slc, f64::max);
-            let set = RecordSet::read_cached(input, t_slc, cache)?;
+            let set = RecordSet::read_cached(input, input.longest_t_slc()?, cache)?;
             let roles = [Role::LifeSafety, Role::Collapse];
             let mechanisms: Vec<(usize, &Capacity)> = std::iter::once((0, &capacity)).chain(blocks.iter().map(|b| (b.block, &b.capacity))).collect();
             let most = roles.len() * most_runs_of(set.records.len(), &input.lambda, mechanisms.len());

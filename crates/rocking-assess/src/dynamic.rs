@@ -27,7 +27,7 @@ use crate::search::AgCapacity;
 use crate::site::Role;
 use rayon::prelude::*;
 use rocking::{GroundMotion, Record};
-use rocking_codes::{default_period_range, fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT};
+use rocking_codes::{fit_record_set, response_spectrum, FittedSet, LimitState, PeriodGrid, SetRule, DEFAULT_DAMPING_PCT};
 use rocking_scenario::{Case, Error, Fault, RecordCache, RunOptions, Scenario};
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -36,7 +36,9 @@ pub const LAMBDA_TOLERANCE: f64 = 1e-3;
 
 /// The periods of the response spectra: 100, log-spaced from 0.02 s to the
 /// larger of 4 s and the fitting range's end.
-fn periods(range_to: f64) -> Result<Vec<f64>, rocking_codes::Error> {
+/// The periods (s) of the record set's spectra when the fitting range ends at
+/// `range_to`: 100 log-spaced from 0.02 s to the larger of 4 s and `range_to`.
+pub fn set_periods(range_to: f64) -> Result<Vec<f64>, rocking_codes::Error> {
     PeriodGrid {
         from: 0.02,
         to: range_to.max(4.0),
@@ -172,8 +174,8 @@ impl RecordSet {
     /// before (the towers of an inventory read each record file once).
     pub fn read_cached(input: &AssessmentInput, t_slc: f64, cache: &RecordCache) -> Result<Self, Error> {
         let origin = input.origin();
-        let range = input.file.period_range.unwrap_or_else(|| default_period_range(Some(t_slc)));
-        let periods = periods(range.1).map_err(|e| Fault::invalid("assessment.period_range", e.to_string()).in_file(origin))?;
+        let range = input.fitting_range(t_slc);
+        let periods = set_periods(range.1).map_err(|e| Fault::invalid("assessment.period_range", e.to_string()).in_file(origin))?;
         let g = input.model().gravity();
         let records = input
             .file

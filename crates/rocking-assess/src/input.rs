@@ -276,6 +276,20 @@ impl AssessmentInput {
         Self::new(file).map(Some)
     }
 
+    /// The longest secant period at collapse T_SLC of the tower's mechanisms
+    /// (the tower's and each block's): the dynamic checks' fitting range is
+    /// stretched to it.
+    pub fn longest_t_slc(&self) -> Result<f64, Error> {
+        (1..=self.blocks().len()).try_fold(self.capacity()?.t_slc, |t, k| Ok(t.max(self.block_capacity(k)?.t_slc)))
+    }
+
+    /// The range of periods (s) over which the dynamic checks fit the record
+    /// set when the longest T_SLC is `t_slc`: `assessment.period_range`, else
+    /// the code's, stretched to cover `t_slc` ([`default_period_range`]).
+    pub fn fitting_range(&self, t_slc: f64) -> (f64, f64) {
+        self.file.period_range.unwrap_or_else(|| rocking_codes::default_period_range(Some(t_slc)))
+    }
+
     /// The names of the blocks on the tower, the lowest first.
     pub fn blocks(&self) -> &rocking_scenario::BlockNames {
         self.scenario.blocks()

@@ -64,8 +64,8 @@ pub use capacity::{
 };
 pub use check::{acceleration_ratio, least_zeta_e, verdict, verdicts, Check, Level, Method, MethodText, Unit, Verdict};
 pub use dynamic::{
-    combined_response, dynamic_check, dynamic_check_ticking, dynamic_checks_ticking, most_runs, most_runs_of, DynamicCheck, LambdaPoint, RecordResponse,
-    RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
+    combined_response, dynamic_check, dynamic_check_ticking, dynamic_checks_ticking, most_runs, most_runs_of, set_periods, DynamicCheck, LambdaPoint,
+    RecordResponse, RecordSet, SetRecord, Tick, LAMBDA_TOLERANCE,
 };
 pub use error::Error;
 pub use height::{

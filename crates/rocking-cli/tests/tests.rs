@@ -31,6 +31,7 @@ mod regression_spectrum_dt;
 mod regression_spectrum_hangs;
 mod regression_spectrum_period_count;
 mod regression_spectrum_record_peak;
+mod regression_spectrum_site_fits_as_assess;
 mod regression_stack_seat_impulse_ratio;
 mod run;
 mod shard;

@@ -123,7 +123,7 @@ fn write_columns(path: &Path, shown: &Path, periods: &[f64], columns: &[(String,
 pub fn execute(args: &Args) -> anyhow::Result<()> {
     let periods = periods(args.periods.as_deref())?;
     match &args.site {
-        Some(site) => site_form(args, site, &periods),
+        Some(site) => site_form(args, site, periods),
         None => records_form(args, &periods),
     }
 }
@@ -214,10 +214,26 @@ fn records_form(args: &Args, periods: &[f64]) -> anyhow::Result<()> {
 }
 
 /// `rocking spectrum --site ASSESS.toml`.
-fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
+fn site_form(args: &Args, path: &Path, periods: Vec<f64>) -> anyhow::Result<()> {
     let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
     // The file's errors name the file, the key and the cause.
     let assessment = AssessmentFile::from_toml_str(&text, path)?;
+    // With a [tower] the records are fitted as `rocking assess` fits them (in
+    // the file's direction): over its range, stretched to the longest T_SLC of
+    // the tower's mechanisms, on its periods unless --periods gives others.
+    // Without one, over the code's range (0.15 s to 2 s).
+    let (periods, range) = if assessment.scenario.contains_key("tower") {
+        let input = rocking_assess::AssessmentInput::new(assessment.clone())?;
+        let range = input.fitting_range(input.longest_t_slc()?);
+        let periods = match &args.periods {
+            Some(_) => periods,
+            None => rocking_assess::set_periods(range.1).map_err(|e| anyhow::anyhow!("{}: assessment.period_range: {e}", path.display()))?,
+        };
+        (periods, range)
+    } else {
+        (periods, assessment.period_range.unwrap_or_else(|| default_period_range(None)))
+    };
+    let periods = periods.as_slice();
     let g = assessment.g;
     let site = &assessment.site;
     let code_columns = code_spectra_columns(site, periods, g).map_err(|e| anyhow::anyhow!("{}: site: {e}", path.display()))?;
@@ -252,7 +268,6 @@ fn site_form(args: &Args, path: &Path, periods: &[f64]) -> anyhow::Result<()> {
     // The record set, fitted to each dynamic limit state the site has.
     let records = assessment.read_records()?;
     let names = record_names(&records.iter().map(|(p, _)| p.clone()).collect::<Vec<_>>());
-    let range = assessment.period_range.unwrap_or_else(|| default_period_range(None));
     let mut fits: Vec<(LimitState, FittedSet)> = Vec::new();
     if !records.is_empty() {
         let set: Vec<Record> = records.iter().map(|(_, r)| r.clone()).collect();
