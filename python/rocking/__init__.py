@@ -418,9 +418,13 @@ def inventory(
     Returns:
         The columns of ``inventory.csv``, one row per tower in input order: ``id``,
         ``name`` (object arrays of ``str``), ``lon``, ``lat`` (float64, ``NaN`` where
-        not a number), each check's ``<LS>_<method>_ag_capacity_g`` and
-        ``<LS>_<method>_zeta_E`` (float64, ``NaN`` where not completed), ``zeta_E``
-        (the governing, least one), ``governing`` (``"SLV linear_kinematic"``) and
+        not a number), the tower's inputs (``tower.width``, ``tower.height``, ``soil``,
+        ``topography``, then the towers' file's other columns: the values it was
+        assessed with), the site's ``ag_<LS>_g`` of each limit state, each check's
+        ``<LS>_<method>_ag_capacity_g`` and ``<LS>_<method>_zeta_E`` (float64, ``NaN``
+        where not completed), ``zeta_E`` (the governing, least one),
+        ``zeta_E_is_lower_bound`` (bool: the governing ζ_E is only the top of the
+        search or of the λ scan), ``governing`` (``"SLV linear_kinematic"``) and
         ``error`` (``""``, or the one line of a bad row: the other towers are assessed).
 
     Raises:

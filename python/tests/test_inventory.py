@@ -33,7 +33,7 @@ def assert_table_is_csv(table: Dict[str, np.ndarray], rows: List[Dict[str, str]]
     """Every column of `table` is that of the CSV rows: the same names in the
     same order, text equal, numbers equal to the CSV's text read as a float
     (exactly: the command writes each float's shortest round-trip form), NaN
-    where the CSV is empty."""
+    where the CSV is empty, a boolean its true or false."""
     assert list(table) == list(rows[0])
     for name, column in table.items():
         assert len(column) == len(rows), name
@@ -44,6 +44,9 @@ def assert_table_is_csv(table: Dict[str, np.ndarray], rows: List[Dict[str, str]]
                     assert math.isnan(got), (name, i, got)
                 else:
                     assert got == float(text), (name, i, got, text)
+            elif column.dtype == np.bool_:
+                # zeta_E_is_lower_bound: the CSV's true/false.
+                assert text in ("true", "false") and bool(got) == (text == "true"), (name, i, got, text)
             else:
                 assert got == text, (name, i, got, text)
 

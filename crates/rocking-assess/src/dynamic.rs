@@ -111,6 +111,20 @@ pub struct LambdaPoint {
     pub complete: bool,
 }
 
+impl LambdaPoint {
+    /// The records (their indices in the set) whose response reaches `d0`:
+    /// each one alone makes the check fail at this λ (a block that overturns
+    /// reaches it too, [`RecordResponse::displacement_or`]).
+    pub fn reaching_d0(&self, d0: f64) -> Vec<usize> {
+        self.responses
+            .iter()
+            .enumerate()
+            .filter(|(_, r)| r.as_ref().is_ok_and(|r| r.displacement_or(d0) >= d0))
+            .map(|(i, _)| i)
+            .collect()
+    }
+}
+
 /// The non-linear dynamic check of one limit state.
 #[derive(Debug, Clone)]
 pub struct DynamicCheck {

@@ -38,6 +38,9 @@ const KINEMATIC: [(Role, Method); 4] = [
 const DYNAMIC: [(Role, Method); 2] = [(Role::LifeSafety, Method::NonlinearDynamic), (Role::Collapse, Method::NonlinearDynamic)];
 /// Site columns that are keys of `[site]` under the same name.
 const SITE_COLUMNS: [&str; 5] = ["soil", "topography", "ST", "VN", "CU"];
+/// The inputs every tower's row repeats, whether or not the towers' file has
+/// their columns: the tower's width and height, the site's soil and topography.
+const INPUTS: [&str; 4] = ["tower.width", "tower.height", "soil", "topography"];
 /// The keys of `[site]` that give the parameters from a hazard grid.
 const GRID_KEYS: [&str; 5] = ["grid", "lon", "lat", "VN", "CU"];
 
@@ -252,6 +255,53 @@ fn key_fault(key: &str, blocks: &BlockNames) -> Option<String> {
     ))
 }
 
+/// The key of `[site]` that a site column (`soil`, `ag_SLV`) replaces, if it is one of [`SITE_COLUMNS`].
+fn site_key(name: &str) -> Option<String> {
+    SITE_COLUMNS.contains(&name).then(|| format!("site.{name}"))
+}
+
+/// The value of a dotted key (`tower.width`, `site.SLV.ag`) in `table`, if it holds one.
+fn dotted_value<'a>(table: &'a Table, key: &str) -> Option<&'a Value> {
+    let mut parts = key.split('.');
+    let mut value = table.get(parts.next()?)?;
+    for part in parts {
+        value = value.as_table()?.get(part)?;
+    }
+    Some(value)
+}
+
+/// The assessment file's table as it is checked by itself: with a hazard
+/// grid and no `site.lon`, `site.lat` (every tower gives its own: a column
+/// replaces the key it names, and nothing is required twice), the place of
+/// the first tower that has a valid one. Without such a tower the table is
+/// as given, and its fault names `site.lon`.
+fn placed(base: &Table, towers: &[u8]) -> Table {
+    let mut table = base.clone();
+    let Some(Value::Table(site)) = table.get_mut("site") else { return table };
+    if !site.contains_key("grid") || (site.contains_key("lon") && site.contains_key("lat")) {
+        return table;
+    }
+    let towers = towers.strip_prefix(b"\xEF\xBB\xBF".as_slice()).unwrap_or(towers);
+    let mut reader = csv::ReaderBuilder::new()
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .delimiter(separator(towers))
+        .from_reader(towers);
+    let Ok(header) = reader.headers().cloned() else { return table };
+    let (Some(lon), Some(lat)) = (header.iter().position(|h| h == "lon"), header.iter().position(|h| h == "lat")) else {
+        return table;
+    };
+    let place = reader.records().map_while(Result::ok).find_map(|r| {
+        let lon = crate::town::degrees(r.get(lon)?, 180.0)?;
+        Some((lon, crate::town::degrees(r.get(lat)?, 90.0)?))
+    });
+    if let Some((lon, lat)) = place {
+        site.entry("lon").or_insert(Value::Float(lon));
+        site.entry("lat").or_insert(Value::Float(lat));
+    }
+    table
+}
+
 /// The assessment file's table with the row's cells set in it.
 fn row_table(base: &Table, row: &Line, file: &Path, lon: f64, lat: f64) -> Result<Table, String> {
     let mut table = base.clone();
@@ -317,6 +367,11 @@ pub struct Inventory {
     short: Vec<Option<String>>,
     /// The checks of the columns, in order.
     checks: Vec<(LimitState, Method)>,
+    /// The damage, life-safety and collapse limit states of the site.
+    states: [LimitState; 3],
+    /// The inputs repeated in each row: the column's name and the key of the
+    /// assessment file it replaces (whose value an empty cell takes).
+    repeated: Vec<(String, String)>,
     /// The files the assessment file reads (its grid, its records).
     inputs: Vec<PathBuf>,
     /// The hazard grid and the records, read once for all the towers.
@@ -351,7 +406,7 @@ impl Inventory {
     /// dict, the page's JSON give one), the hazard grid taken from `grids`
     /// when it holds it (the page gives the grid's text, not a file).
     pub fn from_table(base: Table, origin: &Path, towers: &[u8], file: &Path, grids: GridCache) -> Result<Self, InventoryError> {
-        let input = AssessmentInput::new(AssessmentFile::from_table_on(base.clone(), origin, &grids)?)?;
+        let input = AssessmentInput::new(AssessmentFile::from_table_on(placed(&base, towers), origin, &grids)?)?;
         let ntc = input.site.is_ntc();
         let records = RecordCache::with_capacity(input.file.records.len());
         let mut checks: Vec<(LimitState, Method)> = KINEMATIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)).collect();
@@ -377,6 +432,18 @@ impl Inventory {
         for (name, column) in header.iter().zip(&columns) {
             if let Some(what) = matches!(column, Column::Key(_)).then(|| key_fault(name, &blocks)).flatten() {
                 return Err(towers_error(format!("{}: column {name}: {what}", file.display())));
+            }
+        }
+        // The inputs each row repeats: INPUTS, then the file's own columns, each once.
+        let mut repeated: Vec<(String, String)> = INPUTS
+            .iter()
+            .map(|name| (name.to_string(), site_key(name).unwrap_or_else(|| name.to_string())))
+            .collect();
+        for (name, column) in header.iter().zip(&columns) {
+            if let Column::Site(key) | Column::Key(key) = column {
+                if !repeated.iter().any(|(n, _)| n == name) {
+                    repeated.push((name.to_string(), key.clone()));
+                }
             }
         }
         let rows = reader.records().collect::<Result<Vec<_>, _>>().map_err(cannot_read)?;
@@ -428,6 +495,8 @@ impl Inventory {
             repeats,
             short,
             checks,
+            states: Role::ALL.map(|role| role.limit_state(ntc)),
+            repeated,
             inputs: input.inputs(),
             grids,
             records,
@@ -450,16 +519,49 @@ impl Inventory {
         &self.checks
     }
 
-    /// The header of `inventory.csv`: `id`, `name`, `lon`, `lat`, each check's
-    /// `<LS>_<method>_ag_capacity_g` and `<LS>_<method>_zeta_E`, `zeta_E`, `governing`, `error`.
+    /// The header of `inventory.csv`: `id`, `name`, `lon`, `lat`; the tower's
+    /// inputs (`tower.width`, `tower.height`, `soil`, `topography`, then the
+    /// towers' file's other columns, each the value the tower was assessed
+    /// with); the site's `ag_<LS>_g` of each limit state; each check's
+    /// `<LS>_<method>_ag_capacity_g` and `<LS>_<method>_zeta_E`; `zeta_E`,
+    /// `zeta_E_is_lower_bound`, `governing`, `error`.
     pub fn header(&self) -> Vec<String> {
         let mut header: Vec<String> = IDENTITY.iter().map(|s| s.to_string()).collect();
+        header.extend(self.repeated.iter().map(|(name, _)| name.clone()));
+        header.extend(self.states.iter().map(|state| format!("ag_{state}_g")));
         for (state, method) in &self.checks {
             header.push(format!("{state}_{method}_ag_capacity_g"));
             header.push(format!("{state}_{method}_zeta_E"));
         }
-        header.extend(["zeta_E", "governing", "error"].map(String::from));
+        header.extend(["zeta_E", "zeta_E_is_lower_bound", "governing", "error"].map(String::from));
         header
+    }
+
+    /// The inputs row `index` repeats: each its cell, or where that is empty
+    /// the assessment file's value of the key it names (empty if the file
+    /// leaves it to its default); a number as a number.
+    fn repeated_cells(&self, index: usize) -> Vec<Cell> {
+        let line = &self.lines[index];
+        self.repeated
+            .iter()
+            .map(|(name, key)| {
+                let value = match line.get(name) {
+                    Some(text) if matches!(name.as_str(), "soil" | "topography") => Value::String(text.to_string()),
+                    Some(text) => cell_value(text),
+                    None => match dotted_value(&self.base, key) {
+                        Some(v) => v.clone(),
+                        None => return Cell::Empty,
+                    },
+                };
+                match value {
+                    Value::Float(x) => Cell::Float(x),
+                    Value::Integer(i) => Cell::Int(i),
+                    Value::Boolean(b) => Cell::Bool(b),
+                    Value::String(t) => Cell::Text(t),
+                    other => Cell::Text(other.to_string()),
+                }
+            })
+            .collect()
     }
 
     /// The `id` of tower `index` as given (empty if none).
@@ -520,6 +622,8 @@ impl Inventory {
             }
         }
         let mut cells = self.identity(index);
+        cells.extend(self.repeated_cells(index));
+        cells.extend(Role::ALL.map(|role| Cell::Float(input.site.spectrum(role).ag())));
         // The tower's checks, each the worse of the two principal directions when it has two.
         let mut completed = done.mechanisms()[0].completed();
         if let Some(turned) = &done.turned {
@@ -535,18 +639,23 @@ impl Inventory {
                 None => cells.extend([Cell::Empty, Cell::Empty]),
             }
         }
-        // The governing of every mechanism in both directions, a block's named, the depth's said.
+        // The governing of every mechanism in both directions, a block's named, the depth's said;
+        // its ζ_E a lower bound when its ag capacity is the top of the search or of the λ scan.
         let across = |m: &crate::MechanismView<'_>| match m.direction {
             crate::Direction::Width => String::new(),
             crate::Direction::Depth => " across the depth".to_string(),
         };
         match done.governing_mechanism() {
-            Some((m, g)) if m.block > 0 => cells.extend([
+            Some((m, g)) => cells.extend([
                 Cell::Float(g.zeta_e),
-                Cell::Text(format!("{} {} {}{}", m.name, g.limit_state, g.method, across(&m))),
+                Cell::Bool(g.ag_capacity.is_lower_bound()),
+                Cell::Text(if m.block > 0 {
+                    format!("{} {} {}{}", m.name, g.limit_state, g.method, across(&m))
+                } else {
+                    format!("{} {}{}", g.limit_state, g.method, across(&m))
+                }),
             ]),
-            Some((m, g)) => cells.extend([Cell::Float(g.zeta_e), Cell::Text(format!("{} {}{}", g.limit_state, g.method, across(&m)))]),
-            None => cells.extend([Cell::Empty, Cell::Empty]),
+            None => cells.extend([Cell::Empty, Cell::Empty, Cell::Empty]),
         }
         // A dynamic check that could not be completed: the others stand, the reason is the error.
         let incomplete: Vec<String> = done
@@ -588,7 +697,8 @@ impl Cases for Inventory {
     }
     fn failed_row(&self, index: usize, message: &str) -> Row {
         let mut cells = self.identity(index);
-        cells.extend(std::iter::repeat_n(Cell::Empty, 2 * self.checks.len() + 2));
+        cells.extend(self.repeated_cells(index));
+        cells.extend(std::iter::repeat_n(Cell::Empty, self.states.len() + 2 * self.checks.len() + 3));
         cells.push(Cell::Text(message.to_string()));
         Row { index, cells }
     }

@@ -79,9 +79,12 @@ pub use kinematic::{
     linear_kinematic_demand, nonlinear_kinematic_check, soil_factor, DEFAULT_Q, NONLINEAR_DAMPING_COLLAPSE_PCT, NONLINEAR_DAMPING_LIFE_SAFETY_PCT,
 };
 pub use outputs::{
-    assessment_json, capacity_csv, capacity_json, check_json, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json, verdict_json,
-    Quantity, CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER, SEAT_IMPULSE_COLUMN,
+    assessment_json, capacity_csv, capacity_json, check_json, d0_meaning, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json,
+    verdict_json, Quantity, CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER, SEAT_IMPULSE_COLUMN,
 };
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};
-pub use town::{degrees, ranking, Ranked, Town, IDENTITY};
+pub use town::{
+    decimals, degrees, ranking, rounded, shapefile_aliases, shapefile_safe, Ranked, Town, AG_DECIMALS, DEGREE_DECIMALS, IDENTITY, LOWER_BOUND,
+    SHAPEFILE_NAME_MAX, ZETA_DECIMALS,
+};

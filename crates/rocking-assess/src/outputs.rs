@@ -29,6 +29,15 @@ pub struct Quantity {
     pub meaning: &'static str,
 }
 
+/// What `d0` is, for the mechanism of the tower (`the tower`) or of a block (`the belfry`):
+/// [`D0_MEANING`] with the block named.
+pub fn d0_meaning(block: &str) -> String {
+    format!("displacement at which a* vanishes: {block} overturns")
+}
+
+/// What `d0` is, whichever block the mechanism turns ([`d0_meaning`] names it).
+pub const D0_MEANING: &str = "displacement at which a* vanishes: the mechanism's block overturns";
+
 /// The capacity's quantities in the order of report.html and the page (each
 /// a field of [`capacity_json`]; the curve's kind aside).
 pub const CAPACITY_QUANTITIES: [Quantity; 12] = [
@@ -78,7 +87,7 @@ pub const CAPACITY_QUANTITIES: [Quantity; 12] = [
         key: "d0_m",
         symbol_html: "d<sub>0</sub> = R sin α",
         unit: "m",
-        meaning: "displacement at which a* vanishes: the tower overturns",
+        meaning: D0_MEANING,
     },
     Quantity {
         key: "d_SLV_m",

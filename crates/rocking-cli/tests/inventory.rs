@@ -178,6 +178,11 @@ fn each_bad_row_gets_its_own_error_and_the_others_are_right() {
     assert_row_is_assess(&header, &rows[6], &good_f);
 }
 
+/// `text` rounded to `decimals`: the number its decimal text so rounded reads back as.
+fn rounded(text: &str, decimals: usize) -> f64 {
+    format!("{:.decimals$}", number(text)).parse().unwrap_or_else(|_| panic!("{text}"))
+}
+
 #[test]
 fn the_geojson_reads_back_as_points_with_the_csv_properties() {
     let dir = tempdir();
@@ -189,23 +194,106 @@ fn the_geojson_reads_back_as_points_with_the_csv_properties() {
         panic!("not a FeatureCollection")
     };
     assert_eq!(collection.features.len(), rows.len());
+    // The inputs and the site's ag of each limit state are columns, as the tower was assessed with them.
+    for name in [
+        "tower.width",
+        "tower.height",
+        "soil",
+        "topography",
+        "tower.mass",
+        "assessment.confidence_factor",
+        "ag_SLD_g",
+        "ag_SLV_g",
+        "ag_SLC_g",
+    ] {
+        assert!(header.iter().any(|h| h == name), "no column {name} in {header:?}");
+    }
     for (feature, row) in collection.features.iter().zip(&rows) {
         let Some(geojson::Value::Point(position)) = feature.geometry.as_ref().map(|g| &g.value) else {
             panic!("not a point: {feature:?}")
         };
-        // RFC 7946: longitude first, in degrees, the value written in towers.csv.
+        // RFC 7946: longitude first, in degrees, the value written in towers.csv to 6 decimals (a tenth of a metre).
         assert_eq!(position.len(), 2);
-        assert_eq!(position[0].to_bits(), number(cell(&header, row, "lon")).to_bits());
-        assert_eq!(position[1].to_bits(), number(cell(&header, row, "lat")).to_bits());
+        assert_eq!(position[0].to_bits(), rounded(cell(&header, row, "lon"), 6).to_bits());
+        assert_eq!(position[1].to_bits(), rounded(cell(&header, row, "lat"), 6).to_bits());
         assert_eq!(feature.id, Some(geojson::feature::Id::String(cell(&header, row, "id").to_string())));
-        for name in header.iter().filter(|h| h.ends_with("_g") || h.ends_with("zeta_E")) {
-            let value = feature.property(name).and_then(|v| v.as_f64()).unwrap_or_else(|| panic!("no {name}"));
-            assert_eq!(value.to_bits(), number(cell(&header, row, name)).to_bits(), "{name}");
+        // An acceleration in g to 4 decimals, a ζ_E to 3: the CSV's full number so rounded.
+        for (suffix, decimals) in [("_g", 4), ("zeta_E", 3)] {
+            for name in header.iter().filter(|h| h.ends_with(suffix)) {
+                let value = feature.property(name).and_then(|v| v.as_f64()).unwrap_or_else(|| panic!("no {name}"));
+                assert_eq!(value.to_bits(), rounded(cell(&header, row, name), decimals).to_bits(), "{name}");
+                // No more digits than those (the 17 of a double were the fault).
+                let written = serde_json::to_string(feature.property(name).unwrap_or_else(|| panic!("{name}"))).unwrap_or_default();
+                assert!(written.split('.').nth(1).is_none_or(|d| d.len() <= decimals), "{name}: {written}");
+            }
         }
+        // The inputs: a number as a number, a category as text; an empty cell takes the assessment file's value.
+        let given = |name: &str| feature.property(name).unwrap_or_else(|| panic!("no {name}"));
+        assert_eq!(
+            given("tower.width").as_f64().map(f64::to_bits),
+            Some(number(cell(&header, row, "tower.width")).to_bits())
+        );
+        assert_eq!(
+            given("tower.height").as_f64().map(f64::to_bits),
+            Some(number(cell(&header, row, "tower.height")).to_bits())
+        );
+        assert_eq!(given("soil").as_str(), Some(cell(&header, row, "soil")));
+        assert_eq!(
+            given("zeta_E_is_lower_bound").as_bool(),
+            Some(cell(&header, row, "zeta_E_is_lower_bound") == "true")
+        );
         assert_eq!(feature.property("governing").and_then(|v| v.as_str()), Some(cell(&header, row, "governing")));
         assert_eq!(feature.property("name").and_then(|v| v.as_str()), Some(cell(&header, row, "name")));
         assert!(feature.property("error").is_some_and(|v| v.is_null()));
     }
+    // The example's file leaves soil and topography empty on some rows: the assessment file's values fill them.
+    let (given_header, given_rows) = csv_table(&root().join("examples/town/towers.csv"));
+    let assess: toml::Table = read(&root().join("examples/town/assess.toml")).parse().unwrap_or_else(|e| panic!("{e}"));
+    let site = |key: &str| assess["site"][key].as_str().unwrap_or_else(|| panic!("site.{key}")).to_string();
+    for (input, row) in given_rows.iter().zip(&rows) {
+        for (name, default) in [("soil", site("soil")), ("topography", site("topography"))] {
+            let default = default.as_str();
+            let cell_given = cell(&given_header, input, name);
+            assert_eq!(cell(&header, row, name), if cell_given.is_empty() { default } else { cell_given });
+        }
+    }
+}
+
+#[test]
+fn fields_csv_gives_every_property_a_name_a_shapefile_keeps() {
+    let dir = tempdir();
+    let out = dir.path().join("out");
+    example_town(&out, &[]);
+    let (header, _) = inventory_csv(&out);
+    let (fields_header, fields) = csv_table(&out.join("fields.csv"));
+    assert_eq!(fields_header, ["property", "alias"]);
+    // Every property of the GeoJSON (every column but the point's lon, lat), in order.
+    let properties: Vec<&String> = header.iter().filter(|h| *h != "lon" && *h != "lat").collect();
+    assert_eq!(fields.iter().map(|f| &f[0]).collect::<Vec<_>>(), properties);
+    // dBase: at most 10 bytes of ASCII letters, digits and _, a letter first, distinct without regard to case.
+    let mut seen = std::collections::HashSet::new();
+    for f in &fields {
+        let alias = &f[1];
+        assert!(alias.len() <= 10 && alias.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_'), "{alias}");
+        assert!(alias.bytes().next().is_some_and(|b| b.is_ascii_alphabetic()), "{alias}");
+        assert!(seen.insert(alias.to_ascii_lowercase()), "{alias} twice");
+    }
+    // The names of the checks as written by hand in the docs (guide/town.md).
+    let alias = |name: &str| {
+        fields
+            .iter()
+            .find(|f| f[0] == name)
+            .map(|f| f[1].as_str())
+            .unwrap_or_else(|| panic!("no {name}"))
+    };
+    assert_eq!(alias("SLD_activation_ag_capacity_g"), "SLD_act_ag");
+    assert_eq!(alias("SLV_linear_kinematic_zeta_E"), "SLV_lk_z");
+    assert_eq!(alias("SLC_nonlinear_kinematic_zeta_E"), "SLC_nk_z");
+    assert_eq!(alias("zeta_E_is_lower_bound"), "zeta_E_lb");
+    assert_eq!(alias("assessment.confidence_factor"), "c_factor");
+    assert_eq!(alias("tower.height"), "height");
+    // It is the run's own: the folder's manifest lists it.
+    assert!(read(&out.join(".rocking-manifest")).lines().any(|l| l == "fields.csv"));
 }
 
 #[test]
@@ -223,7 +311,14 @@ fn one_three_and_seven_shards_merge_to_the_unsharded_files() {
         let rows = read(&out.join("inventory.csv")).lines().count() - 1;
         assert_eq!(rows, k * 12 / n - (k - 1) * 12 / n, "shard {k}/{n}");
     };
-    assert_shards_merge_to_whole(dir.path(), &whole, &["inventory.csv", "inventory.geojson"], &[1, 3, 7], shard, check_shard);
+    assert_shards_merge_to_whole(
+        dir.path(),
+        &whole,
+        &["inventory.csv", "inventory.geojson", "fields.csv"],
+        &[1, 3, 7],
+        shard,
+        check_shard,
+    );
 }
 
 #[test]

@@ -31,6 +31,11 @@ pub struct Args {
     /// ends; other files and inputs never are.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    /// Also write the report's figures as files beside it, SVG and PNG:
+    /// report_adrs (report_adrs_<mechanism> with blocks), and with a record
+    /// set report_set_<LS> and report_lambda_<LS>[_<mechanism>].
+    #[arg(long)]
+    pub plot: bool,
     /// Worker threads of the dynamic checks [default: one per core].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub threads: Option<u32>,
@@ -67,6 +72,11 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
 /// name): assessment.json, capacity.csv, report.html, and with a record set
 /// records.csv and spectra.csv.
 pub fn write_files(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Assessment) -> anyhow::Result<()> {
+    write_files_plotted(dir, shown, input, done, false).map(|_| ())
+}
+
+/// As [`write_files`], and with `plot` the report's figures as SVG and PNG beside it; returns the figures' file names.
+pub fn write_files_plotted(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Assessment, plot: bool) -> anyhow::Result<Vec<String>> {
     let write = |name: &str, text: String| std::fs::write(dir.join(name), text).with_context(|| format!("cannot write {}", shown.join(name).display()));
     output::write_summary(&dir.join(ASSESSMENT_JSON), &shown.join(ASSESSMENT_JSON), &done.json(input))?;
     write(CAPACITY_CSV, done.capacity_csv())?;
@@ -74,7 +84,12 @@ pub fn write_files(dir: &Path, shown: &Path, input: &AssessmentInput, done: &Ass
         write(RECORDS_CSV, records)?;
         write(SPECTRA_CSV, spectra)?;
     }
-    write(REPORT_HTML, super::assess_report::report_html(input, done)?)
+    let (html, figures) = super::assess_report::report_and_figures(input, done)?;
+    write(REPORT_HTML, html)?;
+    if plot {
+        return figures.write(dir).context("drawing the figures");
+    }
+    Ok(Vec::new())
 }
 
 fn assess(args: &Args) -> anyhow::Result<()> {
@@ -96,8 +111,12 @@ fn assess(args: &Args) -> anyhow::Result<()> {
     let staging = output::Staging::new(&dir, &inputs)?;
 
     let done = Assessment::run(&file)?;
-    write_files(staging.folder(), &dir, &file, &done)?;
+    let figures = write_files_plotted(staging.folder(), &dir, &file, &done, args.plot)?;
+    let figure_outputs: Vec<PathBuf> = figures.iter().map(|f| dir.join(f)).collect();
+    output::refuse_to_overwrite_inputs(&figure_outputs, &inputs)?;
     staging.commit()?;
+    let mut names: Vec<&str> = names;
+    names.extend(figures.iter().map(String::as_str));
 
     let mechanisms = done.mechanisms();
     let stacked = mechanisms.len() > 1;

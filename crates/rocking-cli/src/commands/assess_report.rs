@@ -9,11 +9,12 @@
 use crate::format::sig;
 use crate::plot::{chart_svg, spectra_svg, Band, Curve, Ink, LineChart, Marker, Shape, SpectraFigure, BLUE, GREEN, OVERTURN, VERMILION};
 use rocking_assess::{
-    capacity_json, linear_kinematic_demand, soil_factor, Assessment, AssessmentInput, Capacity, Check, DynamicCheck, MechanismView, Method, RecordSet, Role,
-    CAPACITY_QUANTITIES,
+    capacity_json, d0_meaning, linear_kinematic_demand, soil_factor, Assessment, AssessmentInput, Capacity, Check, DynamicCheck, MechanismView, Method,
+    RecordSet, Role, CAPACITY_QUANTITIES,
 };
 use rocking_codes::{CodeSpectrum, LimitState, COMPATIBILITY_LOWER, COMPATIBILITY_UPPER};
 use std::fmt::Write;
+use std::path::Path;
 
 /// Escapes text for HTML.
 pub(crate) fn esc(text: &str) -> String {
@@ -36,6 +37,51 @@ pub(crate) fn scalable(svg: String, size: (u32, u32)) -> String {
     } else {
         svg.replacen("<svg ", &format!("<svg viewBox=\"0 0 {} {}\" ", size.0, size.1), 1)
     }
+}
+
+/// A figure of the report, kept to be written as files too (`rocking assess --plot`).
+pub enum ReportFigure {
+    /// A chart on linear axes (the ADRS plane, the λ scans).
+    Chart(LineChart),
+    /// Spectra on log axes (a record set fitted to a limit state).
+    Spectra(SpectraFigure),
+}
+
+/// The report's figures in the order of the page, each with its file stem
+/// (`report_adrs`, `report_set_SLV`, `report_lambda_SLV_belfry`).
+#[derive(Default)]
+pub struct Figures(pub Vec<(String, ReportFigure)>);
+
+impl Figures {
+    /// The figure's SVG for the page (scalable), the figure kept under `stem`.
+    fn inline(&mut self, stem: String, figure: ReportFigure) -> anyhow::Result<String> {
+        let svg = match &figure {
+            ReportFigure::Chart(chart) => scalable(chart_svg(chart)?, crate::plot::CHART_SIZE),
+            ReportFigure::Spectra(spectra) => scalable(spectra_svg(spectra)?, crate::plot::SPECTRA_SIZE),
+        };
+        self.0.push((stem, figure));
+        Ok(svg)
+    }
+
+    /// Writes every figure into `dir` as `<stem>.svg` and `<stem>.png`, returning their file names.
+    pub fn write(&self, dir: &Path) -> anyhow::Result<Vec<String>> {
+        let mut names = Vec::new();
+        for (stem, figure) in &self.0 {
+            match figure {
+                ReportFigure::Chart(chart) => crate::plot::chart_figure(dir, stem, chart)?,
+                ReportFigure::Spectra(spectra) => crate::plot::spectra_figure(dir, stem, spectra)?,
+            };
+            names.extend([format!("{stem}.svg"), format!("{stem}.png")]);
+        }
+        Ok(names)
+    }
+}
+
+/// A name's part of a figure's file stem: ASCII letters, digits, `-` and `_` kept, any other character `_`.
+fn stem_part(name: &str) -> String {
+    name.chars()
+        .map(|c| if c.is_ascii_alphanumeric() || c == '-' || c == '_' { c } else { '_' })
+        .collect()
 }
 
 /// The file name of a record's path (the whole path when it has none), so
@@ -101,7 +147,7 @@ fn check_row(out: &mut String, c: &Check, q: f64) {
 /// the life-safety one, vermilion the collapse one), the shape what the point
 /// is (a square the ultimate displacement, a triangle the non-linear kinematic
 /// demand that the capacity meets, a cross a demand beyond it).
-fn adrs_figure(capacity: &Capacity, checks: &[Check], life_safety: LimitState, of: &str) -> anyhow::Result<String> {
+fn adrs_figure(figs: &mut Figures, stem: String, capacity: &Capacity, checks: &[Check], life_safety: LimitState, of: &str) -> anyhow::Result<String> {
     let points = capacity.curve_points(201);
     let mut markers = vec![
         Marker {
@@ -144,10 +190,10 @@ fn adrs_figure(capacity: &Capacity, checks: &[Check], life_safety: LimitState, o
         }],
         markers,
     };
-    Ok(scalable(chart_svg(&chart)?, (1000, 620)))
+    figs.inline(stem, ReportFigure::Chart(chart))
 }
 
-fn spectra_figure(set: &RecordSet, d: &DynamicCheck) -> anyhow::Result<String> {
+fn spectra_figure(figs: &mut Figures, set: &RecordSet, d: &DynamicCheck) -> anyhow::Result<String> {
     let (a, b) = set.range;
     let mut curves: Vec<Curve> = set
         .records
@@ -194,10 +240,41 @@ fn spectra_figure(set: &RecordSet, d: &DynamicCheck) -> anyhow::Result<String> {
         band: Some(band),
         range: Some((a, b)),
     };
-    Ok(scalable(spectra_svg(&figure)?, (1000, 680)))
+    figs.inline(format!("report_set_{}", d.limit_state), ReportFigure::Spectra(figure))
 }
 
-fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64, name: &str) -> anyhow::Result<String> {
+/// Why the check fails at the scan's point `lambda`: the records that reach
+/// d0 there, by their files' names (each alone fails the check), else the
+/// set's combined response beyond d_LS, else a record that did not run.
+fn failure_reason(d: &DynamicCheck, set: &RecordSet, lambda: f64, d_ls: f64, d0: f64) -> String {
+    let Some(p) = d.scan.iter().find(|p| (p.lambda - lambda).abs() < 1e-12) else {
+        return String::new();
+    };
+    let names: Vec<&str> = p
+        .reaching_d0(d0)
+        .iter()
+        .filter_map(|&i| set.records.get(i))
+        .map(|r| file_name(&r.path))
+        .collect();
+    match names.as_slice() {
+        [] if !p.complete => ": a record did not run".into(),
+        [] => format!(
+            ": the {} response {} m is beyond d_{} = {} m",
+            match d.fitted.rule {
+                rocking_codes::SetRule::Mean => "mean",
+                rocking_codes::SetRule::Largest => "largest",
+            },
+            sig(p.combined, 3),
+            d.limit_state,
+            sig(d_ls, 3)
+        ),
+        [one] => format!(": {one} reaches d0"),
+        [a, b] => format!(": {a} and {b} reach d0"),
+        [a, b, rest @ ..] => format!(": {a}, {b} and {} more reach d0", rest.len()),
+    }
+}
+
+fn lambda_figure(figs: &mut Figures, d: &DynamicCheck, set: &RecordSet, d_ls: f64, d0: f64, name: &str) -> anyhow::Result<String> {
     let mut scan: Vec<(f64, f64)> = d.scan.iter().map(|p| (p.lambda, p.combined)).collect();
     scan.sort_by(|x, y| x.0.total_cmp(&y.0));
     let top = scan.last().map_or(1.0, |p| p.0);
@@ -211,7 +288,7 @@ fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64, name: &str) -> anyhow::Re
             color: GREEN,
         });
         markers.push(Marker {
-            label: format!("fails at λ = {}", sig(hi, 4)),
+            label: format!("fails at λ = {}{}", sig(hi, 4), failure_reason(d, set, hi, d_ls, d0)),
             at: (hi, at(hi)),
             shape: Shape::Cross,
             color: OVERTURN,
@@ -254,7 +331,12 @@ fn lambda_figure(d: &DynamicCheck, d_ls: f64, d0: f64, name: &str) -> anyhow::Re
         ],
         markers,
     };
-    Ok(scalable(chart_svg(&chart)?, (1000, 620)))
+    let stem = if name.is_empty() {
+        format!("report_lambda_{}", d.limit_state)
+    } else {
+        format!("report_lambda_{}_{}", d.limit_state, stem_part(name))
+    };
+    figs.inline(stem, ReportFigure::Chart(chart))
 }
 
 fn site_rows(out: &mut String, input: &AssessmentInput) {
@@ -291,8 +373,8 @@ fn site_rows(out: &mut String, input: &AssessmentInput) {
     let _ = writeln!(out, "</table>");
 }
 
-/// The table of a capacity and its curve's formula.
-fn capacity_table(out: &mut String, capacity: &Capacity) {
+/// The table of a capacity and its curve's formula; `block` names what the mechanism turns (`the tower`, `the belfry`).
+fn capacity_table(out: &mut String, capacity: &Capacity, block: &str) {
     let b = capacity.radius * capacity.alpha.sin();
     let h = capacity.radius * capacity.alpha.cos();
     let _ = writeln!(out, "<table><tr><th>quantity</th><th>meaning</th><th>value</th></tr>");
@@ -306,11 +388,8 @@ fn capacity_table(out: &mut String, capacity: &Capacity) {
     for q in CAPACITY_QUANTITIES {
         let value = values[q.key].as_f64().map_or_else(String::new, |v| sig(v, 4));
         let unit = if q.unit.is_empty() { String::new() } else { format!(" {}", q.unit) };
-        let _ = writeln!(
-            out,
-            "<tr><td>{}</td><td>{}</td><td class=\"n\">{value}{unit}</td></tr>",
-            q.symbol_html, q.meaning
-        );
+        let meaning = if q.key == "d0_m" { esc(&d0_meaning(block)) } else { q.meaning.to_string() };
+        let _ = writeln!(out, "<tr><td>{}</td><td>{meaning}</td><td class=\"n\">{value}{unit}</td></tr>", q.symbol_html);
     }
     let _ = writeln!(out, "</table>");
     let _ = writeln!(
@@ -320,6 +399,22 @@ fn capacity_table(out: &mut String, capacity: &Capacity) {
             rocking_assess::CurveKind::Linear => "linear, a*(d) = a<sub>0</sub>* (1 − d/d<sub>0</sub>)",
             rocking_assess::CurveKind::Exact => "exact, a*(θ) = g tan(α − θ)/FC, d*(θ) = R (sin α − sin(α − θ))",
         }
+    );
+}
+
+/// The note under a mechanism's checks on its linear kinematic check, with
+/// its own a0* (`of`: ` of the belfry` in a stacked report, else empty).
+fn linear_note(out: &mut String, input: &AssessmentInput, capacity: &Capacity, of: &str) {
+    let life_safety = input.site.spectrum(Role::LifeSafety);
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">The linear kinematic check's capacity is q times the activation's, both in g. Eq. C8.7.1.9 with the {} spectrum's own soil factor reads a<sub>g</sub> S / q = {} m/s² against a<sub>0</sub>*{} = {} m/s² at the site's a<sub>g</sub> = {} g (S = {}); the two differ where S there differs from S at activation (NTC subsoils B–E, where S moves with a<sub>g</sub> and F<sub>0</sub>).</p>",
+        input.site.limit_state(Role::LifeSafety),
+        sig(linear_kinematic_demand(&life_safety, input.file.q, capacity.g), 4),
+        esc(of),
+        sig(capacity.a0_star, 4),
+        sig(life_safety.ag(), 4),
+        sig(soil_factor(&life_safety), 4)
     );
 }
 
@@ -424,8 +519,15 @@ fn other_direction(done: &Assessment, turned: &Assessment, input: &AssessmentInp
     )
 }
 
-/// The page.
-pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result<String> {
+/// The page (`report.html`) and its figures, to be written as files too (`--plot`).
+pub fn report_and_figures(input: &AssessmentInput, done: &Assessment) -> anyhow::Result<(String, Figures)> {
+    let mut kept = Figures::default();
+    let html = report(input, done, &mut kept)?;
+    Ok((html, kept))
+}
+
+/// The page, each figure kept in `figs` as it is drawn.
+fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> anyhow::Result<String> {
     let (capacity, checks, dynamic) = (&done.capacity, &done.checks, done.dynamic_part());
     let mechanisms = done.mechanisms();
     let stacked = mechanisms.len() > 1;
@@ -521,11 +623,11 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                 }
             };
             let _ = writeln!(out, "<h3>{}</h3>\n<p>{what}.</p>", esc(m.name));
-            capacity_table(&mut out, m.capacity);
+            capacity_table(&mut out, m.capacity, &format!("the {}", m.name));
         }
     } else {
         let _ = writeln!(out, "<h2>1. The tower and its capacity</h2>");
-        capacity_table(&mut out, capacity);
+        capacity_table(&mut out, capacity, "the tower");
     }
     let _ = writeln!(out, "<h2>2. The site</h2>");
     let _ = writeln!(
@@ -542,25 +644,19 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
         }
         checks_table(&mut out, m, input.file.q);
         if stacked {
-            let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve of {} with its ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(m.capacity, m.checks, input.site.limit_state(Role::LifeSafety), &format!(": {}", m.name))?, esc(m.name));
+            linear_note(&mut out, input, m.capacity, &format!(" of the {}", m.name));
+            let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve of {} with its ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(figs, format!("report_adrs_{}", stem_part(m.name)), m.capacity, m.checks, input.site.limit_state(Role::LifeSafety), &format!(": {}", m.name))?, esc(m.name));
         }
     }
     let _ = writeln!(
         out,
         "<p class=\"note\">ζ<sub>E</sub> = a<sub>g,capacity</sub> / a<sub>g</sub>; a check holds when ζ<sub>E</sub> ≥ 1. The non-linear kinematic capacity is not taken below the activation's. “≥” marks a capacity beyond the search (2 g, or the last λ).</p>"
     );
-    let life_safety = input.site.spectrum(Role::LifeSafety);
-    let _ = writeln!(
-        out,
-        "<p class=\"note\">The linear kinematic check's capacity is q times the activation's, both in g. Eq. C8.7.1.9 with the {} spectrum's own soil factor reads a<sub>g</sub> S / q = {} m/s² against a<sub>0</sub>* = {} m/s² at the site's a<sub>g</sub> = {} g (S = {}); the two differ where S there differs from S at activation (NTC subsoils B–E, where S moves with a<sub>g</sub> and F<sub>0</sub>).</p>",
-        input.site.limit_state(Role::LifeSafety),
-        sig(linear_kinematic_demand(&life_safety, input.file.q, capacity.g), 4),
-        sig(capacity.a0_star, 4),
-        sig(life_safety.ag(), 4),
-        sig(soil_factor(&life_safety), 4)
-    );
     if !stacked {
-        let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(capacity, checks, input.site.limit_state(Role::LifeSafety), "")?);
+        linear_note(&mut out, input, capacity, "");
+    }
+    if !stacked {
+        let _ = writeln!(out, "<figure>{}<figcaption>The capacity curve with the ultimate displacements and the non-linear kinematic demands at the site's a<sub>g</sub>: blue the life-safety limit state, vermilion the collapse one; a square the ultimate displacement, a triangle a demand that holds, a cross one that fails.</figcaption></figure>", adrs_figure(figs, "report_adrs".into(), capacity, checks, input.site.limit_state(Role::LifeSafety), "")?);
     }
 
     if let Some((set, dynamic)) = dynamic {
@@ -612,7 +708,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                     }
                 );
             }
-            let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(set, d)?);
+            let _ = writeln!(out, "<figure>{}</figure>", spectra_figure(figs, set, d)?);
             // A stack's table: one max d* column per mechanism under a shared
             // head, a fall marked in its cell, so that the five blocks a tower
             // may carry fit the printed page's width as the tower alone does.
@@ -675,7 +771,7 @@ pub fn report_html(input: &AssessmentInput, done: &Assessment) -> anyhow::Result
                     m.capacity.d_slc
                 };
                 let of = if stacked { format!(" of {}", esc(m.name)) } else { String::new() };
-                let _ = writeln!(out, "<figure>{}<figcaption>The response{of} at each λ of the scan and of the bisection; the first λ at which the check fails is the one reported.</figcaption></figure>", lambda_figure(d, d_ls, m.capacity.d0, if stacked { m.name } else { "" })?);
+                let _ = writeln!(out, "<figure>{}<figcaption>The response{of} at each λ of the scan and of the bisection; the first λ at which the check fails is the one reported, and the legend says why: the records that reach d<sub>0</sub> there (each alone fails the check), else the set's response beyond d<sub>{}</sub>.</figcaption></figure>", lambda_figure(figs, d, set, d_ls, m.capacity.d0, if stacked { m.name } else { "" })?, d.limit_state);
             }
         }
     }

@@ -5,13 +5,13 @@
 //! line's part: the files read and written, the towers run on the sweep's
 //! engine (all cores, rows written in input order as they finish, memory
 //! flat, a progress bar, Ctrl-C keeping the rows finished), `--details`,
-//! `--shard`. Writes `inventory.csv` and `inventory.geojson` (`town.rs`),
+//! `--shard`. Writes `inventory.csv`, `inventory.geojson` and `fields.csv` (`town.rs`),
 //! with `--plot` the map and the ranking, and `report.html`.
 
 use super::assess::REPORT_HTML;
 use super::rows::{write_rows, RowsFile, Written};
 use super::sweep::Interrupted;
-use super::town::{INVENTORY_CSV, INVENTORY_GEOJSON};
+use super::town::{fields_csv, FIELDS_CSV, INVENTORY_CSV, INVENTORY_GEOJSON};
 use super::town_report::{town_html, TownPage};
 use crate::format::sig;
 use crate::output;
@@ -97,7 +97,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     let mut inventory = Inventory::new(&text, &args.assess, &towers_bytes, file)?;
 
     let dir = args.out.clone().unwrap_or_else(|| super::run::default_out(&args.towers));
-    let mut names = vec![INVENTORY_CSV, INVENTORY_GEOJSON];
+    let mut names = vec![INVENTORY_CSV, INVENTORY_GEOJSON, FIELDS_CSV];
     if args.shard.is_some() {
         names.push(SHARD_JSON);
     } else {
@@ -129,6 +129,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     }
 
     let header = inventory.header();
+    std::fs::write(staging.path(FIELDS_CSV), fields_csv(&header)).with_context(|| format!("cannot write {}", dir.join(FIELDS_CSV).display()))?;
     let geojson_shown = dir.join(INVENTORY_GEOJSON);
     let geojson_context = || format!("cannot write {}", geojson_shown.display());
     let geojson_file = File::create(staging.path(INVENTORY_GEOJSON)).with_context(geojson_context)?;

@@ -146,7 +146,7 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
     created.keep();
     let mut written = vec![target.clone()];
     if first.kind == "inventory" {
-        written.push(finish_inventory(&args.out, &target)?);
+        written.extend(finish_inventory(&args.out, &target)?);
     }
     if first.kind == "fragility" {
         written.extend(finish_fragility(&first_dir.join(SHARD_JSON), first, &args.out, &target)?);
@@ -184,19 +184,27 @@ fn finish_fragility(json: &Path, manifest: &Manifest, out: &Path, stripes: &Path
     super::fragility::fit_merged(&study, stripes, out)
 }
 
-/// The merged towers' `inventory.geojson`, made from the merged `inventory.csv` as `rocking inventory` makes it.
-fn finish_inventory(out: &Path, csv: &Path) -> anyhow::Result<PathBuf> {
-    use super::town::{from_csv, INVENTORY_GEOJSON};
+/// The merged towers' `inventory.geojson` and `fields.csv`, made from the merged `inventory.csv` as `rocking inventory` makes them.
+fn finish_inventory(out: &Path, csv: &Path) -> anyhow::Result<[PathBuf; 2]> {
+    use super::town::{fields_csv, from_csv, FIELDS_CSV, INVENTORY_GEOJSON};
+    let temp_for = |name: &str| {
+        tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .tempfile_in(out)
+            .with_context(|| format!("cannot write in {}", out.display()))
+    };
     let target = out.join(INVENTORY_GEOJSON);
-    let temp = tempfile::Builder::new()
-        .prefix(&format!(".{INVENTORY_GEOJSON}."))
-        .tempfile_in(out)
-        .with_context(|| format!("cannot write in {}", out.display()))?;
-    from_csv(csv, temp.path(), &target)?;
-    temp.persist_noclobber(&target)
-        .map_err(|e| e.error)
-        .with_context(|| format!("cannot write {}", target.display()))?;
-    Ok(target)
+    let temp = temp_for(INVENTORY_GEOJSON)?;
+    let (_, header) = from_csv(csv, temp.path(), &target)?;
+    let fields = out.join(FIELDS_CSV);
+    let fields_temp = temp_for(FIELDS_CSV)?;
+    std::fs::write(fields_temp.path(), fields_csv(&header)).with_context(|| format!("cannot write {}", fields.display()))?;
+    for (temp, target) in [(temp, &target), (fields_temp, &fields)] {
+        temp.persist_noclobber(target)
+            .map_err(|e| e.error)
+            .with_context(|| format!("cannot write {}", target.display()))?;
+    }
+    Ok([target, fields])
 }
 
 /// The shards in order 1..=N, after checking they are all the shards of one study, each once.

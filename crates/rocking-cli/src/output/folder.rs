@@ -33,7 +33,7 @@ use tempfile::TempDir;
 /// Every file name this tool writes into an output folder: a manifest's
 /// entry is removed only if it is one of these (a manifest edited by hand
 /// cannot make a run remove another file).
-pub const KNOWN: [&str; 43] = [
+pub const KNOWN: [&str; 48] = [
     "summary.json",
     "history.csv",
     "events.csv",
@@ -77,7 +77,19 @@ pub const KNOWN: [&str; 43] = [
     "report.html",
     "inventory.csv",
     "inventory.geojson",
+    "fields.csv",
+    "town_map.svg",
+    "town_map.png",
+    "town_ranking.svg",
+    "town_ranking.png",
 ];
+
+/// Whether this tool writes a file of this name: one of [`KNOWN`], or a
+/// figure of `rocking assess --plot` (`report_*.svg`, `report_*.png`, named
+/// for the limit states and the blocks of its file).
+pub fn is_known(name: &str) -> bool {
+    KNOWN.contains(&name) || (name.starts_with("report_") && (name.ends_with(".svg") || name.ends_with(".png")) && !name.contains(['/', '\\']))
+}
 
 /// The manifest of an output folder: the names of the files the last run
 /// that committed there wrote.
@@ -205,7 +217,7 @@ impl Staging {
         }
         for name in &listed {
             let old = self.dir.join(name);
-            if KNOWN.contains(&name.as_str()) && !written.contains(name) && old.is_file() && !is_input(&old, &self.inputs) {
+            if is_known(name) && !written.contains(name) && old.is_file() && !is_input(&old, &self.inputs) {
                 std::fs::remove_file(&old).with_context(|| format!("cannot remove {} of an earlier run", old.display()))?;
             }
         }

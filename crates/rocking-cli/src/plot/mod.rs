@@ -45,6 +45,16 @@ pub fn spectra_svg(figure: &SpectraFigure) -> anyhow::Result<String> {
     style::render_svg(spectra::SIZE, figure)
 }
 
+/// The size (px) of a chart on linear axes.
+pub const CHART_SIZE: (u32, u32) = chart::SIZE;
+/// The size (px) of a figure of spectra.
+pub const SPECTRA_SIZE: (u32, u32) = spectra::SIZE;
+
+/// Draws a chart on linear axes into `dir/<stem>.svg` and `.png`, returning the files.
+pub fn chart_figure(dir: &Path, stem: &str, chart: &LineChart) -> anyhow::Result<Vec<PathBuf>> {
+    style::render(dir, stem, chart::SIZE, chart)
+}
+
 /// A chart on linear axes as an SVG string, for a page.
 pub fn chart_svg(chart: &LineChart) -> anyhow::Result<String> {
     style::render_svg(chart::SIZE, chart)

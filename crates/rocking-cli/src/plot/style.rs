@@ -245,9 +245,37 @@ pub fn xy_mesh<'a, 'b, DB: DrawingBackend>(
     mesh
 }
 
-/// A vertical colour bar filling `area`: viridis from 0 to `top`, its axis
-/// described by `desc`, and a white line across it at `mark` if given (ζ_E = 1).
-pub fn colour_bar<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, top: f64, desc: &str, mark: Option<f64>) -> anyhow::Result<()>
+/// The colour of a ζ_E on a scale from 0 to `top` that changes hue at 1:
+/// below, where a check fails, reds from dark (0) to light (just below 1);
+/// from 1 up, where it holds, blues from light (1) to dark (`top`) — the ends
+/// and the middles of ColorBrewer's RdBu, so that 0.9 and 1.02, close in
+/// value, are apart in hue (a sequential scale gave them one green).
+pub fn fails_holds(z: f64, top: f64) -> RGBColor {
+    const FAILS: [(f64, f64, f64); 3] = [(103.0, 0.0, 31.0), (214.0, 96.0, 77.0), (244.0, 165.0, 130.0)];
+    const HOLDS: [(f64, f64, f64); 3] = [(146.0, 197.0, 222.0), (67.0, 147.0, 195.0), (5.0, 48.0, 97.0)];
+    let (stops, x) = if !z.is_finite() || z < 1.0 {
+        (FAILS, if z.is_finite() { z.max(0.0) } else { 0.0 })
+    } else {
+        (HOLDS, ((z - 1.0) / (top - 1.0).max(1e-9)).min(1.0))
+    };
+    let position = x * 2.0;
+    let k = (position.floor() as usize).min(1);
+    let f = position - k as f64;
+    let (a, b) = (stops[k], stops[k + 1]);
+    let mix = |p: f64, q: f64| (p + (q - p) * f).round().clamp(0.0, 255.0) as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// A vertical colour bar filling `area`: `colour` of each value from 0 to
+/// `top`, its axis described by `desc`, and a white line across it at `mark`
+/// if given (ζ_E = 1).
+pub fn colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    top: f64,
+    desc: &str,
+    mark: Option<f64>,
+    colour: &dyn Fn(f64) -> RGBColor,
+) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,
 {
@@ -271,7 +299,7 @@ where
     let steps = 120;
     chart.draw_series((0..steps).map(|k| {
         let (a, b) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
-        Rectangle::new([(0.0, a * top), (1.0, b * top)], viridis((a + b) / 2.0).filled())
+        Rectangle::new([(0.0, a * top), (1.0, b * top)], colour((a + b) / 2.0 * top).filled())
     }))?;
     if let Some(m) = mark.filter(|m| (0.0..=top).contains(m)) {
         chart.draw_series(std::iter::once(PathElement::new(vec![(0.0, m), (1.0, m)], WHITE.stroke_width(3))))?;
@@ -290,6 +318,22 @@ mod tests {
         assert_eq!(viridis(1.0), RGBColor(253, 231, 37));
         assert_eq!(viridis(7.0), viridis(1.0));
         assert_eq!(viridis(f64::NAN), viridis(0.0));
+    }
+
+    #[test]
+    fn the_town_scale_turns_from_red_to_blue_at_one() {
+        // The stops as written: dark red at 0, light red below 1, light blue at 1, dark blue at the top.
+        assert_eq!(fails_holds(0.0, 3.0), RGBColor(103, 0, 31));
+        assert_eq!(fails_holds(0.999_999_999, 3.0), RGBColor(244, 165, 130));
+        assert_eq!(fails_holds(1.0, 3.0), RGBColor(146, 197, 222));
+        assert_eq!(fails_holds(3.0, 3.0), RGBColor(5, 48, 97));
+        assert_eq!(fails_holds(7.0, 3.0), fails_holds(3.0, 3.0));
+        // The example's 0.885 and a 1.02: red against blue (red channel above blue, then below).
+        let (fails, holds) = (fails_holds(0.885, 2.2), fails_holds(1.02, 2.2));
+        assert!(fails.0 > fails.2 && holds.0 < holds.2, "{fails:?} {holds:?}");
+        // Halfway up the reds, the middle stop.
+        assert_eq!(fails_holds(0.5, 3.0), RGBColor(214, 96, 77));
+        assert_eq!(fails_holds(2.0, 3.0), RGBColor(67, 147, 195));
     }
 
     #[test]

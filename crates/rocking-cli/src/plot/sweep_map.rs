@@ -141,7 +141,7 @@ impl Figure for MapFigure<'_> {
         let (w, _) = body.dim_in_pixel();
         let (map, bar) = body.split_horizontally(w.saturating_sub(BAR_AREA));
         let top = self.top();
-        style::colour_bar(&bar, top, "max θ/α (–)", None)?;
+        style::colour_bar(&bar, top, "max θ/α (–)", None, &|v| viridis(v / top))?;
 
         // One cell per case, equal in size, at whole-number positions (the
         // values label them): a grid of any spacing reads as a table.

@@ -1,10 +1,10 @@
 //! The figures of a town's inventory: `town_map` (the towers at their
-//! longitude and latitude, coloured by their governing ζ_E, with a colour bar;
-//! no map tiles) and `town_ranking` (the towers of least ζ_E as bars, the
+//! longitude and latitude, each named, coloured by their governing ζ_E on a
+//! scale that turns from red to blue at ζ_E = 1, with a colour bar; no map tiles) and `town_ranking` (the towers of least ζ_E as bars, the
 //! colour of each its governing check, the line ζ_E = 1).
 
 use super::legend::{self, Entry, Swatch};
-use super::style::{self, size, text, viridis, Figure, CYCLE, GREY, INK};
+use super::style::{self, fails_holds, size, text, Figure, CYCLE, GREY, INK};
 use crate::format::sig;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -83,7 +83,7 @@ impl MapFigure<'_> {
 
     fn subtitle(&self) -> String {
         let placed = self.towers.iter().filter(|t| t.point.is_some()).count();
-        let mut parts = vec!["colour: the governing ζ_E = ag capacity / ag (below 1 a check fails)".to_string()];
+        let mut parts = vec!["colour: the governing ζ_E = ag capacity / ag; red fails (below 1), blue holds".to_string()];
         if placed < self.towers.len() {
             parts.push(format!("{} without a place not shown", self.towers.len() - placed));
         }
@@ -97,15 +97,18 @@ impl Figure for MapFigure<'_> {
         DB::ErrorType: 'static,
     {
         let rest = style::title_band(root, self.title, &self.subtitle())?;
-        let mut entries = Vec::new();
+        let top = colour_top(self.towers);
+        let mut entries = vec![
+            Entry::new(Swatch::Square(fails_holds(0.5, top)), "ζ_E < 1: fails"),
+            Entry::new(Swatch::Square(fails_holds((1.0 + top) / 2.0, top)), "ζ_E ≥ 1: holds"),
+        ];
         if self.towers.iter().any(|t| t.zeta.is_none() && t.point.is_some()) {
             entries.push(Entry::new(Swatch::Square(NOT_ASSESSED), "not assessed (see its error)"));
         }
         let body = legend::above(&rest, MAP_LEFT, &entries)?;
         let (w, h) = body.dim_in_pixel();
         let (map, bar) = body.split_horizontally(w.saturating_sub(BAR_AREA));
-        let top = colour_top(self.towers);
-        style::colour_bar(&bar, top, "governing ζ_E (–)", Some(1.0))?;
+        style::colour_bar(&bar, top, "governing ζ_E (–): fails below 1", Some(1.0), &|z| fails_holds(z, top))?;
 
         // The plot's own size: the map less its label areas and margins.
         let plot_w = f64::from(w.saturating_sub(BAR_AREA)) - f64::from(MAP_LEFT) - 24.0;
@@ -124,7 +127,7 @@ impl Figure for MapFigure<'_> {
             let Some(p) = t.point else { continue };
             match t.zeta {
                 Some(z) => {
-                    chart.draw_series(std::iter::once(Circle::new(p, 8, viridis(z / top).filled())))?;
+                    chart.draw_series(std::iter::once(Circle::new(p, 8, fails_holds(z, top).filled())))?;
                     chart.draw_series(std::iter::once(Circle::new(p, 8, INK.stroke_width(1))))?;
                 }
                 None => {
@@ -132,9 +135,10 @@ impl Figure for MapFigure<'_> {
                 }
             }
             if named {
-                // The id right of the point, 11 px off.
+                // The name (the id when it has none) right of the point, 11 px off.
+                let label = if t.name.trim().is_empty() { &t.id } else { &t.name };
                 let style = text(size::TICK, INK).pos(Pos::new(HPos::Left, VPos::Center));
-                chart.draw_series(std::iter::once(EmptyElement::at(p) + Text::new(style::printable(&t.id), (11, 0), style)))?;
+                chart.draw_series(std::iter::once(EmptyElement::at(p) + Text::new(style::printable(label), (11, 0), style)))?;
             }
         }
         Ok(())

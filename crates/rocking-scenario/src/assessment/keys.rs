@@ -70,7 +70,7 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "°",
         "required with grid",
         "inside the grid",
-        "Longitude of the site (degrees east).",
+        "Longitude of the site (degrees east); for `rocking inventory`, each tower's `lon` column instead.",
         "14.43",
     ),
     key(
@@ -79,7 +79,7 @@ pub const ASSESSMENT_KEY_DOCS: &[KeyDoc] = &[
         "°",
         "required with grid",
         "inside the grid",
-        "Latitude of the site (degrees north).",
+        "Latitude of the site (degrees north); for `rocking inventory`, each tower's `lat` column instead.",
         "41.04",
     ),
     key(
