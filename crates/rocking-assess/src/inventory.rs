@@ -272,30 +272,19 @@ fn dotted_value<'a>(table: &'a Table, key: &str) -> Option<&'a Value> {
 
 /// The assessment file's table as it is checked by itself: with a hazard
 /// grid and no `site.lon`, `site.lat` (every tower gives its own: a column
-/// replaces the key it names, and nothing is required twice), the place of
-/// the first tower that has a valid one. Without such a tower the table is
-/// as given, and its fault names `site.lon`.
-fn placed(base: &Table, towers: &[u8]) -> Table {
+/// replaces the key it names, and nothing is required twice), at the grid's
+/// central node ([`GridCache::central_node`]), a place inside it whatever
+/// the towers' places. A grid that cannot be read leaves the table as
+/// given, and its check names the grid.
+fn placed(base: &Table, origin: &Path, grids: &GridCache) -> Table {
     let mut table = base.clone();
     let Some(Value::Table(site)) = table.get_mut("site") else { return table };
-    if !site.contains_key("grid") || (site.contains_key("lon") && site.contains_key("lat")) {
+    if site.contains_key("lon") && site.contains_key("lat") {
         return table;
     }
-    let towers = towers.strip_prefix(b"\xEF\xBB\xBF".as_slice()).unwrap_or(towers);
-    let mut reader = csv::ReaderBuilder::new()
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .delimiter(separator(towers))
-        .from_reader(towers);
-    let Ok(header) = reader.headers().cloned() else { return table };
-    let (Some(lon), Some(lat)) = (header.iter().position(|h| h == "lon"), header.iter().position(|h| h == "lat")) else {
-        return table;
-    };
-    let place = reader.records().map_while(Result::ok).find_map(|r| {
-        let lon = crate::town::degrees(r.get(lon)?, 180.0)?;
-        Some((lon, crate::town::degrees(r.get(lat)?, 90.0)?))
-    });
-    if let Some((lon, lat)) = place {
+    let Some(Value::String(grid)) = site.get("grid") else { return table };
+    let file = origin.parent().unwrap_or(Path::new("")).join(grid);
+    if let Some((lon, lat)) = grids.central_node(&file) {
         site.entry("lon").or_insert(Value::Float(lon));
         site.entry("lat").or_insert(Value::Float(lat));
     }
@@ -406,7 +395,7 @@ impl Inventory {
     /// dict, the page's JSON give one), the hazard grid taken from `grids`
     /// when it holds it (the page gives the grid's text, not a file).
     pub fn from_table(base: Table, origin: &Path, towers: &[u8], file: &Path, grids: GridCache) -> Result<Self, InventoryError> {
-        let input = AssessmentInput::new(AssessmentFile::from_table_on(placed(&base, towers), origin, &grids)?)?;
+        let input = AssessmentInput::new(AssessmentFile::from_table_on(placed(&base, origin, &grids), origin, &grids)?)?;
         let ntc = input.site.is_ntc();
         let records = RecordCache::with_capacity(input.file.records.len());
         let mut checks: Vec<(LimitState, Method)> = KINEMATIC.iter().map(|&(role, method)| (role.limit_state(ntc), method)).collect();

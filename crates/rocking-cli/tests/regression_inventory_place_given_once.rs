@@ -17,11 +17,12 @@ fn town(grid: &std::path::Path, place: &str) -> String {
 fn the_assessment_file_of_a_town_needs_no_place_of_its_own() {
     let dir = tempdir();
     let grid = root().join("data/hazard/synthetic_grid.txt");
-    // The first tower has no place: the file is checked at the first that has one.
+    // The first tower has no place, the second is outside the grid: each its
+    // row's error, and the file is still checked by itself (inside the grid).
     let towers = write(
         dir.path(),
         "towers.csv",
-        "id,lon,lat,tower.width\nA,,41.06,5.0\nB,14.34,41.06,5.0\nC,14.41,41.10,4.0\n",
+        "id,lon,lat,tower.width\nA,,41.06,5.0\nB,13.90,41.07,5.0\nC,14.34,41.06,5.0\nD,14.41,41.10,4.0\n",
     );
     let run = |name: &str, place: &str| {
         let assess = write(dir.path(), &format!("{name}.toml"), &town(&grid, place));
@@ -30,6 +31,12 @@ fn the_assessment_file_of_a_town_needs_no_place_of_its_own() {
         // Tower A has no lon: its row's error, the exit status 1, the others assessed.
         assert_eq!(r.code, Some(1), "{}", r.stderr);
         assert!(r.stderr.contains("row 1 (id A), column lon: missing"), "{}", r.stderr);
+        assert!(
+            r.stderr
+                .contains("row 2 (id B), column lon (\"13.90\"): the site (lon 13.9, lat 41.07) is outside the hazard grid"),
+            "{}",
+            r.stderr
+        );
         read(&out.join("inventory.csv"))
     };
     let without = run("without", "");

@@ -277,6 +277,20 @@ impl GridCache {
         Ok(Self(Mutex::new(Some((file.to_path_buf(), Arc::new(grid))))))
     }
 
+    /// The node of the grid of `file` nearest the mean of all its nodes'
+    /// places: a place inside the grid, where a file that gives none
+    /// (`rocking inventory`'s, whose towers give theirs) is checked by itself.
+    pub fn central_node(&self, file: &Path) -> Option<(f64, f64)> {
+        let grid = self.grid(file).ok()?;
+        let nodes = grid.nodes();
+        let count = nodes.len() as f64;
+        let (lon, lat) = nodes.iter().fold((0.0, 0.0), |(x, y), n| (x + n.lon / count, y + n.lat / count));
+        nodes
+            .iter()
+            .min_by(|a, b| ((a.lon - lon).powi(2) + (a.lat - lat).powi(2)).total_cmp(&((b.lon - lon).powi(2) + (b.lat - lat).powi(2))))
+            .map(|n| (n.lon, n.lat))
+    }
+
     /// The grid of `file`: the one kept if it is that file's, else read and parsed (and kept).
     fn grid(&self, file: &Path) -> Result<Arc<HazardGrid>, Fault> {
         let mut kept = self.0.lock().unwrap_or_else(PoisonError::into_inner);
