@@ -459,7 +459,7 @@ mod tests {
                         theta_dot: j,
                         ..State::default()
                     };
-                    let general = watch::watched(&kernel, regime, &piece, &Piece::Constant(0.0), list, 0.3, &y, None);
+                    let general = watch::watched(&kernel, regime, (&piece, &Piece::Constant(0.0)), list, 0.3, &y, None);
                     for (k, c) in list.iter().enumerate() {
                         let fast = c.theta_margin(pivot.sign(), crate::jet::Jet::new(y.theta, y.theta_dot));
                         assert_eq!(

@@ -85,7 +85,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
             None => {
                 self.integ.stepper.restart(rhs, t, y.components(), self.input.end);
                 let f = State::from_components(&self.integ.stepper.f);
-                self.cache.watch = watched(kernel, regime, &piece, &vpiece, list, t, &y, Some(accelerations_of(&f)));
+                self.cache.watch = watched(kernel, regime, (&piece, &vpiece), list, t, &y, Some(accelerations_of(&f)));
             }
         }
         self.integ.restart = false;
@@ -161,8 +161,7 @@ fn watched_at_end<const N: usize>(kernel: &Kernel, regime: Regime, input: &Input
     watched(
         kernel,
         regime,
-        &input.segment.piece,
-        &input.vsegment.piece,
+        (&input.segment.piece, &input.vsegment.piece),
         list,
         st.t,
         &y1,

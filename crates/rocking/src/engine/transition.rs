@@ -41,8 +41,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 self.cache.watch = watched(
                     self.kernel,
                     self.regime,
-                    &self.input.segment.piece,
-                    &self.input.vsegment.piece,
+                    (&self.input.segment.piece, &self.input.vsegment.piece),
                     list,
                     self.integ.t,
                     &self.integ.y,
@@ -98,8 +97,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let w = watched(
             self.kernel,
             stuck,
-            &self.input.segment.piece,
-            &self.input.vsegment.piece,
+            (&self.input.segment.piece, &self.input.vsegment.piece),
             &[starts],
             self.integ.t,
             &self.integ.y,
@@ -156,8 +154,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         let w = watched(
             self.kernel,
             standing,
-            &self.input.segment.piece,
-            &self.input.vsegment.piece,
+            (&self.input.segment.piece, &self.input.vsegment.piece),
             lifts,
             self.integ.t,
             &self.integ.y,

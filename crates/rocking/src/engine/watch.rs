@@ -22,16 +22,14 @@ pub(super) struct Watched {
     pub(super) fy: Jet,
 }
 
-/// [`Watched`] at `(t, y)`; `acc`, the accelerations there, if known (a
-/// rocking tower on a stuck building does not need them: its `θ̈` does not
-/// depend on `θ̇`).
+/// [`Watched`] at `(t, y)` under the input's horizontal and vertical
+/// pieces; `acc`, the accelerations there, if known (a rocking tower on a
+/// stuck building does not need them: its `θ̈` does not depend on `θ̇`).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub(super) fn watched(
     kernel: &Kernel,
     regime: Regime,
-    piece: &Piece,
-    vpiece: &Piece,
+    (piece, vpiece): (&Piece, &Piece),
     list: &[Condition],
     t: f64,
     y: &State,
@@ -93,7 +91,7 @@ pub(super) fn watched(
 /// [`Watched`] at `t` on a step's dense output.
 #[inline]
 pub(super) fn watched_on<const N: usize>(kernel: &Kernel, regime: Regime, pieces: (&Piece, &Piece), list: &[Condition], d: &DenseOutput<N>, t: f64) -> Watched {
-    watched(kernel, regime, pieces.0, pieces.1, list, t, &State::from_components(&d.state(t)), None)
+    watched(kernel, regime, pieces, list, t, &State::from_components(&d.state(t)), None)
 }
 
 /// The one condition `c` with its time derivative at `t` on a step's dense

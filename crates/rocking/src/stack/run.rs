@@ -416,6 +416,80 @@ impl Switches {
     }
 }
 
+/// The [`Instant`] at the start of a round and the right-hand side there,
+/// computed by [`Runner::due_now`] when a condition needs them: they open
+/// the regime's first step.
+type Opening<const N: usize, const S: usize> = (Instant<N>, [f64; S]);
+
+/// Where a run goes after a step or a round.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Next {
+    /// The next step of the same regime.
+    Step,
+    /// A new round from the time reached: a transition was applied, or the
+    /// input reached a kink.
+    Restart,
+    /// The run is over: its end, or an overturning.
+    End,
+}
+
+/// What a run carries from one step to the next, of a state of `S` numbers.
+struct Progress<const S: usize> {
+    /// What the run leaves, as far as it went.
+    out: StackRun,
+    /// The regime at `t`.
+    regime: StackRegime,
+    /// The state at `t`.
+    state: StackState,
+    /// The time reached (s).
+    t: f64,
+    /// The index of the next sample due.
+    next_sample: usize,
+    /// The interface last set down and the instant ([`StackEventKind::SetDown`]).
+    fell_back: Option<(usize, f64)>,
+    /// The regime switches at one instant: those that hold at once and the
+    /// crossings a step finds at its very start, which do not advance the
+    /// time either. Beyond a few per interface they do not settle.
+    switches: Switches,
+    /// The integrator, its last step kept for the dense output.
+    stepper: Dop853<S>,
+}
+
+/// The motion of one regime from a round's start up to its first
+/// transition, the input's next kink or the run's end: what each of its
+/// steps reads.
+struct Phase<'a> {
+    /// The regime.
+    regime: StackRegime,
+    /// The input's piece, which holds up to `kink`.
+    piece: Piece,
+    /// The input's next kink, or the run's end (s).
+    kink: f64,
+    /// The regime's coordinates.
+    coords: &'a Coordinates,
+    /// Whether a condition that needs Kane's equations is watched ([`Watch::sampled`]).
+    sampled: bool,
+    /// Whether the steps' ends are read as [`Instant`]s: for such a
+    /// condition, or for the hook ([`Hook::wants_instants`]).
+    wants_instants: bool,
+}
+
+/// One accepted step `[t0, t1]` as the search for its first crossing reads
+/// it, of a stack of `N` blocks at most.
+#[derive(Clone, Copy)]
+struct Step<'a, D, const N: usize> {
+    /// The dense output over the step (built on first use).
+    dense: &'a D,
+    /// `(t0, t1)` (s).
+    span: (f64, f64),
+    /// The states at the step's ends.
+    edges: (&'a StackState, &'a StackState),
+    /// The extremes of each `θ_k` inside the step.
+    theta_points: &'a [Points; N],
+    /// The [`Instant`]s at the step's ends, if they were computed.
+    ends: Option<(&'a Instant<N>, &'a Instant<N>)>,
+}
+
 struct Runner<'a, const N: usize, const S: usize> {
     stack: &'a Stack,
     ground: &'a GroundMotion,
@@ -652,14 +726,7 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
     /// right-hand side there, which open the next step if none holds (its
     /// values are those of the solve on plain numbers, bit for bit: the
     /// same operations).
-    fn due_now(
-        &self,
-        regime: &StackRegime,
-        t: f64,
-        state: &StackState,
-        fell_back: Option<usize>,
-        opening: &mut Option<(Instant<N>, [f64; S])>,
-    ) -> Option<Watch> {
+    fn due_now(&self, regime: &StackRegime, t: f64, state: &StackState, fell_back: Option<usize>, opening: &mut Option<Opening<N, S>>) -> Option<Watch> {
         let piece = self.ground.segment(t).piece;
         self.watches(regime).into_iter().find(|&w| match w {
             // Crossings, not conditions: they are due only when reached from the other side.
@@ -727,24 +794,18 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
         points
     }
 
-    /// The earliest crossing of a watched condition inside the step of
-    /// `dense`, `edges` the states at the step's ends,
-    /// `theta_points` the extremes of each `θ_k` there, `ends` the
-    /// [`Instant`]s at the step's ends if they were computed, `fell_back` the
-    /// interface set down at the step's start.
-    #[allow(clippy::too_many_arguments)]
-    fn first_crossing(
-        &self,
-        regime: &StackRegime,
-        piece: &Piece,
-        dense: &impl Deref<Target = DenseOutput<S>>,
-        (t0, t1): (f64, f64),
-        edges: (&StackState, &StackState),
-        theta_points: &[Points; N],
-        ends: Option<(&Instant<N>, &Instant<N>)>,
-        fell_back: Option<usize>,
-    ) -> Option<(Watch, f64)> {
+    /// The earliest crossing of a watched condition of `phase` inside
+    /// `step`; `fell_back`: the interface set down at the step's start.
+    fn first_crossing<D: Deref<Target = DenseOutput<S>>>(&self, phase: &Phase<'_>, step: &Step<D, N>, fell_back: Option<usize>) -> Option<(Watch, f64)> {
         let n = self.n();
+        let (regime, piece) = (&phase.regime, &phase.piece);
+        let Step {
+            dense,
+            span: (t0, t1),
+            edges,
+            theta_points,
+            ends,
+        } = *step;
         let mut best: Option<(Watch, f64)> = None;
         for watch in self.watches(regime) {
             let value = |t: f64| self.value(regime, piece, watch, t, &self.unpack(&dense.state(t)));
@@ -806,13 +867,20 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
     }
 
     fn run(&self, initial: &StackState, hook: &mut dyn Hook<N>) -> Result<StackRun, Error> {
-        let settings = self.settings;
-        let mut regime = initial_regime(self.stack, initial);
+        let mut run = self.start(initial);
+        while self.round(&mut run, hook)? == Next::Restart {}
+        run.out.evaluations = run.stepper.evaluations;
+        Ok(run.out)
+    }
+
+    /// The run at `t = 0`: the regime the initial state puts the stack in,
+    /// each block's peaks at its initial lean.
+    fn start(&self, initial: &StackState) -> Progress<S> {
         let mut state = *initial;
         if self.stack.building.is_none() {
             state.slip_vel = 0.0;
         }
-        let mut out = StackRun {
+        let out = StackRun {
             blocks: (0..self.n())
                 .map(|k| BlockSummary {
                     max_abs_theta: state.theta[k].abs(),
@@ -826,144 +894,179 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
             max_seat_impulse_ratio: 0.0,
             evaluations: 0,
         };
-        let mut t = 0.0;
-        let mut next_sample = 0usize;
-        let mut stepper = Dop853::<S>::new(settings.rtol, settings.atol);
-        // The interface last set down and the instant ([`StackEventKind::SetDown`]).
-        let mut fell_back: Option<(usize, f64)> = None;
-        // The regime switches at one instant: those that hold at once and the
-        // crossings a step finds at its very start, which do not advance the
-        // time either. Beyond a few per interface they do not settle.
-        let mut switches = Switches::default();
-        'run: loop {
-            // Switch at once while a condition already holds.
-            let mut opening = None;
-            while let Some(watch) = self.due_now(&regime, t, &state, set_down_at(fell_back, t), &mut opening) {
-                opening = None;
-                switches.count(t)?;
-                if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
-                    break 'run;
-                }
-            }
-            if t >= settings.duration {
-                break;
-            }
-            if Coordinates::of(self.stack, &regime).is_empty() {
-                // Nothing moves relative to the ground: no integration.
-                let (reached, met) = self.at_rest(&mut out, &regime, &state, t, set_down_at(fell_back, t), &mut next_sample, hook)?;
-                t = reached;
-                if let Some(watch) = met {
-                    switches.count(t)?;
-                    if self.apply(&mut out, &mut regime, &mut state, watch, t, hook)? {
-                        break 'run;
-                    }
-                }
-                continue 'run;
-            }
-            let y = self.pack(&state);
-            let current = regime;
-            // The input's piece holds up to its next kink, where the run restarts.
-            let segment = self.ground.segment(t);
-            let (piece, kink) = (segment.piece, segment.kink.min(settings.duration));
-            let coords = Coordinates::of(self.stack, &current);
-            let mut rhs = |t: f64, y: &[f64; S]| self.rhs(&coords, &current, &piece, t, y);
-            let opening = match opening {
-                Some((instant, rate)) => {
-                    // The right-hand side `due_now` evaluated here, counted as the restart's.
-                    stepper.evaluations += 1;
-                    stepper.restart_with(&mut rhs, t, y, rate, settings.duration);
-                    Some(instant)
-                }
-                None => {
-                    stepper.restart(&mut rhs, t, y, settings.duration);
-                    None
-                }
-            };
-            // The instants at the steps' ends, for the conditions that need
-            // Kane's equations and for the hook; each step's end is the next one's start.
-            let sampled = self.watches(&regime).iter().any(|w| w.sampled());
-            let wants_instants = hook.wants_instants() || sampled;
-            let mut start = match opening {
-                Some(instant) => Some(instant),
-                None => wants_instants.then(|| self.instant(&regime, &piece, stepper.t, &stepper.y, &stepper.f)),
-            };
-            loop {
-                // While a condition that needs Kane's equations is watched (a
-                // seated block under a rocking one, a sticking building),
-                // steps end at the input's extrema as well, so that the
-                // input is monotone on each; a seated block's uplift inside
-                // one is searched on its exact slopes. (A stack wholly at
-                // rest is not stepped: `at_rest`.)
-                let bound = if sampled { self.ground.segment(t).end.min(kink) } else { kink };
-                stepper.step(&mut rhs, bound).map_err(|e| match e {
-                    StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
-                    StepFailure::NonFinite { time } => Error::Singular {
-                        time,
-                        reason: "the stack's equations have no solution (Painlevé's paradox of the dynamic normal force)".into(),
-                    },
-                })?;
-                let (t0, t1) = (stepper.t_old, stepper.t);
-                let end = wants_instants.then(|| self.instant(&regime, &piece, t1, &stepper.y, &stepper.f));
-                let ends = start.as_ref().zip(end.as_ref());
-                let edges = (self.unpack(&stepper.y_old), self.unpack(&stepper.y));
-                let turns = self.theta_may_turn(&regime, &piece, (t0, t1), (&edges.0, &edges.1), (&stepper.f_old(), &stepper.f));
-                // Built on first use: a step that no search looks inside has none.
-                let dense = LazyCell::new(|| stepper.dense(&mut rhs));
-                let theta_points = self.theta_extremes(&turns, &dense, t0, t1);
-                let crossing = self.first_crossing(
-                    &regime,
-                    &piece,
-                    &dense,
-                    (t0, t1),
-                    (&edges.0, &edges.1),
-                    &theta_points,
-                    ends,
-                    set_down_at(fell_back, t0),
-                );
-                let reached = crossing.map_or(t1, |(_, te)| te);
-                let last = match crossing {
-                    Some((_, te)) => self.unpack(&dense.state(te)),
-                    None => edges.1,
-                };
-                self.track_peaks(&mut out, &regime, (&edges.0, &last), reached, &theta_points);
-                let stretch = Stretch {
-                    t0,
-                    t1,
-                    reached,
-                    last,
-                    at: &|t| self.unpack(&dense.state(t)),
-                    ends,
-                    inside: &|t| self.instant_on(&regime, &piece, &dense, t),
-                };
-                if let ControlFlow::Break(halt) = hook.step(&regime, &stretch) {
-                    return Err(Error::halted(halt, t0));
-                }
-                self.take_samples(&mut out, &regime, &mut next_sample, reached, |ts| self.unpack(&dense.state(ts)));
-                t = reached;
-                if let Some((watch, te)) = crossing {
-                    switches.count(te)?;
-                    state = last;
-                    if self.apply(&mut out, &mut regime, &mut state, watch, te, hook)? {
-                        break 'run;
-                    }
-                    if let Some(StackEventKind::SetDown(k)) = out.events.last().map(|e| e.kind) {
-                        fell_back = Some((k, te));
-                    }
-                    continue 'run;
-                }
-                state = edges.1;
-                start = end;
-                if t >= settings.duration {
-                    break 'run;
-                }
-                if kink < settings.duration && t >= kink {
-                    // A kink of the input: restart there (conditions may hold at once).
-                    continue 'run;
-                }
+        Progress {
+            out,
+            regime: initial_regime(self.stack, initial),
+            state,
+            t: 0.0,
+            next_sample: 0,
+            fell_back: None,
+            switches: Switches::default(),
+            stepper: Dop853::new(self.settings.rtol, self.settings.atol),
+        }
+    }
+
+    /// One round of the run from `run.t`: the transitions that hold at once
+    /// (switched while one holds), then the regime they leave, at rest or
+    /// integrated, up to its first transition, the input's next kink or the
+    /// run's end. Says whether the run restarts from there or ends.
+    fn round(&self, run: &mut Progress<S>, hook: &mut dyn Hook<N>) -> Result<Next, Error> {
+        // The instant at `run.t` and the right-hand side there, if
+        // `due_now` computed them for the regime that holds: they open its
+        // first step. (Kept here rather than returned: it is large.)
+        let mut opening = None;
+        while let Some(watch) = self.due_now(&run.regime, run.t, &run.state, set_down_at(run.fell_back, run.t), &mut opening) {
+            opening = None;
+            if self.transition(run, watch, run.t, hook)? == Next::End {
+                return Ok(Next::End);
             }
         }
-        out.evaluations = stepper.evaluations;
-        Ok(out)
+        if run.t >= self.settings.duration {
+            return Ok(Next::End);
+        }
+        if Coordinates::of(self.stack, &run.regime).is_empty() {
+            // Nothing moves relative to the ground: no integration.
+            return match self.at_rest(run, hook)? {
+                Some(watch) => self.transition(run, watch, run.t, hook),
+                None => Ok(Next::Restart),
+            };
+        }
+        self.integrate(run, opening, hook)
+    }
+
+    /// Counts and applies the transition of `watch` at `t`; the run ends on
+    /// an overturning, else restarts from `t`.
+    fn transition(&self, run: &mut Progress<S>, watch: Watch, t: f64, hook: &mut dyn Hook<N>) -> Result<Next, Error> {
+        run.switches.count(t)?;
+        if self.apply(run, watch, t, hook)? {
+            return Ok(Next::End);
+        }
+        if let Some(StackEventKind::SetDown(k)) = run.out.events.last().map(|e| e.kind) {
+            run.fell_back = Some((k, t));
+        }
+        Ok(Next::Restart)
+    }
+
+    /// The regime of `run` integrated from `run.t`, step by step, up to its
+    /// first transition, the input's next kink or the run's end; `opening`:
+    /// the [`Instant`] at `run.t` and the right-hand side there, if
+    /// computed.
+    fn integrate(&self, run: &mut Progress<S>, opening: Option<Opening<N, S>>, hook: &mut dyn Hook<N>) -> Result<Next, Error> {
+        let settings = self.settings;
+        let y = self.pack(&run.state);
+        // The input's piece holds up to its next kink, where the run restarts.
+        let segment = self.ground.segment(run.t);
+        // The instants at the steps' ends, for the conditions that need
+        // Kane's equations and for the hook; each step's end is the next one's start.
+        let sampled = self.watches(&run.regime).iter().any(|w| w.sampled());
+        let coords = Coordinates::of(self.stack, &run.regime);
+        let phase = Phase {
+            regime: run.regime,
+            piece: segment.piece,
+            kink: segment.kink.min(settings.duration),
+            coords: &coords,
+            sampled,
+            wants_instants: hook.wants_instants() || sampled,
+        };
+        let mut rhs = |t: f64, y: &[f64; S]| self.rhs(phase.coords, &phase.regime, &phase.piece, t, y);
+        let mut start = match opening {
+            Some((instant, rate)) => {
+                // The right-hand side `due_now` evaluated here, counted as the restart's.
+                run.stepper.evaluations += 1;
+                run.stepper.restart_with(&mut rhs, run.t, y, rate, settings.duration);
+                Some(instant)
+            }
+            None => {
+                run.stepper.restart(&mut rhs, run.t, y, settings.duration);
+                phase
+                    .wants_instants
+                    .then(|| self.instant(&phase.regime, &phase.piece, run.stepper.t, &run.stepper.y, &run.stepper.f))
+            }
+        };
+        loop {
+            match self.advance(run, &phase, &mut start, hook)? {
+                Next::Step => {}
+                next => return Ok(next),
+            }
+        }
+    }
+
+    /// One step of `phase`'s regime from `run.t`, `start` the [`Instant`]
+    /// there if the phase wants them (the step's end on return): its peaks,
+    /// its samples, the hook told, and the first transition inside it
+    /// applied. Says whether the next step follows, or the run restarts
+    /// (after a transition, at the input's kink) or ends.
+    fn advance(&self, run: &mut Progress<S>, phase: &Phase<'_>, start: &mut Option<Instant<N>>, hook: &mut dyn Hook<N>) -> Result<Next, Error> {
+        let mut rhs = |t: f64, y: &[f64; S]| self.rhs(phase.coords, &phase.regime, &phase.piece, t, y);
+        // While a condition that needs Kane's equations is watched (a seated
+        // block under a rocking one, a sticking building), steps end at the
+        // input's extrema as well, so that the input is monotone on each; a
+        // seated block's uplift inside one is searched on its exact slopes.
+        // (A stack wholly at rest is not stepped: `at_rest`.)
+        let bound = if phase.sampled {
+            self.ground.segment(run.t).end.min(phase.kink)
+        } else {
+            phase.kink
+        };
+        let stepper = &mut run.stepper;
+        stepper.step(&mut rhs, bound).map_err(|e| match e {
+            StepFailure::StepSizeTooSmall { time } => Error::StepSizeTooSmall { time },
+            StepFailure::NonFinite { time } => Error::Singular {
+                time,
+                reason: "the stack's equations have no solution (Painlevé's paradox of the dynamic normal force)".into(),
+            },
+        })?;
+        let (t0, t1) = (stepper.t_old, stepper.t);
+        let end = phase
+            .wants_instants
+            .then(|| self.instant(&phase.regime, &phase.piece, t1, &stepper.y, &stepper.f));
+        let edges = (self.unpack(&stepper.y_old), self.unpack(&stepper.y));
+        let turns = self.theta_may_turn(&phase.regime, &phase.piece, (t0, t1), (&edges.0, &edges.1), (&stepper.f_old(), &stepper.f));
+        // Built on first use: a step that no search looks inside has none.
+        let dense = LazyCell::new(|| stepper.dense(&mut rhs));
+        let theta_points = self.theta_extremes(&turns, &dense, t0, t1);
+        let step = Step {
+            dense: &dense,
+            span: (t0, t1),
+            edges: (&edges.0, &edges.1),
+            theta_points: &theta_points,
+            ends: start.as_ref().zip(end.as_ref()),
+        };
+        let crossing = self.first_crossing(phase, &step, set_down_at(run.fell_back, t0));
+        let reached = crossing.map_or(t1, |(_, te)| te);
+        let last = match crossing {
+            Some((_, te)) => self.unpack(&dense.state(te)),
+            None => edges.1,
+        };
+        self.track_peaks(&mut run.out, &phase.regime, (&edges.0, &last), reached, &theta_points);
+        let stretch = Stretch {
+            t0,
+            t1,
+            reached,
+            last,
+            at: &|t| self.unpack(&dense.state(t)),
+            ends: step.ends,
+            inside: &|t| self.instant_on(&phase.regime, &phase.piece, &dense, t),
+        };
+        if let ControlFlow::Break(halt) = hook.step(&phase.regime, &stretch) {
+            return Err(Error::halted(halt, t0));
+        }
+        self.take_samples(&mut run.out, &phase.regime, &mut run.next_sample, reached, |ts| self.unpack(&dense.state(ts)));
+        run.t = reached;
+        if let Some((watch, te)) = crossing {
+            run.state = last;
+            return self.transition(run, watch, te, hook);
+        }
+        run.state = edges.1;
+        *start = end;
+        if run.t >= self.settings.duration {
+            return Ok(Next::End);
+        }
+        if phase.kink < self.settings.duration && run.t >= phase.kink {
+            // A kink of the input: restart there (conditions may hold at once).
+            return Ok(Next::Restart);
+        }
+        Ok(Next::Step)
     }
 
     /// The samples due up to `reached` (and the duration), the state at each
@@ -981,7 +1084,7 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
         }
     }
 
-    /// The stack at rest from `t` (every interface stuck, the building
+    /// The stack at rest from `run.t` (every interface stuck, the building
     /// sticking or none), up to the first watched condition met, or the end
     /// of the run: nothing moves relative to the ground, so the state is
     /// constant and each condition follows the input alone. Every block
@@ -992,19 +1095,13 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
     /// input such a condition is at most its larger end, and crosses zero at
     /// most once upwards. As the tower's static phase, the run moves from one
     /// stretch to the next, or to the first crossing on the way, with no
-    /// integration; `fell_back`: the interface set down at `t`. Returns where
-    /// it stopped and the condition met there, if one was.
-    #[allow(clippy::too_many_arguments)]
-    fn at_rest(
-        &self,
-        out: &mut StackRun,
-        regime: &StackRegime,
-        state: &StackState,
-        mut t: f64,
-        mut fell_back: Option<usize>,
-        next_sample: &mut usize,
-        hook: &mut dyn Hook<N>,
-    ) -> Result<(f64, Option<Watch>), Error> {
+    /// integration. Leaves `run.t` where it stopped and returns the
+    /// condition met there, if one was.
+    fn at_rest(&self, run: &mut Progress<S>, hook: &mut dyn Hook<N>) -> Result<Option<Watch>, Error> {
+        let (regime, state) = (&run.regime, &run.state);
+        let mut t = run.t;
+        // The interface set down at `t`, whose uplift waits.
+        let mut fell_back = set_down_at(run.fell_back, t);
         let y = self.pack(state);
         let watches = self.watches(regime);
         while t < self.settings.duration {
@@ -1047,14 +1144,16 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
             if let ControlFlow::Break(halt) = hook.step(regime, &stretch) {
                 return Err(Error::halted(halt, t));
             }
-            self.take_samples(out, regime, next_sample, reached, |_| *state);
+            self.take_samples(&mut run.out, regime, &mut run.next_sample, reached, |_| *state);
             t = reached;
             if let Some((watch, _)) = met {
-                return Ok((t, Some(watch)));
+                run.t = t;
+                return Ok(Some(watch));
             }
             fell_back = None;
         }
-        Ok((t, None))
+        run.t = t;
+        Ok(None)
     }
 
     /// Raises each rocking block's largest `|θ_k|` to the extremes of the
@@ -1077,8 +1176,8 @@ impl<const N: usize, const S: usize> Runner<'_, N, S> {
 
     /// Applies the transition of `watch` at `t`, records it, and says whether
     /// the run ends (an overturning).
-    #[allow(clippy::too_many_arguments)]
-    fn apply(&self, out: &mut StackRun, regime: &mut StackRegime, state: &mut StackState, watch: Watch, t: f64, hook: &mut dyn Hook<N>) -> Result<bool, Error> {
+    fn apply(&self, run: &mut Progress<S>, watch: Watch, t: f64, hook: &mut dyn Hook<N>) -> Result<bool, Error> {
+        let Progress { out, regime, state, .. } = run;
         let (next_regime, next_state, kind, ratio) = self.switch(regime, watch, t, state);
         let event = StackEvent {
             time: t,
