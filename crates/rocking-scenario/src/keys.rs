@@ -1126,7 +1126,7 @@ mod tests {
         assert_eq!(shown("tower.points.x"), None);
     }
 
-    /// The sweepable keys, counted by hand from the table: `name`, 11 of
+    /// The sweepable keys, counted by hand from the table: `name`, 12 of
     /// `[tower]` (all but `points`), 4 of `[building]`, 14 of `[ground]` and
     /// the same 14 of `[ground.vertical]`, 3 of `[initial]`, 5 of
     /// `[simulation]`; a sample of each kind is typed as its description
@@ -1135,7 +1135,7 @@ mod tests {
     #[test]
     fn sweepable_keys_are_the_scalar_keys_of_the_table() {
         use crate::sweep::axis::{check_key, KeyType};
-        assert_eq!(SWEEPABLE_KEYS.len(), 1 + 11 + 4 + 14 + 14 + 3 + 5);
+        assert_eq!(SWEEPABLE_KEYS.len(), 1 + 12 + 4 + 14 + 14 + 3 + 5);
         let vertical: Vec<&str> = SWEEPABLE_KEYS.iter().filter_map(|k| k.strip_prefix(VERTICAL_PREFIX)).collect();
         assert_eq!(vertical, section_keys("ground").into_iter().filter(|k| *k != "vertical").collect::<Vec<_>>());
         for (key, expected) in [

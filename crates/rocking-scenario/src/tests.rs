@@ -707,7 +707,7 @@ fn a_misspelt_key_of_the_description_is_suggested() {
         .collect();
     assert_eq!(
         all.len(),
-        39 + 9 + 14,
+        40 + 9 + 14,
         "the table's keys in sections, [[block]]'s, and [ground]'s scalar keys again"
     );
     for (key, name) in all {

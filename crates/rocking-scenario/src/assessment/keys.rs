@@ -477,7 +477,7 @@ mod tests {
             }
             checked += 1;
         }
-        assert_eq!(checked, 6);
+        assert_eq!(checked, 7);
     }
 
     #[test]
