@@ -328,7 +328,8 @@ export class AssessView {
     } catch (e) {
       return this.showError(`${example.path}: ${e.message.replace(/^scenario\.toml: /, "")}`);
     }
-    const { site = {}, assessment = {}, ...sections } = table;
+    // [support] (an elastic support under the tower: the checks at height) is the command's alone.
+    const { site = {}, assessment = {}, support, ...sections } = table;
     this.set("site.code", site.code || "ntc2018");
     this.set("site.soil", site.soil);
     this.set("site.topography", site.topography || "T1");
@@ -344,6 +345,10 @@ export class AssessView {
       ? `${example.path} names its record set for the non-linear dynamic checks: ${records.join(", ")} (relative to the file). ` +
         "Pick those files below to run them here, or run rocking assess " + example.path + "."
       : "";
+    if (support) {
+      $("assess-note").textContent +=
+        ` ${example.path} stands the tower on an elastic support ([support]): its checks at height are rocking assess's; this tab checks the tower at ground level on a rigid support.`;
+    }
     if (tower && sections.tower) this.page.apply(sections);
     if (site.grid) {
       // The grid's path from the root, resolved when the examples were bundled.

@@ -6,7 +6,7 @@ use crate::capacity::Capacity;
 use crate::check::{verdict, verdicts, Check, Method, Verdict};
 use crate::dynamic::{dynamic_checks_ticking, most_runs_of, DynamicCheck, RecordSet};
 use crate::input::AssessmentInput;
-use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv, verdict_json};
+use crate::outputs::{assessment_json, capacity_csv, check_json, records_csv, spectra_csv, support_json, verdict_json};
 use crate::site::Role;
 use rocking_scenario::{Error, RecordCache};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -307,6 +307,14 @@ impl Assessment {
             self.dynamic_part(),
             (self.verdict_method, self.accept_incompatible_set),
         );
+        // With a [support], the support's modes at each limit state.
+        if let (Some(support), serde_json::Value::Object(map)) = (&input.support, &mut out) {
+            let values = |state| {
+                let v = input.file.support_state(state);
+                (v.period_factor, v.damping)
+            };
+            map.insert("support".into(), support_json(&input.site, support, &values));
+        }
         if self.blocks.is_empty() && self.turned.is_none() {
             return out;
         }

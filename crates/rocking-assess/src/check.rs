@@ -72,6 +72,54 @@ impl Method {
     }
 }
 
+impl Method {
+    /// The equation a check of this method at `level` takes, with its source
+    /// (`ec8`: EN 1998-1's spectra): `C8.7.1.8 (Circolare 2019)` at ground
+    /// level, `[C8.7.1.8] with [C7.2.8] (Circolare 2019)` at height, ….
+    pub fn equation(self, level: Level, ec8: bool) -> &'static str {
+        match (self, level, ec8) {
+            (Method::Activation, Level::Ground, _) => "C8.7.1.8 (Circolare 2019), the ground's spectrum",
+            (Method::Activation, Level::Support, false) => "C8.7.1.8 with [C7.2.7], [C7.2.8] (Circolare 2019): the peak floor acceleration",
+            (Method::Activation, Level::Support, true) => "EN 1998-1 eq. (4.25) at the support's top, T_a = 0: 2.5 α S",
+            (Method::LinearKinematic, _, _) => "§C8.7.1.2.1.7 (Circolare 2019): q times the activation's a_g",
+            (Method::NonlinearKinematic, Level::Ground, _) => "C8.7.1.12 (Circolare 2019), the ground's displacement spectrum",
+            (Method::NonlinearKinematic, Level::Support, false) => {
+                "C8.7.1.12 with [C7.2.5], [C7.2.6] (Circolare 2019): the floor spectrum, bounded beyond b T_1"
+            }
+            (Method::NonlinearKinematic, Level::Support, true) => "EN 1998-1 eq. (4.25) at the support's top, at the secant period",
+            (Method::NonlinearDynamic, _, _) => "§C8.7.1.2.1.9 (Circolare 2019): the records through the model",
+        }
+    }
+
+    /// Its name and formula at `level` (`ec8`: EN 1998-1's spectra): at
+    /// ground level [`Method::text`]'s, at height the floor spectrum's.
+    pub fn text_at(self, q: f64, level: Level, ec8: bool) -> MethodText {
+        let ground = self.text(q);
+        let formula_html = match (self, level, ec8) {
+            (_, Level::Ground, _) | (Method::NonlinearDynamic, _, _) => return ground,
+            (Method::Activation, _, false) => {
+                "a<sub>Z</sub>(a<sub>g</sub>) ≥ a<sub>0</sub>* activates, a<sub>Z</sub> = √Σ a<sub>Z,k</sub>², a<sub>Z,k</sub> = S<sub>e</sub>(T<sub>k</sub>, ξ<sub>k</sub>) |Γ<sub>k</sub>| √(1 + 0.0004 ξ<sub>k</sub>²) the support top's peak floor acceleration (Circolare 2019 eq. C8.7.1.8 with [C7.2.7], [C7.2.8])".to_string()
+            }
+            (Method::Activation, _, true) => {
+                "S<sub>a</sub>(0) = 2.5 α S ≥ a<sub>0</sub>*/g activates (EN 1998-1 eq. 4.25 at the support's top, z/H = 1)".to_string()
+            }
+            (Method::LinearKinematic, _, _) => format!(
+                "a<sub>g</sub> &gt; q · a<sub>g,capacity</sub>(activation at height), q = {q} (§C8.7.1.2.1.7)"
+            ),
+            (Method::NonlinearKinematic, _, false) => {
+                "S<sub>eZ</sub>(T<sub>LS</sub>; ξ) T<sub>LS</sub>²/4π², and not less than S<sub>eZ</sub>(T<sub>1</sub>; ξ) (b T<sub>1</sub>)²/4π² when T<sub>LS</sub> &gt; b T<sub>1</sub>, &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (eq. C8.7.1.12 with the floor spectrum [C7.2.5], [C7.2.6])".to_string()
+            }
+            (Method::NonlinearKinematic, _, true) => {
+                "S<sub>a</sub>(T<sub>LS</sub>) g T<sub>LS</sub>²/4π² &gt; d<sub>LS</sub> (EN 1998-1 eq. 4.25 at the support's top, at the secant period)".to_string()
+            }
+        };
+        MethodText {
+            name: ground.name,
+            formula_html,
+        }
+    }
+}
+
 impl fmt::Display for Method {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())

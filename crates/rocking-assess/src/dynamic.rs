@@ -132,6 +132,9 @@ pub struct DynamicCheck {
     pub limit_state: LimitState,
     /// The target spectrum (5%, g) at the set's periods.
     pub target_g: Vec<f64>,
+    /// With a `[support]`, the code's floor spectrum of the support's top
+    /// (5%, g) at the set's periods ([`crate::floor_spectrum_at`]).
+    pub floor_g: Option<Vec<f64>>,
     /// The set fitted to it.
     pub fitted: FittedSet,
     /// The responses at λ = 1 (the fitted scales).
@@ -443,6 +446,17 @@ pub fn dynamic_checks_ticking(
         })
         .collect::<Result<Vec<_>, Error>>()?;
     let target_g: Vec<f64> = set.periods.iter().map(|&t| spectrum.se(t)).collect();
+    let floor_g = input
+        .support
+        .as_ref()
+        .map(|s| {
+            set.periods
+                .iter()
+                .map(|&t| crate::floor_spectrum_at(&spectrum, s.of(role), t, 5.0))
+                .collect::<Result<Vec<f64>, _>>()
+        })
+        .transpose()
+        .map_err(|e| Fault::invalid("support", e.to_string()).in_file(origin))?;
     let spectra: Vec<Vec<f64>> = set.records.iter().map(|r| r.psa_g.clone()).collect();
     let fitted =
         fit_record_set(&set.periods, &spectra, &target_g, set.range).map_err(|e| Fault::invalid("assessment.records", e.to_string()).in_file(origin))?;
@@ -523,6 +537,7 @@ pub fn dynamic_checks_ticking(
         checks.push(DynamicCheck {
             limit_state,
             target_g: target_g.clone(),
+            floor_g: floor_g.clone(),
             fitted: fitted.clone(),
             at_one,
             scan,

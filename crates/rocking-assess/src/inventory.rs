@@ -225,7 +225,10 @@ fn keys_under(head: &str, blocks: &BlockNames) -> Option<Vec<String>> {
 /// candidates of a misspelt column's "did you mean".
 fn column_keys(blocks: &BlockNames) -> Vec<String> {
     let sections = SECTIONS.iter().filter(|s| **s != "ground").filter_map(|s| keys_under(s, blocks));
-    let assessment = ASSESSMENT_KEY_DOCS.iter().map(|k| k.key).filter(|k| k.starts_with("assessment."));
+    let assessment = ASSESSMENT_KEY_DOCS
+        .iter()
+        .map(|k| k.key)
+        .filter(|k| (k.starts_with("assessment.") || k.starts_with("support.")) && !k.contains('<'));
     sections.flatten().chain(assessment.map(String::from)).collect()
 }
 
@@ -236,7 +239,7 @@ fn column_keys(blocks: &BlockNames) -> Vec<String> {
 /// key gets the column suggested as it would be written (`belfry.width`).
 fn key_fault(key: &str, blocks: &BlockNames) -> Option<String> {
     let head = key.split('.').next().unwrap_or_default();
-    let known = SECTIONS.contains(&head) || ["site", "assessment"].contains(&head);
+    let known = SECTIONS.contains(&head) || ["site", "assessment", "support"].contains(&head);
     if !known && key.ends_with(".name") {
         return Some("a block's name cannot be set per tower: its outputs are named by it".into());
     }

@@ -80,7 +80,7 @@ pub use kinematic::{
 };
 pub use outputs::{
     assessment_json, capacity_csv, capacity_json, check_json, d0_meaning, dynamic_check_json, dynamic_json, records_csv, spectra_csv, spectrum_json,
-    verdict_json, Quantity, CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER, SEAT_IMPULSE_COLUMN,
+    support_json, verdict_json, Quantity, CAPACITY_HEADER, CAPACITY_POINTS, CAPACITY_QUANTITIES, RECORDS_HEADER, SEAT_IMPULSE_COLUMN,
 };
 pub use search::{least_failing_ag, AgCapacity, AG_SCAN_STEP, AG_SEARCH_TOP};
 pub use site::{Role, Site};

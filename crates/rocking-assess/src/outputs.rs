@@ -4,9 +4,10 @@
 use crate::capacity::Capacity;
 use crate::check::{verdicts, Check, Method, Verdict};
 use crate::dynamic::{DynamicCheck, RecordResponse, RecordSet};
+use crate::height::SupportModes;
 use crate::site::{Role, Site};
-use rocking_codes::CodeSpectrum;
 use rocking_codes::SetRule;
+use rocking_codes::{CodeSpectrum, LimitState};
 use serde_json::{json, Map, Value};
 
 /// The points of the capacity curve in `capacity.csv`.
@@ -169,7 +170,32 @@ pub fn check_json(c: &Check) -> Value {
         "ag_capacity_g": c.ag_capacity.value(),
         "ag_capacity_is_lower_bound": c.ag_capacity.is_lower_bound(),
         "zeta_E": c.zeta_e,
+        "level": c.level.as_str(),
+        "equation": c.method.equation(c.level, LimitState::EC8.contains(&c.limit_state)),
+        "a_Z_g": c.a_z,
     })
+}
+
+/// The object of `assessment.json`'s `support`: per limit state, the
+/// support's modes at it (`period_s`, `damping`, `participation`,
+/// `effective_mass`, a fraction of its mass), its `period_factor` and
+/// `damping` as `[assessment.support.<LS>]` gives them (null: its own).
+pub fn support_json(site: &Site, support: &SupportModes, values: &dyn Fn(LimitState) -> (f64, Option<f64>)) -> Value {
+    let mut out = Map::new();
+    for role in Role::ALL {
+        let state = site.limit_state(role);
+        let (period_factor, damping) = values(state);
+        let modes: Vec<Value> = support
+            .of(role)
+            .iter()
+            .map(|m| json!({"period_s": m.period, "damping": m.damping, "participation": m.participation, "effective_mass": m.effective_mass}))
+            .collect();
+        out.insert(
+            state.as_str().to_string(),
+            json!({"modes": modes, "period_factor": period_factor, "damping": damping}),
+        );
+    }
+    Value::Object(out)
 }
 
 /// The object of the check that carries a verdict: the check's, with
@@ -324,7 +350,8 @@ pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck], blocks: &[(&str, &[
 }
 
 /// `spectra.csv`: `period_s`, then for each limit state its code spectrum
-/// (`Se_<LS>_g`, 5%), each fitted record's scaled spectrum
+/// (`Se_<LS>_g`, 5%), with a `[support]` the code's floor spectrum of its
+/// top (`SeZ_<LS>_g`, 5%), each fitted record's scaled spectrum
 /// (`PSA_<LS>_<record>_g`) and their mean (`PSA_<LS>_mean_g`).
 pub fn spectra_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
     let mut header = vec!["period_s".to_string()];
@@ -332,6 +359,10 @@ pub fn spectra_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
     for c in checks {
         header.push(format!("Se_{}_g", c.limit_state));
         columns.push(c.target_g.clone());
+        if let Some(floor) = &c.floor_g {
+            header.push(format!("SeZ_{}_g", c.limit_state));
+            columns.push(floor.clone());
+        }
         for (record, scale) in set.records.iter().zip(&c.fitted.scales) {
             header.push(field(&format!("PSA_{}_{}_g", c.limit_state, record.name)));
             columns.push(record.psa_g.iter().map(|a| scale * a).collect());

@@ -131,6 +131,18 @@ fn a_block_on_the_support_by_hand() {
     // The verdict: the most refined method (non-linear kinematic), least ζ_E: SLV.
     let (_, governing) = done.governing_mechanism().unwrap();
     assert_eq!((governing.method, governing.limit_state.as_str()), (Method::NonlinearKinematic, "SLV"));
+    // assessment.json: each check's level, equation and a_Z; the support's modes per limit state.
+    let input = AssessmentInput::from_toml_str(
+        &format!("{TOWER}{SUPPORT}{SITE}[assessment]\nconfidence_factor = 1.35\n"),
+        Path::new("floor.toml"),
+    )
+    .unwrap();
+    let json = done.json(&input);
+    assert_eq!(json["checks"][0]["level"], "support");
+    assert!(json["checks"][0]["equation"].as_str().unwrap().contains("[C7.2.8]"));
+    assert_relative_eq!(json["checks"][0]["a_Z_g"].as_f64().unwrap(), 0.148120, max_relative = ROUNDING);
+    assert_eq!(json["support"]["SLV"]["modes"][0]["participation"], 1.2);
+    assert!(json["support"]["SLV"]["damping"].is_null());
 }
 
 #[test]
@@ -152,6 +164,14 @@ fn a_limit_states_period_and_damping() {
         .unwrap();
     assert_relative_eq!(slv.ag_capacity.value(), 0.127709, max_relative = ROUNDING);
     assert_relative_eq!(slv.zeta_e, 0.82393, max_relative = ROUNDING);
+    let input = AssessmentInput::from_toml_str(
+        &format!("{TOWER}{SUPPORT}{SITE}[assessment]\nconfidence_factor = 1.35\n[assessment.support.SLV]\nperiod_factor = 1.5\ndamping = 0.10\n"),
+        Path::new("floor.toml"),
+    )
+    .unwrap();
+    let json = done.json(&input);
+    assert_relative_eq!(json["support"]["SLV"]["modes"][0]["period_s"].as_f64().unwrap(), 0.96135, max_relative = 1e-12);
+    assert_relative_eq!(json["support"]["SLD"]["modes"][0]["period_s"].as_f64().unwrap(), 0.6409, max_relative = 1e-12);
     // SLD's activation is unchanged: 0.124023 g.
     assert_relative_eq!(done.checks[0].ag_capacity.value(), 0.124023, max_relative = ROUNDING);
 }
@@ -242,4 +262,32 @@ fn dynamic_checks_on_a_rigid_support_carry_no_verdict() {
     let (_, governing) = done.governing_mechanism().unwrap();
     assert_eq!((governing.method, governing.level), (Method::NonlinearKinematic, Level::Support));
     assert_eq!(done.json(&input)["governing"]["method"], "nonlinear_kinematic");
+    // spectra.csv: the code's floor spectrum beside the ground's, per limit state.
+    let (_, spectra) = done.set_csvs().unwrap();
+    let header = spectra.lines().next().unwrap();
+    assert!(
+        header.starts_with("period_s,Se_SLV_g,SeZ_SLV_g,") && header.contains(",Se_SLC_g,SeZ_SLC_g,"),
+        "{header}"
+    );
+}
+
+#[test]
+fn an_inventory_takes_support_columns() {
+    // Each tower its own support: a column `support.mode.1.period` (or `support.period`) sets it as any key.
+    // The first row is the block of the tests above (activation 0.124023 g on T_1 = 0.6409 s); the second
+    // puts its support at 0.3 s, on SLD's plateau [0.13995, 0.41985): a_Z/a_g = 1.2·2.52·1.2·sqrt(1.01) = 3.64693,
+    // a_g,capacity = 0.296296/3.64693 = 0.081246 g.
+    let assess = format!("{TOWER}{SUPPORT}{SITE}[assessment]\nconfidence_factor = 1.35\n");
+    let towers = b"id,lon,lat,support.mode.1.period\nA,14.4,41.0,0.6409\nB,14.4,41.0,0.3\n";
+    let inventory = rocking_assess::Inventory::new(&assess, Path::new("floor.toml"), towers, Path::new("towers.csv")).unwrap();
+    for (i, expected) in [(0, 0.124023), (1, 0.081246)] {
+        let (_, done) = inventory.assess(i).unwrap();
+        assert_relative_eq!(done.checks[0].ag_capacity.value(), expected, max_relative = ROUNDING);
+    }
+    let one = format!("{TOWER}[support]\nmass = 1e6\nperiod = 0.6409\n{SITE}[assessment]\n");
+    let towers = b"id,lon,lat,support.period\nA,14.4,41.0,0.3\n";
+    let inventory = rocking_assess::Inventory::new(&one, Path::new("floor.toml"), towers, Path::new("towers.csv")).unwrap();
+    // One sdof mode (Γ = 1) at 0.3 s: a_Z/a_g = 1.2·2.52·sqrt(1.01) = 3.03911, a_g,capacity = 0.296296/3.03911 = 0.097495 g.
+    let (_, done) = inventory.assess(0).unwrap();
+    assert_relative_eq!(done.checks[0].ag_capacity.value(), 0.097495, max_relative = ROUNDING);
 }

@@ -32,8 +32,33 @@ pub fn set_dotted(table: &mut Table, key: &str, value: Value) -> Result<Option<V
     }
     let (last, path) = parts.split_last().ok_or_else(|| DottedKeyError::Malformed(key.to_string()))?;
     let mut current = table;
-    for (i, part) in path.iter().enumerate() {
+    let mut parts_left = path.iter().enumerate().peekable();
+    while let Some((i, part)) = parts_left.next() {
         let entry = current.entry(part.to_string()).or_insert_with(|| Value::Table(Table::new()));
+        // An array of tables ([[support.mode]]) is entered by the next part,
+        // a 1-based position: `support.mode.2.period`.
+        let entry = match entry {
+            Value::Array(items) => {
+                let position = parts_left
+                    .peek()
+                    .and_then(|(_, p)| p.parse::<usize>().ok())
+                    .filter(|k| (1..=items.len()).contains(k));
+                match position {
+                    Some(k) => {
+                        parts_left.next();
+                        &mut items[k - 1]
+                    }
+                    None => {
+                        return Err(DottedKeyError::NotATable {
+                            key: key.to_string(),
+                            prefix: parts[..=i].join("."),
+                            found: "an array (name an item by its position from 1)",
+                        })
+                    }
+                }
+            }
+            other => other,
+        };
         current = match entry {
             Value::Table(t) => t,
             other => {
@@ -91,6 +116,19 @@ mod tests {
         assert_eq!(set_dotted(&mut t, "name", Value::String("x".into())), Ok(None));
         assert_eq!(remove_dotted(&mut t, "ground.frequency"), Some(Value::Float(5.0)));
         assert_eq!(get_dotted(&t, "ground.frequency"), None);
+    }
+
+    #[test]
+    fn enters_an_array_of_tables_by_position() {
+        let mut t: Table = "[[support.mode]]\nperiod = 0.3\n[[support.mode]]\nperiod = 0.1\n".parse().unwrap_or_default();
+        assert_eq!(set_dotted(&mut t, "support.mode.2.period", Value::Float(0.05)), Ok(Some(Value::Float(0.1))));
+        let second = t["support"]["mode"].as_array().map(|m| m[1]["period"].clone());
+        assert_eq!(second, Some(Value::Float(0.05)));
+        let e = set_dotted(&mut t, "support.mode.3.period", Value::Float(0.05)).map_err(|e| e.to_string());
+        assert_eq!(
+            e,
+            Err("cannot set `support.mode.3.period`: `support.mode` is an array (name an item by its position from 1), not a table".to_string())
+        );
     }
 
     #[test]

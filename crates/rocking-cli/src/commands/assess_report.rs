@@ -123,7 +123,7 @@ fn verdict_basis(done: &Assessment, input: &AssessmentInput) -> String {
 
 fn check_row(out: &mut String, c: &Check, q: f64) {
     let bound = if c.ag_capacity.is_lower_bound() { "≥ " } else { "" };
-    let text = c.method.text(q);
+    let text = c.method.text_at(q, c.level, LimitState::EC8.contains(&c.limit_state));
     let _ = writeln!(
         out,
         "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{} {}</td><td class=\"n\">{} {}</td><td class=\"n\">{}</td><td class=\"n\">{bound}{}</td><td class=\"n\">{bound}{}</td><td>{}</td></tr>",
@@ -545,17 +545,23 @@ fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> any
     let _ = writeln!(out, "<h1>Assessment of {name}: the tower's local mechanism to {code}</h1>");
     let _ = writeln!(
         out,
-        "<p class=\"note\">Made by rocking {} from <code>{}</code>. The tower is one rigid block overturning about a base corner at its springing level; the building under it is rigid, so that the springing level moves with the ground when the building does not slide (the floor spectrum of an elastic church is not modelled).</p>",
+        "<p class=\"note\">Made by rocking {} from <code>{}</code>. The tower is one rigid block overturning about a base corner at its springing level. {}</p>",
         env!("CARGO_PKG_VERSION"),
-        esc(&input.origin().display().to_string())
+        esc(&input.origin().display().to_string()),
+        super::assess_floor::level_sentence(input)
     );
     if stacked {
         let _ = writeln!(
             out,
-            "<p class=\"note\">The tower carries {} block{} ({}). Each is a mechanism of its own: the block and those above it turning as one rigid body about a corner of its base on the block below; the tower's mechanism is the whole stack turning about a corner of the tower's base. The kinematic checks of a block take the ground's spectra for the motion of the shaft's top: exact while the shaft does not rock (the tower and the church are rigid here, and the church sticks), that is up to the tower's activation at a<sub>g</sub> = {} g; beyond it the shaft's rocking changes the demand on the block, which only the dynamic checks (the whole stack run through the model) see. The floor spectrum of an elastic building (the Circolare's ψ(Z) γ for a mechanism above ground) is not applied.</p>",
+            "<p class=\"note\">The tower carries {} block{} ({}). Each is a mechanism of its own: the block and those above it turning as one rigid body about a corner of its base on the block below; the tower's mechanism is the whole stack turning about a corner of the tower's base. The kinematic checks of a block take {}, that is up to the tower's activation at a<sub>g</sub> = {} g; beyond it the shaft's rocking changes the demand on the block, which only the dynamic checks (the whole stack run through the model) see.</p>",
             mechanisms.len() - 1,
             if mechanisms.len() > 2 { "s" } else { "" },
             mechanisms[1..].iter().map(|m| esc(m.name)).collect::<Vec<_>>().join(", "),
+            if input.at_height() {
+                "the floor spectrum of the support's top for the motion of the shaft's top: exact while the shaft does not rock (the tower is rigid and seated on the support)"
+            } else {
+                "the ground's spectra for the motion of the shaft's top: exact while the shaft does not rock (the tower and the church are rigid here, and the church sticks)"
+            },
             sig(checks[0].ag_capacity.value(), 4)
         );
     }
@@ -595,6 +601,7 @@ fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> any
             verdict(&d)
         );
     }
+    let _ = writeln!(out, "{}", super::assess_floor::rigid_comparison(input, done)?);
     if let Some(turned) = &done.turned {
         let _ = writeln!(out, "{}", other_direction(done, turned, input));
     }
@@ -636,6 +643,7 @@ fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> any
         input.file.site.soil
     );
     site_rows(&mut out, input);
+    let _ = writeln!(out, "{}", super::assess_floor::support_html(input)?);
 
     let _ = writeln!(out, "<h2>3. The checks</h2>");
     for m in &mechanisms {
@@ -670,6 +678,7 @@ fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> any
             if input.model().building().is_some() { " (the tower, and the church sliding on its foundation)" } else { "" },
             input.file.free_after
         );
+        let _ = writeln!(out, "{}", super::assess_floor::dynamic_note(input));
         let _ = writeln!(
             out,
             "<p class=\"note\">The record files, from the assessment file's folder (the tables below name each by its file's name): {}.</p>",

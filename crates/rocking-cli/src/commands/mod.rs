@@ -1,6 +1,7 @@
 //! One file per subcommand; each has its clap `Args` and an `execute`.
 
 pub mod assess;
+pub mod assess_floor;
 pub mod assess_report;
 pub mod check;
 pub mod fragility;
