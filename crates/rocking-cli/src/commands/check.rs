@@ -25,37 +25,38 @@ pub fn execute(args: &Args) -> anyhow::Result<()> {
 fn describe(case: &Case) -> String {
     let mut out = String::new();
     let g = case.model.gravity();
-    let deg = 180.0 / std::f64::consts::PI;
     // Writing to a String cannot fail.
     let _ = writeln!(out, "scenario    {} ({})", case.name, case.file.display());
+    // Every quantity of the model comes from its one computation,
+    // `Model::derived` (the page's `check` reads the same); only the
+    // formatting is here.
     let d = case.model.derived();
-    match case.model.tower() {
-        Some(t) => {
-            let _ = writeln!(out, "tower       m2 = {} kg, I_O = {} kg·m²", sig(t.mass(), 6), sig(t.inertia_pivot(), 6));
+    match (d.tower_mass, d.inertia_pivot, d.alpha, d.radius, d.p, d.restitution, d.uplift_acceleration_g) {
+        (Some(mass), Some(inertia), Some(alpha), Some(radius), Some(p), Some(r), Some(tan)) => {
+            let _ = writeln!(out, "tower       m2 = {} kg, I_O = {} kg·m²", sig(mass, 6), sig(inertia, 6));
             let _ = writeln!(
                 out,
                 "            α = {} rad = {}°, R = {} m, p = {} rad/s, r = {}",
-                sig(t.alpha(), 6),
-                sig(t.alpha() * deg, 6),
-                sig(t.radius(), 6),
-                sig(t.frequency_parameter(g), 6),
-                sig(t.restitution(), 6)
+                sig(alpha, 6),
+                sig(alpha.to_degrees(), 6),
+                sig(radius, 6),
+                sig(p, 6),
+                sig(r, 6)
             );
-            let tan = t.alpha().tan();
             let _ = writeln!(out, "            uplift acceleration tan α = {} g = {} m/s²", sig(tan, 6), sig(tan * g, 6));
             for (k, (x, y)) in case.points.iter().enumerate() {
                 let _ = writeln!(out, "            point p{} = ({}, {}) m", k + 1, sig(*x, 6), sig(*y, 6));
             }
         }
-        None => {
+        _ => {
             let _ = writeln!(out, "tower       none");
         }
     }
     if let Some(stack) = case.model.stack() {
         describe_stack(&mut out, case, &stack, g);
     }
-    match case.model.building() {
-        Some(b) => {
+    match (case.model.building(), d.sliding_mass, d.slip_acceleration_g) {
+        (Some(b), Some(sliding_mass), Some(slip)) => {
             let normal = match b.normal_force() {
                 NormalForce::Constant => "constant",
                 NormalForce::Dynamic => "dynamic",
@@ -64,18 +65,13 @@ fn describe(case: &Case) -> String {
                 out,
                 "building    m1 = {} kg, M = {} kg, μs = {}, μk = {}, normal force {normal}",
                 sig(b.mass(), 6),
-                sig(d.sliding_mass.unwrap_or(b.mass()), 6),
+                sig(sliding_mass, 6),
                 sig(b.mu_static(), 6),
                 sig(b.mu_kinetic(), 6)
             );
-            let _ = writeln!(
-                out,
-                "            slip acceleration μs = {} g = {} m/s²",
-                sig(b.mu_static(), 6),
-                sig(b.mu_static() * g, 6)
-            );
+            let _ = writeln!(out, "            slip acceleration μs = {} g = {} m/s²", sig(slip, 6), sig(slip * g, 6));
         }
-        None => {
+        _ => {
             let _ = writeln!(out, "building    none (fixed base)");
         }
     }
@@ -114,7 +110,6 @@ fn describe(case: &Case) -> String {
 /// The blocks on the tower and the ground acceleration that lifts each
 /// interface from rest (everything else at rest, the building stuck).
 fn describe_stack(out: &mut String, case: &Case, stack: &rocking::stack::Stack, g: f64) {
-    let deg = 180.0 / std::f64::consts::PI;
     for (k, block) in stack.blocks().iter().enumerate().skip(1) {
         let _ = writeln!(
             out,
@@ -126,7 +121,7 @@ fn describe_stack(out: &mut String, case: &Case, stack: &rocking::stack::Stack, 
             sig(block.mass(), 6),
             sig(block.inertia_centre(), 6),
             sig(block.alpha(), 6),
-            sig(block.alpha() * deg, 6)
+            sig(block.alpha().to_degrees(), 6)
         );
     }
     for (k, threshold) in stack.uplift_thresholds().iter().enumerate() {
