@@ -135,6 +135,11 @@ pub struct DynamicCheck {
     /// With a `[support]`, the code's floor spectrum of the support's top
     /// (5%, g) at the set's periods ([`crate::floor_spectrum_at`]).
     pub floor_g: Option<Vec<f64>>,
+    /// With a `[support]`, the mean floor spectrum computed on its top (5%,
+    /// g): each record at its fitted scale through the support alone
+    /// ([`crate::support_top_motion`]), the pseudo-acceleration of the top's
+    /// absolute acceleration, averaged over the set.
+    pub floor_mean_g: Option<Vec<f64>>,
     /// The set fitted to it.
     pub fitted: FittedSet,
     /// The responses at λ = 1 (the fitted scales).
@@ -458,10 +463,24 @@ pub fn dynamic_checks_ticking(
         .transpose()
         .map_err(|e| Fault::invalid("support", e.to_string()).in_file(origin))?;
     let spectra: Vec<Vec<f64>> = set.records.iter().map(|r| r.psa_g.clone()).collect();
+    let fitted_for_floor = |scales: &[f64]| -> Result<Option<Vec<f64>>, Error> {
+        let Some(support) = &input.support else { return Ok(None) };
+        let g = input.model().gravity();
+        let mut mean = vec![0.0; set.periods.len()];
+        for (r, scale) in set.records.iter().zip(scales) {
+            let top = crate::support_top_motion(&r.record, support.of(role)).map_err(|e| Fault::invalid("support", e.to_string()).in_file(origin))?;
+            let psa = rocking_codes::response_spectrum(&top, &set.periods, 5.0).map_err(|e| Fault::invalid("support", e.to_string()).in_file(origin))?;
+            for (m, a) in mean.iter_mut().zip(psa) {
+                *m += scale * a / g / scales.len() as f64;
+            }
+        }
+        Ok(Some(mean))
+    };
     let fitted =
         fit_record_set(&set.periods, &spectra, &target_g, set.range).map_err(|e| Fault::invalid("assessment.records", e.to_string()).in_file(origin))?;
     let rule = fitted.rule;
     let scales = fitted.scales.clone();
+    let floor_mean_g = fitted_for_floor(&scales)?;
     // The set at λ = 1 and the scan: every (λ, record) pair in parallel, once for all mechanisms.
     let at_one_runs = runs(set, &scales, &[1.0], &controls, tick, halted);
     let lambdas = input.lambda.values();
@@ -538,6 +557,7 @@ pub fn dynamic_checks_ticking(
             limit_state,
             target_g: target_g.clone(),
             floor_g: floor_g.clone(),
+            floor_mean_g: floor_mean_g.clone(),
             fitted: fitted.clone(),
             at_one,
             scan,

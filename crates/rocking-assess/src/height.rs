@@ -241,3 +241,35 @@ pub fn kinematic_checks_at_height(capacity: &Capacity, site: &Site, support: &Su
         nonlinear_kinematic_check_at_height(capacity, site, support, Role::Collapse, activation.ag_capacity)?,
     ])
 }
+
+/// The absolute horizontal acceleration of the support's top (in the
+/// record's units) under the ground acceleration `record`, the support alone
+/// and linear (without the tower): each mode a linear oscillator of its
+/// period and damping from rest, `ÿ_k + 2 ζ_k ω_k ẏ_k + ω_k² y_k = −a_g`
+/// (Nigam & Jennings' exact steps for the piecewise-linear record), and the
+/// top's `a_g + Σ_k Γ_k ÿ_k` (every shape 1 there) at each sample, then over a
+/// free tail of two first periods (the ground still) at the record's spacing.
+/// The result is a record through those samples (linear between them: a
+/// step's error in the top's acceleration is of order `(ω_k dt)²`).
+pub fn support_top_motion(record: &rocking::Record, modes: &[SupportMode]) -> Result<rocking::Record, Error> {
+    let (times, values) = (record.times(), record.values());
+    let n = times.len();
+    let spacing = if n > 1 { (times[n - 1] - times[0]) / (n - 1) as f64 } else { 0.01 };
+    let tail = (2.0 * first_period(modes) / spacing).ceil() as usize;
+    let mut all_times = times.to_vec();
+    all_times.extend((1..=tail).map(|k| times[n - 1] + k as f64 * spacing));
+    let ground = |k: usize| if k < n { values[k] } else { 0.0 };
+    let mut top: Vec<f64> = (0..all_times.len()).map(ground).collect();
+    for m in modes {
+        let omega = 2.0 * PI / m.period;
+        let (mut x, mut v) = (0.0, 0.0);
+        let relative = |a_g: f64, x: f64, v: f64| -a_g - 2.0 * m.damping * omega * v - omega * omega * x;
+        top[0] += m.participation * relative(ground(0), x, v);
+        for k in 1..all_times.len() {
+            let map = rocking_codes::NigamJennings::new(omega, m.damping, all_times[k] - all_times[k - 1]);
+            (x, v) = map.step(x, v, ground(k - 1), ground(k));
+            top[k] += m.participation * relative(ground(k), x, v);
+        }
+    }
+    rocking::Record::from_samples(all_times, top).map_err(|e| invalid("support", e.to_string()))
+}

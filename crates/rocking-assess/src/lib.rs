@@ -70,7 +70,7 @@ pub use dynamic::{
 pub use error::Error;
 pub use height::{
     activation_check_at_height, first_period, floor_displacement_demand, floor_spectrum_at, kinematic_checks_at_height, linear_kinematic_check_at_height,
-    nonlinear_kinematic_check_at_height, peak_floor_acceleration, SupportModes, EC8_HEIGHT_RATIO,
+    nonlinear_kinematic_check_at_height, peak_floor_acceleration, support_top_motion, SupportModes, EC8_HEIGHT_RATIO,
 };
 pub use input::{AssessmentInput, LambdaScan, MAX_LAMBDA, MAX_LAMBDA_VALUES};
 pub use inventory::{calling_pool, Inventory, InventoryError, OnAssessed};

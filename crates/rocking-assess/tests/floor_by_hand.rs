@@ -291,3 +291,27 @@ fn an_inventory_takes_support_columns() {
     let (_, done) = inventory.assess(0).unwrap();
     assert_relative_eq!(done.checks[0].ag_capacity.value(), 0.097495, max_relative = ROUNDING);
 }
+
+#[test]
+fn a_stiff_supports_computed_floor_spectrum_is_the_grounds() {
+    // A support of 0.001 s (ω_k = 6283 rad/s) follows the ground: its relative
+    // acceleration is of order (ω/ω_k)² and 2 ζ_k ω/ω_k of the ground's, for
+    // ground frequencies up to the records' ~25 Hz (ω = 157 rad/s) below 3e-3:
+    // the mean floor spectrum computed on its top is the set's own mean (the
+    // same scales) to 1e-2, which bounds those terms with room for the short
+    // periods where the records' spectra follow their peaks.
+    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tower_on_b.toml")).unwrap();
+    let text = format!(
+        "{}records = [\"records/synthetic/kt_01.AT2\", \"records/synthetic/kt_02.AT2\", \"records/synthetic/kt_03.AT2\"]\n\
+         free_after = 3.0\nlambda = {{ from = 0.5, to = 4.0, step = 0.5 }}\n",
+        file.replace("[site]", "[support]\nmass = 1e6\nperiod = 0.001\n[site]")
+    );
+    let origin = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/assess.toml");
+    let done = Assessment::run(&AssessmentInput::from_toml_str(&text, &origin).unwrap()).unwrap();
+    for d in &done.dynamic {
+        let floor = d.floor_mean_g.as_ref().unwrap();
+        for (f, m) in floor.iter().zip(&d.fitted.mean) {
+            assert_relative_eq!(*f, *m, max_relative = 1e-2);
+        }
+    }
+}

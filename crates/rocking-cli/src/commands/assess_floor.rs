@@ -6,7 +6,9 @@
 use super::assess_report::{esc, scalable};
 use crate::format::sig;
 use crate::plot::{spectra_svg, Curve, Ink, SpectraFigure};
-use rocking_assess::{floor_spectrum_at, kinematic_checks, peak_floor_acceleration, verdict, Assessment, AssessmentInput, Check, Method, Role, Verdict};
+use rocking_assess::{
+    floor_spectrum_at, kinematic_checks, peak_floor_acceleration, verdict, Assessment, AssessmentInput, Check, DynamicCheck, Method, RecordSet, Role, Verdict,
+};
 use rocking_codes::DEFAULT_PERIODS;
 use std::fmt::Write;
 
@@ -143,7 +145,8 @@ pub fn dynamic_note(input: &AssessmentInput) -> String {
     if input.file.support.is_none() {
         return String::new();
     }
-    "<p class=\"fails\">At ground level, not at height: these runs leave out the elastic support under the tower (the coupled model of the tower on its support is not in the engine yet), so that they show the mechanism on a rigid support. They are information only and carry no verdict; the verdict is the kinematic checks' at height (section 3).</p>".to_string()
+    "<p class=\"fails\">At ground level, not at height: these runs leave out the elastic support under the tower (the coupled model of the tower on its support is not in the engine yet), so that they show the mechanism on a rigid support. They are information only and carry no verdict; the verdict is the kinematic checks' at height (section 3).</p>\
+     <p class=\"note\">Each figure of the fitted set also draws two floor spectra of the support's top at 5%: the code's (S<sub>eZ</sub>, [C7.2.5]) and the mean computed with each scaled record through the support alone (its modes linear oscillators, the top's absolute acceleration a<sub>g</sub> + Σ Γ<sub>k</sub> ÿ<sub>k</sub>). They differ because the code's is an envelope for any record and any support, and because neither holds the interaction of §C8.7.1.2.1.4, the tower's mass and rocking acting back on the support; the verdict uses the code's.</p>".to_string()
 }
 
 /// The verdict of the same mechanisms on a rigid support, for comparison
@@ -204,4 +207,30 @@ pub fn rigid_comparison(input: &AssessmentInput, done: &Assessment) -> anyhow::R
         "<p class=\"note\">Report the verdict at height, above: the tower stands on the church, and the church's own period on the plateau of the spectra makes its top move more than the ground (a<sub>Z</sub> in section 2), which the rigid support leaves out. The rigid-support verdict is the assessment of a tower at ground level; for a tower on an elastic church it is not on the safe side. Where the two differ, the difference is the church's amplification; the linear check, q times the activation, carries it in full, while the non-linear kinematic check, at secant periods far beyond the church's, is moved little by it.</p>"
     );
     Ok(out)
+}
+
+/// The floor spectra of a dynamic check's figure, with a `[support]`: the
+/// code's (`S_eZ`, 5%) and the mean computed on the support's top with each
+/// scaled record through the support alone; none without a support.
+pub fn floor_curves(set: &RecordSet, d: &DynamicCheck) -> Vec<Curve> {
+    let mut curves = Vec::new();
+    if let Some(floor) = &d.floor_g {
+        curves.push(Curve {
+            label: Some(format!("{} code floor spectrum S_eZ, 5%", d.limit_state)),
+            ink: Ink::Series { index: 0, of: 2 },
+            width: 3,
+            dashed: true,
+            points: set.periods.iter().copied().zip(floor.iter().copied()).collect(),
+        });
+    }
+    if let Some(mean) = &d.floor_mean_g {
+        curves.push(Curve {
+            label: Some("mean floor spectrum computed on the support's top".into()),
+            ink: Ink::Series { index: 1, of: 2 },
+            width: 3,
+            dashed: false,
+            points: set.periods.iter().copied().zip(mean.iter().copied()).collect(),
+        });
+    }
+    curves
 }

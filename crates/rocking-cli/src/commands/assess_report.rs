@@ -222,6 +222,7 @@ fn spectra_figure(figs: &mut Figures, set: &RecordSet, d: &DynamicCheck) -> anyh
         dashed: true,
         points: set.periods.iter().copied().zip(d.target_g.iter().copied()).collect(),
     });
+    curves.extend(super::assess_floor::floor_curves(set, d));
     let band = Band {
         label: format!("{COMPATIBILITY_LOWER}–{COMPATIBILITY_UPPER} × the code spectrum"),
         points: set
