@@ -351,7 +351,8 @@ pub fn records_csv(set: &RecordSet, checks: &[DynamicCheck], blocks: &[(&str, &[
 
 /// `spectra.csv`: `period_s`, then for each limit state its code spectrum
 /// (`Se_<LS>_g`, 5%), with a `[support]` the code's floor spectrum of its
-/// top (`SeZ_<LS>_g`, 5%), each fitted record's scaled spectrum
+/// top (`SeZ_<LS>_g`, 5%) and the mean computed on it with the scaled
+/// records through the support alone (`PSAZ_<LS>_mean_g`), each fitted record's scaled spectrum
 /// (`PSA_<LS>_<record>_g`) and their mean (`PSA_<LS>_mean_g`).
 pub fn spectra_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
     let mut header = vec!["period_s".to_string()];
@@ -362,6 +363,10 @@ pub fn spectra_csv(set: &RecordSet, checks: &[DynamicCheck]) -> String {
         if let Some(floor) = &c.floor_g {
             header.push(format!("SeZ_{}_g", c.limit_state));
             columns.push(floor.clone());
+        }
+        if let Some(mean) = &c.floor_mean_g {
+            header.push(format!("PSAZ_{}_mean_g", c.limit_state));
+            columns.push(mean.clone());
         }
         for (record, scale) in set.records.iter().zip(&c.fitted.scales) {
             header.push(field(&format!("PSA_{}_{}_g", c.limit_state, record.name)));

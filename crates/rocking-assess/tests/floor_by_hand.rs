@@ -266,7 +266,7 @@ fn dynamic_checks_on_a_rigid_support_carry_no_verdict() {
     let (_, spectra) = done.set_csvs().unwrap();
     let header = spectra.lines().next().unwrap();
     assert!(
-        header.starts_with("period_s,Se_SLV_g,SeZ_SLV_g,") && header.contains(",Se_SLC_g,SeZ_SLC_g,"),
+        header.starts_with("period_s,Se_SLV_g,SeZ_SLV_g,PSAZ_SLV_mean_g,") && header.contains(",Se_SLC_g,SeZ_SLC_g,PSAZ_SLC_mean_g,"),
         "{header}"
     );
 }
