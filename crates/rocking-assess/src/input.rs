@@ -224,8 +224,8 @@ impl AssessmentInput {
             .filter(|r| r.text.is_none())
             .map(|r| self.file.folder().join(&r.path))
             .collect();
-        if let rocking_scenario::SiteSource::Grid { path, .. } = &self.file.site.source {
-            inputs.push(path.clone());
+        if let Some(path) = self.file.site.source.grid_file() {
+            inputs.push(path.to_path_buf());
         }
         inputs
     }

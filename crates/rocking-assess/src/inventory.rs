@@ -42,7 +42,7 @@ const SITE_COLUMNS: [&str; 5] = ["soil", "topography", "ST", "VN", "CU"];
 /// their columns: the tower's width and height, the site's soil and topography.
 const INPUTS: [&str; 4] = ["tower.width", "tower.height", "soil", "topography"];
 /// The keys of `[site]` that give the parameters from a hazard grid.
-const GRID_KEYS: [&str; 5] = ["grid", "lon", "lat", "VN", "CU"];
+const GRID_KEYS: [&str; 6] = ["grid", "island", "lon", "lat", "VN", "CU"];
 
 /// Why an inventory cannot start: the assessment file is not valid by itself
 /// (its error names the file, the key and the cause), a record of its set

@@ -29,7 +29,9 @@ pub enum Error {
     #[error("{0}")]
     GridShape(String),
     /// A site lies outside the hazard grid: no cell of four nodes holds it.
-    #[error("the site (lon {lon}, lat {lat}) is outside the hazard grid: no cell of four grid nodes contains it")]
+    #[error(
+        "the site (lon {lon}, lat {lat}) is outside the hazard grid: no cell of four grid nodes contains it (the small islands outside the grid take Tabella 2's values: island = \"G1\" to \"G5\")"
+    )]
     OutsideGrid {
         /// Longitude of the site (degrees east).
         lon: f64,

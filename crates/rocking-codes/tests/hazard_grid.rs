@@ -161,11 +161,62 @@ fn the_synthetic_grid_of_the_repository() {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"));
     let g = grid(&text);
     assert_eq!(g.nodes().len(), 30);
-    let (dlon, dlat) = g.spacing();
+    let (dlon, dlat) = g.spacing().unwrap_or_else(|| panic!("the synthetic grid is regular"));
     assert_relative_eq!(dlon, 0.05, max_relative = 1e-9);
     assert_relative_eq!(dlat, 0.05, max_relative = 1e-9);
     // Node 40001 at (14.30, 40.95): ag 1.600 g/10 at 475 years.
     let site = g.site(14.30, 40.95).unwrap_or_else(|e| panic!("{e}"));
     assert_relative_eq!(site.sites[6].ag, 0.16, max_relative = TIGHT);
     assert_eq!(g.nodes()[0].id.as_deref(), Some("40001"));
+}
+
+#[test]
+fn a_grid_saved_by_a_spreadsheet_in_italian() {
+    // A byte-order mark, semicolons and decimal commas: the same nodes as the tab-separated text.
+    let text = grid_text("\t", true, None);
+    let saved = format!("\u{feff}{}", text.replace(';', "").replace('.', ",").replace('\t', ";"));
+    assert!(saved.contains(";0,25;"), "{saved}");
+    assert_eq!(grid(&saved).nodes(), grid(&text).nodes());
+    // Tab-separated with decimal commas too.
+    assert_eq!(grid(&text.replace('.', ",")).nodes(), grid(&text).nodes());
+    // A value that is no number: one line naming the row and the column.
+    let bad = saved.replacen(";2,3;", ";2,3,1;", 1);
+    match HazardGrid::parse(&bad) {
+        Err(e) => assert_eq!(e.to_string(), "line 3, column F030 (TR 30 years): not a number: \"2,3,1\""),
+        Ok(_) => panic!("2,3,1 read as a number"),
+    }
+}
+
+#[test]
+fn an_irregular_grid_with_the_decrees_ids_has_its_cells_by_id() {
+    // Four nodes off any regular lattice, with IDs 5000, 5001, 5223, 5222 (east,
+    // south-east, south): one skewed cell. A site at its centroid (the mean of
+    // the corners) weighs the nodes by the inverse of its distances.
+    let corners = [(5000, 10.0, 45.1), (5001, 10.11, 45.12), (5223, 10.13, 45.02), (5222, 10.02, 45.0)];
+    let mut text = String::from("ID LON LAT");
+    for tr in GRID_RETURN_PERIODS {
+        text += &format!(" ag{tr} F0{tr} Tc{tr}");
+    }
+    for (n, (id, lon, lat)) in corners.iter().enumerate() {
+        text += &format!("\n{id} {lon} {lat}");
+        for k in 0..9 {
+            let (ag, f0, tc) = node_values(n, k);
+            text += &format!(" {ag} {f0} {tc}");
+        }
+    }
+    let g = grid(&text);
+    assert!(g.spacing().is_none());
+    let (lon, lat) = (10.065, 45.06);
+    let d = corners.map(|(_, x, y)| great_circle_distance_km(lon, lat, x, y));
+    let site = g.site(lon, lat).unwrap_or_else(|e| panic!("{e}"));
+    for k in 0..9 {
+        let num: f64 = (0..4).map(|n| node_values(n, k).0 / 10.0 / d[n]).sum();
+        let den: f64 = d.iter().map(|x| 1.0 / x).sum();
+        assert_relative_eq!(site.sites[k].ag, num / den, max_relative = TIGHT);
+    }
+    // Outside the skewed cell though inside its bounding box.
+    assert!(matches!(g.site(10.005, 45.005), Err(Error::OutsideGrid { .. })));
+    // IDs that make no cell: refused, saying so.
+    let broken = text.replace("\n5223 ", "\n6223 ");
+    assert!(matches!(HazardGrid::parse(&broken), Err(Error::GridShape(m)) if m.contains("lattice")));
 }

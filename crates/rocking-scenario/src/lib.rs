@@ -109,7 +109,8 @@ pub use assessment::{
     code_spectra_columns, dynamic_limit_states, kinematic_damping_pct, read_record, read_record_with, record_names, record_spectra_in_g, same_record_twice,
     AssessmentFile, Capacity, Code, GridCache, SetEntry, Site, SiteSource, SpectrumColumn, SpectrumKind, SupportState, VerdictMethod, ASSESSMENT_KEYS,
     ASSESSMENT_KEY_DOCS, ASSESSMENT_SECTIONS, DEFAULT_ASSESSMENT_FREE_AFTER, DEFAULT_CONFIDENCE_FACTOR, DEFAULT_LAMBDA, DEFAULT_NOMINAL_LIFE, DEFAULT_Q,
-    DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, SITE_KEYS, SUPPORT_STATE_KEYS,
+    DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, KINEMATIC_DAMPING_COLLAPSE_PCT, KINEMATIC_DAMPING_LIFE_SAFETY_PCT, NTC_STATE_KEYS, OFFICIAL_GRID, SITE_KEYS,
+    SUPPORT_STATE_KEYS,
 };
 pub use block::{names as block_names, set_named_key, BlockNames, BLOCK, MAX_ABOVE};
 pub use dotted::{get_dotted, remove_dotted, set_dotted, DottedKeyError};

@@ -72,9 +72,16 @@ fn insert_curves(out: &mut Value, done: &Assessment) {
 /// (the text of its file, in the layout of NTC Allegato B): the JSON text of
 /// `{ "SLD": { "ag", "F0", "Tc_star" }, … }` for the nominal life `VN` and
 /// the coefficient of use `CU`, each the value `rocking assess` computes for
-/// `[site]` with `grid`, `lon`, `lat`, `VN`, `CU`. An error names the key.
+/// `[site]` with `grid`, `lon`, `lat`, `VN`, `CU`; `grid` = `"ntc2018"` is the
+/// official grid, held by the library. An error names the key.
 pub fn grid_site_json(grid: &str, lon: f64, lat: f64, nominal_life: f64, use_coefficient: f64) -> Result<String, String> {
-    let grid = HazardGrid::parse(grid).map_err(|e| format!("site.grid: {e}"))?;
+    let parsed;
+    let grid = if grid.trim() == rocking_scenario::OFFICIAL_GRID {
+        HazardGrid::ntc2018()
+    } else {
+        parsed = HazardGrid::parse(grid).map_err(|e| format!("site.grid: {e}"))?;
+        &parsed
+    };
     let hazard = grid.site(lon, lat).map_err(|e| match e {
         rocking_codes::Error::OutsideGrid { .. } => format!("site.lon: {e}"),
         other => format!("site: {other}"),

@@ -67,6 +67,10 @@ impl WebTown {
 /// The file the site's `grid` resolves to, as the assessment file's reader resolves it.
 fn grid_path(table: &Table, origin: &Path) -> Option<std::path::PathBuf> {
     let grid = table.get("site")?.get("grid")?.as_str()?;
+    // The official grid is the library's: no file to pick.
+    if grid == rocking_scenario::OFFICIAL_GRID {
+        return None;
+    }
     Some(origin.parent().unwrap_or(Path::new("")).join(grid))
 }
 

@@ -320,8 +320,8 @@ fn site_form(args: &Args, path: &Path, periods: Vec<f64>) -> anyhow::Result<()> 
     let outputs: Vec<PathBuf> = names_out.iter().map(|n| dir.join(n)).collect();
     let mut inputs = vec![path.to_path_buf()];
     inputs.extend(records.iter().map(|(p, _)| assessment.folder().join(p)));
-    if let rocking_scenario::SiteSource::Grid { path: grid, .. } = &site.source {
-        inputs.push(grid.clone());
+    if let Some(grid) = site.source.grid_file() {
+        inputs.push(grid.to_path_buf());
     }
     output::refuse_to_overwrite_inputs(&outputs, &inputs)?;
     let staging = output::Staging::new(&dir, &inputs)?;

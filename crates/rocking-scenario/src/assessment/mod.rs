@@ -14,7 +14,7 @@ pub(crate) use site::parse as parse_site;
 
 pub use columns::{code_spectra_columns, record_names, record_spectra_in_g, same_record_twice, SpectrumColumn, SpectrumKind};
 pub use keys::ASSESSMENT_KEY_DOCS;
-pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, SITE_KEYS};
+pub use site::{Code, GridCache, Site, SiteSource, DEFAULT_NOMINAL_LIFE, DEFAULT_USE_COEFFICIENT, EC8_STATE_KEYS, NTC_STATE_KEYS, OFFICIAL_GRID, SITE_KEYS};
 
 use crate::error::{ErrorKind, Fault};
 use crate::read::{as_number, non_negative, positive, with_article, Section};
@@ -652,6 +652,30 @@ mod tests {
         assert_relative_eq!(slv.ss(), 1.2, max_relative = 1e-15);
         assert_relative_eq!(a.confidence_factor, 1.35, max_relative = 1e-15);
         assert!(a.records.is_empty());
+    }
+
+    #[test]
+    fn the_official_grid_and_the_islands() {
+        // Cervino, VN 50, CU 1.5: SLV at TR 711.8 years, ag 0.17612957238062965 g by
+        // Allegato A by hand (rocking-codes' tests/official_grid.rs has the
+        // computation); 1e-12 for the round-off of the weights and the log-log.
+        let a = parse("[site]\nsoil = \"B\"\ngrid = \"ntc2018\"\nlon = 14.42\nlat = 41.04\nVN = 50\nCU = 1.5\n").unwrap_or_else(|e| panic!("{e}"));
+        let slv = a.site.spectrum(LimitState::Slv).map(CodeSpectrum::ag).unwrap_or_default();
+        assert_relative_eq!(slv, 0.17612957238062965, max_relative = 1e-12);
+        assert_eq!(a.site.source.grid_file(), None);
+        assert_eq!(a.site.source.reference_life(), Some((50.0, 1.5)));
+        // Sardinia (G1), VN 50, CU 1: SLV at TR 474.56 years, between 201
+        // (0.393 g/10) and 475 (0.500): 0.0393·(0.5/0.393)^(ln(474.56/201)/ln(475/201)) = 0.049987 g.
+        let a = parse("[site]\nsoil = \"B\"\nisland = \"G1\"\n").unwrap_or_else(|e| panic!("{e}"));
+        let slv = a.site.spectrum(LimitState::Slv).map(CodeSpectrum::ag).unwrap_or_default();
+        let tr = -50.0 / (0.9f64).ln();
+        let hand = 0.0393 * (0.5f64 / 0.393).powf((tr / 201.0).ln() / (475.0f64 / 201.0).ln());
+        assert_relative_eq!(slv, hand, max_relative = 1e-12);
+        assert_relative_eq!(hand, 0.049987, max_relative = 1e-5);
+        assert!(message("[site]\nsoil = \"B\"\nisland = \"G1\"\nlon = 9.1\n").starts_with("site.lon: does not apply with island"));
+        assert!(message("[site]\nsoil = \"B\"\nisland = \"G7\"\n").starts_with("site.island: \"G7\" is not a group of Tabella 2"));
+        assert!(message("[site]\nsoil = \"B\"\ngrid = \"ntc2018\"\nlon = 9.11\nlat = 39.22\n")
+            .starts_with("site.lon: the site (lon 9.11, lat 39.22) is outside the hazard grid"));
     }
 
     #[test]

@@ -4,7 +4,7 @@
 
 use crate::error::{ErrorKind, Fault};
 use crate::read::{positive, Section};
-use rocking_codes::{CodeSpectrum, Ec8Spectrum, Ec8Type, HazardGrid, LimitState, NtcSite, NtcSpectrum, Soil, Topography, DEFAULT_DAMPING_PCT};
+use rocking_codes::{CodeSpectrum, Ec8Spectrum, Ec8Type, HazardGrid, Island, LimitState, NtcSite, NtcSpectrum, Soil, Topography, DEFAULT_DAMPING_PCT};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, PoisonError};
 use toml::Value;
@@ -17,6 +17,7 @@ pub const SITE_KEYS: &[&str] = &[
     "ST",
     "spectrum_type",
     "grid",
+    "island",
     "lon",
     "lat",
     "VN",
@@ -72,8 +73,9 @@ pub enum SiteSource {
     Tables,
     /// A hazard grid at a site.
     Grid {
-        /// The grid file, resolved against the assessment file's folder.
-        path: PathBuf,
+        /// The grid file, resolved against the assessment file's folder;
+        /// `None` for the official grid (`grid = "ntc2018"`), which the library holds.
+        path: Option<PathBuf>,
         /// Longitude of the site (degrees east).
         lon: f64,
         /// Latitude (degrees north).
@@ -83,6 +85,41 @@ pub enum SiteSource {
         /// Coefficient of use `CU`.
         use_coefficient: f64,
     },
+    /// A group of small islands outside the official grid (Tabella 2 of Allegato B).
+    Island {
+        /// The group.
+        group: Island,
+        /// Nominal life `VN` (years).
+        nominal_life: f64,
+        /// Coefficient of use `CU`.
+        use_coefficient: f64,
+    },
+}
+
+/// The name of the official grid in `[site] grid`.
+pub const OFFICIAL_GRID: &str = "ntc2018";
+
+impl SiteSource {
+    /// The nominal life `VN` and coefficient of use `CU` of a site from the grid or an island.
+    pub fn reference_life(&self) -> Option<(f64, f64)> {
+        match self {
+            SiteSource::Tables => None,
+            SiteSource::Grid {
+                nominal_life, use_coefficient, ..
+            }
+            | SiteSource::Island {
+                nominal_life, use_coefficient, ..
+            } => Some((*nominal_life, *use_coefficient)),
+        }
+    }
+
+    /// The grid file read, if one was (not the official grid, not an island).
+    pub fn grid_file(&self) -> Option<&Path> {
+        match self {
+            SiteSource::Grid { path: Some(path), .. } => Some(path),
+            _ => None,
+        }
+    }
 }
 
 /// A validated `[site]`: the code spectrum (at 5%) of each limit state given.
@@ -145,10 +182,23 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
     }
     let tables: Vec<LimitState> = code.limit_states().iter().copied().filter(|s| site.has(s.as_str())).collect();
     let grid = site.string("grid")?;
-    if grid.is_none() {
+    let island = match site.string("island")? {
+        Some(name) => Some(name.parse::<Island>().map_err(|e| codes_fault("site", e))?),
+        None => None,
+    };
+    if island.is_some() {
+        for key in ["grid", "lon", "lat"] {
+            if site.has(key) {
+                return Err(Fault::new(
+                    site.key(key),
+                    ErrorKind::NotApplicable("does not apply with island: an island group of Tabella 2 takes the place of the grid and the site on it".into()),
+                ));
+            }
+        }
+    } else if grid.is_none() {
         for key in ["lon", "lat", "VN", "CU"] {
             if site.has(key) {
-                return Err(Fault::new(site.key(key), ErrorKind::NotApplicable("applies only with grid".into())));
+                return Err(Fault::new(site.key(key), ErrorKind::NotApplicable("applies only with grid (or island)".into())));
             }
         }
     }
@@ -167,15 +217,31 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
                     .map(|s| (state, CodeSpectrum::Ntc(s)))
                     .map_err(|e| codes_fault(prefix, e))
             };
-            match grid {
-                Some(path) => {
+            let on_grid = match (grid, island) {
+                (Some(path), _) => Some(grid_site(&site, path, folder, grids)?),
+                (None, Some(group)) => {
+                    let (nominal_life, use_coefficient) = reference_life(&site)?;
+                    Some((
+                        group.hazard(),
+                        nominal_life,
+                        use_coefficient,
+                        SiteSource::Island {
+                            group,
+                            nominal_life,
+                            use_coefficient,
+                        },
+                    ))
+                }
+                (None, None) => None,
+            };
+            match on_grid {
+                Some((hazard, nominal_life, use_coefficient, source)) => {
                     if let Some(state) = tables.first() {
                         return Err(Fault::new(
                             site.key(state.as_str()),
-                            ErrorKind::NotApplicable("give either the limit states' tables or grid, not both".into()),
+                            ErrorKind::NotApplicable("give either the limit states' tables or grid (or island), not both".into()),
                         ));
                     }
-                    let (hazard, nominal_life, use_coefficient, source) = grid_site(&site, path, folder, grids)?;
                     kept_hazard = Some(hazard);
                     // The checks' limit states.
                     [LimitState::Sld, LimitState::Slv, LimitState::Slc]
@@ -209,7 +275,7 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
             }
         }
         Code::Ec8 => {
-            for key in ["topography", "ST", "grid"] {
+            for key in ["topography", "ST", "grid", "island"] {
                 other_code(key)?;
             }
             let kind = match site.number("spectrum_type")? {
@@ -235,7 +301,11 @@ pub(crate) fn parse(value: &Value, folder: &Path, grids: &GridCache) -> Result<S
     let (spectra, source) = spectra?;
     if spectra.is_empty() {
         let names: Vec<String> = code.limit_states().iter().map(|s| format!("[site.{s}]")).collect();
-        let grid = if code == Code::Ntc2018 { " or grid, lon, lat" } else { "" };
+        let grid = if code == Code::Ntc2018 {
+            " or grid, lon, lat (grid = \"ntc2018\", the official grid)"
+        } else {
+            ""
+        };
         return Err(Fault::new(
             "site",
             ErrorKind::Missing(format!("give the site parameters: {}{grid}", names.join(", "))),
@@ -313,7 +383,16 @@ impl GridCache {
     }
 }
 
-/// Reads the grid (or takes it from `grids`) and interpolates it at the site: the site's hazard, `VN`, `CU` and the source.
+/// `VN` and `CU` of a site from the grid or an island (their defaults when not given).
+fn reference_life(site: &Section<'_>) -> Result<(f64, f64), Fault> {
+    let nominal_life = positive("site.VN", site.number("VN")?.unwrap_or(DEFAULT_NOMINAL_LIFE))?;
+    let use_coefficient = positive("site.CU", site.number("CU")?.unwrap_or(DEFAULT_USE_COEFFICIENT))?;
+    Ok((nominal_life, use_coefficient))
+}
+
+/// Reads the grid (or takes it from `grids`; `grid = "ntc2018"` is the
+/// official one, held by the library) and interpolates it at the site: the
+/// site's hazard, `VN`, `CU` and the source.
 fn grid_site(site: &Section<'_>, path: &str, folder: &Path, grids: &GridCache) -> Result<(rocking_codes::SiteHazard, f64, f64, SiteSource), Fault> {
     let required = |key: &str| -> Result<f64, Fault> {
         site.number(key)?.ok_or_else(|| {
@@ -331,12 +410,19 @@ fn grid_site(site: &Section<'_>, path: &str, folder: &Path, grids: &GridCache) -
         })
     };
     let (lon, lat) = (required("lon")?, required("lat")?);
-    let nominal_life = positive("site.VN", site.number("VN")?.unwrap_or(DEFAULT_NOMINAL_LIFE))?;
-    let use_coefficient = positive("site.CU", site.number("CU")?.unwrap_or(DEFAULT_USE_COEFFICIENT))?;
-    let file = folder.join(path);
-    let grid = grids.grid(&file)?;
+    let (nominal_life, use_coefficient) = reference_life(site)?;
+    let (grid, file) = if path == OFFICIAL_GRID {
+        (None, None)
+    } else {
+        let file = folder.join(path);
+        (Some(grids.grid(&file)?), Some(file))
+    };
+    let grid: &HazardGrid = grid.as_deref().unwrap_or_else(|| HazardGrid::ntc2018());
+    let named = file
+        .as_ref()
+        .map_or_else(|| "the official grid of NTC 2018".to_string(), |f| f.display().to_string());
     let hazard = grid.site(lon, lat).map_err(|e| match e {
-        rocking_codes::Error::OutsideGrid { .. } => Fault::invalid("site.lon", format!("{e} ({})", file.display())),
+        rocking_codes::Error::OutsideGrid { .. } => Fault::invalid("site.lon", format!("{e} ({named})")),
         other => codes_fault("site", other),
     })?;
     Ok((

@@ -80,10 +80,8 @@ pub(crate) fn parse(value: &Value, folder: &Path, measure: Measure) -> Result<St
     };
     let curve = HazardCurve::of_site(&hazard, site.soil, topography).map_err(|e| Fault::invalid("site.soil", e.to_string()))?;
     let given = |key: &str| value.get(key).is_some();
-    let reference_period = match site.source {
-        crate::SiteSource::Grid {
-            nominal_life, use_coefficient, ..
-        } if given("VN") || given("CU") => Some(nominal_life * use_coefficient),
+    let reference_period = match site.source.reference_life() {
+        Some((nominal_life, use_coefficient)) if given("VN") || given("CU") => Some(nominal_life * use_coefficient),
         _ => None,
     };
     Ok(StudySite { curve, reference_period })
