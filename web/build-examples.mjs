@@ -29,6 +29,11 @@ const towns = [];
         // `grid`: the path of its hazard grid from the root (a key of `grids`).
         const entry = { path: relative(top, path), toml };
         for (const [, file] of toml.matchAll(/^\s*grid\s*=\s*"([^"]+)"/gm)) {
+          if (file === "ntc2018") {
+            // The official grid is the engine's own: its "text" is its name, which the engine reads as it.
+            entry.grid = grids.ntc2018 = "ntc2018";
+            continue;
+          }
           entry.grid = relative(top, resolve(dirname(path), file));
           grids[entry.grid] = readFileSync(resolve(dirname(path), file), "utf8");
         }

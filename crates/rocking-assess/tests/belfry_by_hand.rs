@@ -299,8 +299,8 @@ fn an_inventory_names_a_block_that_governs() {
 }
 
 /// The example examples/belfry-assess/assess.toml (the S. Anna tower with the
-/// belfry of examples/belfry-on-church.toml, at Cervino on the synthetic
-/// grid), its kinematic part (the record set left out: the dynamic checks are
+/// belfry of examples/belfry-on-church.toml, at Cervino on the official
+/// grid of NTC 2018), its kinematic part (the record set left out: the dynamic checks are
 /// those of the command's tests): the belfry's α0 and its SLV linear kinematic
 /// ζ_E, and the shaft's α0 under it, by hand.
 #[test]
@@ -324,12 +324,20 @@ fn the_belfry_example_by_hand() {
     // 2.25 m: h = (281 232 · 7 + 30 000 · 16.25)/311 232 = 2 456 124/311 232 m.
     assert_relative_eq!(done.capacity.alpha0, 2.0 * 311_232.0 / 2_456_124.0, max_relative = 1e-14);
 
-    // Its activation, on the SLD spectrum (subsoil B, the grid's F0 at Cervino,
-    // 2.35): a0*/g = α0/FC = 0.526749, where SS = 1.4 − 0.4 F0 ag is below 1
-    // (F0 ag = 1.24 ≥ 1), so SS = 1 and the least root of ag SS(ag) = a0*/g is
-    // a0*/g itself (on the branches SS = 1.2 and SS = 1.4 − 0.4 F0 ag, ag SS
-    // stays below 1/F0 = 0.425 < a0*/g). The SLV linear kinematic check: q = 2
-    // times it against the SLV's ag (the grid's 0.247 g at Cervino).
+    // The site: the official grid at Cervino (14.42 E, 41.04 N), VN 50, CU 1.5,
+    // by Allegato A by hand (a Python transcription of the cell search on the
+    // decree's lattice, the inverse-distance weights over the nodes 32093,
+    // 32094, 32316, 32315 and the log-log in TR; written out in rocking-codes'
+    // tests/official_grid.rs): SLD (TR 75.43 years) ag 0.074062 g,
+    // F0 2.3774450648274343; SLV (TR 711.8 years) ag 0.17612957238062965 g.
+    // Round-off of the weights and the log-log: 1e-12.
+    //
+    // Its activation, on the SLD spectrum (subsoil B): a0*/g = α0/FC =
+    // 0.526749, where SS = 1.4 − 0.4 F0 ag is below 1 (F0 ag = 1.2523 ≥ 1), so
+    // SS = 1 and the least root of ag SS(ag) = a0*/g is a0*/g itself (on the
+    // branches SS = 1.2 and SS = 1.4 − 0.4 F0 ag, ag SS grows and stays below
+    // its value at F0 ag = 1, 1/F0 = 0.4206 < a0*/g). The SLV linear kinematic
+    // check: q = 2 times it against the SLV's ag.
     let a0_over_g = 1.6 / 2.25 / 1.35;
     let (sld, slv) = (
         &input.site.spectrum(rocking_assess::Role::Damage),
@@ -338,13 +346,14 @@ fn the_belfry_example_by_hand() {
     let rocking_codes::CodeSpectrum::Ntc(sld_ntc) = sld else {
         panic!("an NTC site")
     };
+    assert_relative_eq!(sld_ntc.site().f0, 2.3774450648274343, max_relative = 1e-12);
     assert!(sld_ntc.site().f0 * a0_over_g >= 1.0, "the branch SS = 1");
-    assert_relative_eq!(slv.ag(), 0.247, max_relative = 2e-3);
+    assert_relative_eq!(slv.ag(), 0.17612957238062965, max_relative = 1e-12);
     let linear = belfry.checks[1];
     assert_eq!((linear.limit_state.to_string().as_str(), linear.method), ("SLV", Method::LinearKinematic));
-    // The activation's root is bisected to 1e-12 g; ×2/0.247: 1e-11 relative.
-    assert_relative_eq!(linear.zeta_e, 2.0 * a0_over_g / slv.ag(), max_relative = 1e-10);
-    assert_relative_eq!(linear.zeta_e, 4.2568, max_relative = 1e-4);
+    // The activation's root is bisected to 1e-12 g; ×2/ag: 1e-11 relative.
+    assert_relative_eq!(linear.zeta_e, 2.0 * a0_over_g / 0.17612957238062965, max_relative = 1e-10);
+    assert_relative_eq!(linear.zeta_e, 5.98138, max_relative = 1e-5);
     // The belfry is far from governing: the tower's own non-linear kinematic
     // check does (the most refined method computed without records).
     let (m, g) = done.governing_mechanism().unwrap();

@@ -374,6 +374,83 @@ fn site_rows(out: &mut String, input: &AssessmentInput) {
     let _ = writeln!(out, "</table>");
 }
 
+/// Where the site's parameters come from: the file's tables, or the grid
+/// (official or the user's file; the site, the four nodes of its cell and
+/// their distances) or the island group, with `VN`, `CU` and each limit
+/// state's return period.
+fn site_source(input: &AssessmentInput) -> String {
+    use rocking_scenario::SiteSource;
+    let periods = |nominal_life: f64, use_coefficient: f64| -> String {
+        let states: Vec<String> = Role::ALL
+            .iter()
+            .filter_map(|&role| {
+                let state = input.site.limit_state(role);
+                let p = state.probability_of_exceedance()?;
+                Some(format!(
+                    "{} years at {state} (P<sub>VR</sub> = {}%)",
+                    sig(rocking_codes::return_period(nominal_life, use_coefficient, p), 4),
+                    sig(100.0 * p, 2)
+                ))
+            })
+            .collect();
+        format!(
+            "V<sub>N</sub> = {} years, C<sub>U</sub> = {}: V<sub>R</sub> = {} years and T<sub>R</sub> = −V<sub>R</sub> / ln(1 − P<sub>VR</sub>) (NTC 2018 §3.2.1) = {}.",
+            sig(nominal_life, 4),
+            sig(use_coefficient, 4),
+            sig(nominal_life * use_coefficient, 4),
+            states.join(", ")
+        )
+    };
+    match &input.file.site.source {
+        SiteSource::Tables => "The site parameters of each limit state as the assessment file gives them.".to_string(),
+        SiteSource::Grid {
+            path,
+            lon,
+            lat,
+            nominal_life,
+            use_coefficient,
+        } => {
+            let read;
+            let (grid, named) = match path {
+                None => (
+                    Some(rocking_codes::HazardGrid::ntc2018()),
+                    "the official hazard grid of NTC 2018 (Tabella 1 of Allegato B to the D.M. 14 gennaio 2008, kept by the D.M. 17 gennaio 2018)".to_string(),
+                ),
+                Some(file) => {
+                    read = std::fs::read_to_string(file).ok().and_then(|t| rocking_codes::HazardGrid::parse(&t).ok());
+                    (read.as_ref(), format!("the hazard grid of the file {}", esc(&file.display().to_string())))
+                }
+            };
+            let nodes = grid
+                .and_then(|g| g.cell_nodes(*lon, *lat).ok())
+                .map(|cell| {
+                    let each: Vec<String> = cell
+                        .iter()
+                        .map(|(n, d)| match &n.id {
+                            Some(id) => format!("{} ({} km)", esc(id), sig(*d, 3)),
+                            None => format!("({}, {}) ({} km)", n.lon, n.lat, sig(*d, 3)),
+                        })
+                        .collect();
+                    format!(" over the four nodes of the cell that holds the site, {},", each.join(", "))
+                })
+                .unwrap_or_default();
+            format!(
+                "The site parameters from {named} at lon {lon}, lat {lat}, interpolated as its Allegato A says: each the mean{nodes} weighted by the inverse of the distances, at the grid's return periods, then log-log in the return period. {}",
+                periods(*nominal_life, *use_coefficient)
+            )
+        }
+        SiteSource::Island {
+            group,
+            nominal_life,
+            use_coefficient,
+        } => format!(
+            "The site parameters of the island group {group} ({}) in Tabella 2 of Allegato B to the D.M. 14 gennaio 2008 (kept by the NTC 2018), log-log in the return period (Allegato A). {}",
+            group.places(),
+            periods(*nominal_life, *use_coefficient)
+        ),
+    }
+}
+
 /// The table of a capacity and its curve's formula; `block` names what the mechanism turns (`the tower`, `the belfry`).
 fn capacity_table(out: &mut String, capacity: &Capacity, block: &str) {
     let b = capacity.radius * capacity.alpha.sin();
@@ -643,6 +720,7 @@ fn report(input: &AssessmentInput, done: &Assessment, figs: &mut Figures) -> any
         "<p>Soil {}; spectra at 5% damping. Each check moves a<sub>g</sub> with every site parameter that depends on it (S<sub>S</sub>, T<sub>D</sub>) and takes the <em>least</em> a<sub>g</sub> at which it stops holding: the demand need not grow with a<sub>g</sub>.</p>",
         input.file.site.soil
     );
+    let _ = writeln!(out, "<p>{}</p>", site_source(input));
     site_rows(&mut out, input);
     let _ = writeln!(out, "{}", super::assess_floor::support_html(input)?);
 
