@@ -123,15 +123,13 @@ pub fn exact_acceleration_at(alpha: f64, radius: f64, confidence_factor: f64, g:
 }
 
 /// The secant period at the life-safety ultimate displacement,
-/// `T_SLV = 1.68 π sqrt(d_SLV / a*(d_SLV))` (s) (Circolare 2019 §C8.7.1.2.1.7,
-/// eq. C8.7.1.10), `d` in m and `a` in m/s².
+/// `T_SLV = 1.68 π sqrt(d_SLV / a*(d_SLV))` (s) (Circolare 2019 eq. C8.7.1.10), `d` in m and `a` in m/s².
 pub fn secant_period_slv(d_slv: f64, a_at_d_slv: f64) -> f64 {
     1.68 * PI * (d_slv / a_at_d_slv).sqrt()
 }
 
 /// The secant period at the collapse ultimate displacement,
-/// `T_SLC = 1.56 π sqrt(d_SLC / a*(d_SLC))` (s) (Circolare 2019 §C8.7.1.2.1.7,
-/// eq. C8.7.1.11).
+/// `T_SLC = 1.56 π sqrt(d_SLC / a*(d_SLC))` (s) (Circolare 2019 eq. C8.7.1.11).
 pub fn secant_period_slc(d_slc: f64, a_at_d_slc: f64) -> f64 {
     1.56 * PI * (d_slc / a_at_d_slc).sqrt()
 }

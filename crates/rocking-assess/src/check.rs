@@ -61,11 +61,11 @@ impl Method {
             ),
             Method::NonlinearKinematic => (
                 "non-linear kinematic",
-                "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV), 10% (SLC) (§C8.7.1.2.1.8)".to_string(),
+                "max<sub>T ≤ T<sub>LS</sub></sub> S<sub>De</sub>(T; ξ) &gt; d<sub>LS</sub>, ξ = 8% (SLV, T<sub>SLV</sub> of eq. C8.7.1.10), 10% (SLC, T<sub>SLC</sub> of eq. C8.7.1.11) (§C8.7.1.2.1.8)".to_string(),
             ),
             Method::NonlinearDynamic => (
                 "non-linear dynamic",
-                "records run through the model: none beyond d<sub>0</sub>, mean (largest with fewer than 7) ≤ d<sub>LS</sub> (§C8.7.1.2.1.9)".to_string(),
+                "records run through the model: none beyond d<sub>0</sub> (§C8.7.1.2.1.9), mean (largest with fewer than 7, NTC 2018 §7.3.5) ≤ d<sub>LS</sub>".to_string(),
             ),
         };
         MethodText { name, formula_html }

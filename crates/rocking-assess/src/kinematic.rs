@@ -56,8 +56,10 @@ pub fn activation_demand(spectrum: &CodeSpectrum, g: f64) -> f64 {
     spectrum.ag() * soil_factor(spectrum) * g
 }
 
-/// The spectral demand of eq. C8.7.1.9 of the Circolare 2019 (§C8.7.1.2.1.7,
-/// the mechanism at ground level), `ag S / q` (m/s²), to be set against a0*.
+/// The spectral demand `ag S / q` (m/s²) of the linear kinematic check
+/// (§C8.7.1.2.1.7, the mechanism at ground level) as the 2009 Circolare wrote
+/// it, to be set against a0* (the 2019 text's eq. C8.7.1.9 is the check of
+/// elements free to vibrate, which this tool does not use).
 /// The linear kinematic check's capacity is [`linear_kinematic_capacity`];
 /// this demand, with the life-safety spectrum's own `S`, is reported beside it.
 pub fn linear_kinematic_demand(spectrum: &CodeSpectrum, q: f64, g: f64) -> f64 {

@@ -106,13 +106,13 @@ pub const CAPACITY_QUANTITIES: [Quantity; 12] = [
         key: "T_SLV_s",
         symbol_html: "T<sub>SLV</sub> = 1.68π √(d<sub>SLV</sub>/a*(d<sub>SLV</sub>))",
         unit: "s",
-        meaning: "secant period at life safety",
+        meaning: "secant period at life safety (eq. C8.7.1.10)",
     },
     Quantity {
         key: "T_SLC_s",
         symbol_html: "T<sub>SLC</sub> = 1.56π √(d<sub>SLC</sub>/a*(d<sub>SLC</sub>))",
         unit: "s",
-        meaning: "secant period at collapse",
+        meaning: "secant period at collapse (eq. C8.7.1.11)",
     },
 ];
 

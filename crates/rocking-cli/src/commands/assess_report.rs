@@ -486,7 +486,7 @@ fn linear_note(out: &mut String, input: &AssessmentInput, capacity: &Capacity, o
     let life_safety = input.site.spectrum(Role::LifeSafety);
     let _ = writeln!(
         out,
-        "<p class=\"note\">The linear kinematic check's capacity is q times the activation's, both in g. Eq. C8.7.1.9 with the {} spectrum's own soil factor reads a<sub>g</sub> S / q = {} m/s² against a<sub>0</sub>*{} = {} m/s² at the site's a<sub>g</sub> = {} g (S = {}); the two differ where S there differs from S at activation (NTC subsoils B–E, where S moves with a<sub>g</sub> and F<sub>0</sub>).</p>",
+        "<p class=\"note\">The linear kinematic check's capacity is q times the activation's, both in g (§C8.7.1.2.1.7). Written as the 2009 Circolare wrote it, with the {} spectrum's own soil factor, it reads a<sub>g</sub> S / q = {} m/s² against a<sub>0</sub>*{} = {} m/s² at the site's a<sub>g</sub> = {} g (S = {}); the two differ where S there differs from S at activation (NTC subsoils B–E, where S moves with a<sub>g</sub> and F<sub>0</sub>). The 2019 text's eq. C8.7.1.9 is the check of elements free to vibrate (parapets, pinnacles), not used here.</p>",
         input.site.limit_state(Role::LifeSafety),
         sig(linear_kinematic_demand(&life_safety, input.file.q, capacity.g), 4),
         esc(of),
