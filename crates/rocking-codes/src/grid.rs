@@ -139,7 +139,43 @@ pub fn log_log_interpolation(tr: f64, tr1: f64, tr2: f64, p1: f64, p2: f64) -> f
     libm::exp(libm::log(p1) + libm::log(p2 / p1) * libm::log(tr / tr1) / libm::log(tr2 / tr1))
 }
 
+/// The return period at which a parameter reaches `p`, from its values `p1`,
+/// `p2` at the tabulated `tr1 < tr2` (years): the inverse of
+/// [`log_log_interpolation`], `TR = tr1 · exp(log(p/p1) · log(tr2/tr1) / log(p2/p1))`.
+pub fn log_log_return_period(p: f64, tr1: f64, tr2: f64, p1: f64, p2: f64) -> f64 {
+    tr1 * libm::exp(libm::log(p / p1) * libm::log(tr2 / tr1) / libm::log(p2 / p1))
+}
+
+/// Where a site's `ag` reaches a given acceleration in the grid's return periods.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ReturnPeriodOfAg {
+    /// Below the `ag` of 30 years.
+    Below30,
+    /// At this return period (years), 30 to 2475.
+    At(f64),
+    /// Beyond the `ag` of 2475 years.
+    Beyond2475,
+}
+
 impl SiteHazard {
+    /// The return period at which the site's `ag` reaches `ag` (g): the
+    /// inverse of Allegato A's log-log interpolation in the return period, on
+    /// the first pair of tabulated return periods whose `ag` bracket it (the
+    /// `T_R,C` of a capacity).
+    pub fn return_period_of_ag(&self, ag: f64) -> ReturnPeriodOfAg {
+        let periods = GRID_RETURN_PERIODS;
+        if ag < self.sites[0].ag {
+            return ReturnPeriodOfAg::Below30;
+        }
+        for k in 0..8 {
+            let (a1, a2) = (self.sites[k].ag, self.sites[k + 1].ag);
+            if ag >= a1 && ag <= a2 && a2 > a1 {
+                return ReturnPeriodOfAg::At(log_log_return_period(ag, periods[k], periods[k + 1], a1, a2));
+            }
+        }
+        ReturnPeriodOfAg::Beyond2475
+    }
+
     /// The site parameters at the return period `tr` (years): log-log between the
     /// two tabulated return periods that bracket it; outside 30–2475 years, those
     /// of the nearest one (Allegato A).

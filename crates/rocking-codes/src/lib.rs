@@ -68,8 +68,8 @@ pub use floor::{
     FLOOR_PLATEAU_START,
 };
 pub use grid::{
-    great_circle_distance_km, inverse_distance_weighting, log_log_interpolation, GridNode, HazardGrid, Island, SiteHazard, EARTH_RADIUS_KM,
-    GRID_RETURN_PERIODS, LATTICE_ROW,
+    great_circle_distance_km, inverse_distance_weighting, log_log_interpolation, log_log_return_period, GridNode, HazardGrid, Island, ReturnPeriodOfAg,
+    SiteHazard, EARTH_RADIUS_KM, GRID_RETURN_PERIODS, LATTICE_ROW,
 };
 pub use hazard::{
     power_law_frequency, power_law_segment_frequency, power_law_through, probability_in_period, standard_normal_cdf, surface_pga, HazardCurve, HazardPoint,

@@ -4,7 +4,7 @@
 //! interpolation on the decree's lattice computed by hand in Python.
 
 use approx::assert_relative_eq;
-use rocking_codes::{Error, GridNode, HazardGrid, Island, LimitState, SiteHazard, GRID_RETURN_PERIODS};
+use rocking_codes::{Error, GridNode, HazardGrid, Island, LimitState, ReturnPeriodOfAg, SiteHazard, GRID_RETURN_PERIODS};
 
 fn repository(path: &str) -> String {
     let path = format!("{}/../../{path}", env!("CARGO_MANIFEST_DIR"));
@@ -242,4 +242,25 @@ fn the_islands_of_tabella_2() {
     assert_eq!((h.sites[8].f0, h.sites[8].tc_star), (2.76, 0.324));
     assert!(matches!("G6".parse::<Island>(), Err(Error::InvalidParameter { name: "island", .. })));
     assert_eq!("G3".parse::<Island>().ok(), Some(Island::G3));
+}
+
+#[test]
+fn the_return_period_of_a_capacity_at_cervino() {
+    // Cervino (14.42, 41.04): ag 0.19627542285363583 g at 975 years and
+    // 0.2573693779360596 g at 2475 (Allegato A's eq. 1 at the two columns, as
+    // above). The ag 0.2 g is reached, inverting eq. 2 by hand in Python, at
+    // 975 · exp(ln(0.2/0.196275) · ln(2475/975) / ln(0.257369/0.196275)) =
+    // 1040.0858093844474 years; 1e-12 for the round-off of the logs.
+    let site = official().site(14.42, 41.04).unwrap_or_else(|e| panic!("{e}"));
+    assert_relative_eq!(site.sites[7].ag, 0.19627542285363583, max_relative = 1e-12);
+    assert_relative_eq!(site.sites[8].ag, 0.2573693779360596, max_relative = 1e-12);
+    match site.return_period_of_ag(0.2) {
+        ReturnPeriodOfAg::At(tr) => assert_relative_eq!(tr, 1040.0858093844474, max_relative = 1e-12),
+        other => panic!("expected a return period, got {other:?}"),
+    }
+    // Going back: the ag at that return period is 0.2 g (the interpolation and its inverse).
+    let ReturnPeriodOfAg::At(tr) = site.return_period_of_ag(0.2) else { panic!() };
+    assert_relative_eq!(site.at_return_period(tr).ag, 0.2, max_relative = 1e-12);
+    assert_eq!(site.return_period_of_ag(0.3), ReturnPeriodOfAg::Beyond2475);
+    assert_eq!(site.return_period_of_ag(0.01), ReturnPeriodOfAg::Below30);
 }
