@@ -892,7 +892,15 @@ fn provenance(input: &AssessmentInput) -> String {
                 esc(&digest)
             )
         })
-        .collect();
+        .collect::<String>()
+        + &match &input.file.site.source {
+            // The official grid is no file of the user's: the tool holds it, so its commit fixes it.
+            rocking_scenario::SiteSource::Grid { path: None, .. } | rocking_scenario::SiteSource::Island { .. } => format!(
+                "<tr><td>NTC 2018 Allegato B, Tabelle 1 and 2 (the official hazard grid)</td><td>held by rocking {} itself (commit above)</td></tr>\n",
+                env!("CARGO_PKG_VERSION")
+            ),
+            _ => String::new(),
+        };
     format!(
         "<section id=\"provenance\">\n<h2>About this report</h2>\n\
          <p>Made on <span id=\"made-on\">{}</span> (UTC) by rocking {} (commit <code id=\"commit\">{}</code>), from these files:</p>\n\
