@@ -85,6 +85,11 @@ struct Run<'a, O: Observer, const N: usize> {
     report: Report<'a, O>,
     /// The run has ended (the tower overturned).
     finished: bool,
+    /// An event was emitted at the current instant whose response is not
+    /// yet recorded: it is, once `settle` has applied every switch due
+    /// there, in the regime that holds after them (a regime that another
+    /// event ends at once lasts no time, and its response is no peak).
+    instant_due: bool,
 }
 
 /// The integrator's state: the time, the state and the stepper.
@@ -204,6 +209,7 @@ pub(crate) fn run<O: Observer, const N: usize>(
             deferred: Deferred::default(),
         },
         finished: false,
+        instant_due: false,
     };
     run.enter_vertical();
     run.execute()
@@ -340,7 +346,7 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
     }
 
     /// Feeds the tracker the response at the current instant.
-    fn record_instant(&mut self) {
+    pub(super) fn record_instant(&mut self) {
         self.note_instant(self.a_g(self.integ.t), self.g_e(self.integ.t), self.integ.y);
     }
 }

@@ -66,11 +66,22 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
                 _ => holds_now(conditions[i]),
             };
             let Some(i) = (0..list.len()).find(|&i| holds(i)) else {
+                self.record_due_instant();
                 return Ok(());
             };
             self.switch(list[i])?;
         }
+        self.record_due_instant();
         Ok(())
+    }
+
+    /// Records the response at the current instant if an event was emitted
+    /// there ([`Self::emit`]): called where `settle` leaves the regime that
+    /// holds.
+    fn record_due_instant(&mut self) {
+        if std::mem::take(&mut self.instant_due) {
+            self.record_instant();
+        }
     }
 
     /// Coulomb's law at `u̇ = 0` for a building in `slip σ`: it slides on only
@@ -298,6 +309,8 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
 
     /// Emits an event at the current instant: to the summary, which derives
     /// its counts and first instants from events alone, and to the observer.
+    /// Every event is followed by `settle`, which records the response
+    /// there once no switch is due.
     pub(super) fn emit(&mut self, kind: EventKind, before: State) -> Result<(), Error> {
         let event = Event {
             time: self.integ.t,
@@ -311,7 +324,9 @@ impl<O: Observer, const N: usize> Run<'_, O, N> {
         if let ControlFlow::Break(halt) = self.report.observer.on_event(&event) {
             return Err(Error::halted(halt, self.integ.t));
         }
-        self.record_instant();
+        // Recorded where `settle` leaves the regime that holds, which may
+        // not be this event's.
+        self.instant_due = true;
         Ok(())
     }
 }
