@@ -353,7 +353,7 @@ def test_the_belfry_example_gives_the_commands_governing_check(page, tmp_path):
 
     page.click("#tab-assess")
     choose_assess_example(page, "examples/belfry-assess/assess.toml")
-    expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
+    expect(page.locator("#assess-grid-note")).to_contain_text("from ntc2018")
     expect(page.locator('input[name="block[1].name"]')).to_have_value("belfry")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
     expect(page.locator("#assess")).not_to_have_class(re.compile(r"\bstale\b"))

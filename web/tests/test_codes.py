@@ -140,7 +140,7 @@ def test_the_assess_tab_gives_rocking_assess_numbers_bit_for_bit(page, tmp_path)
     and the table shows them as the command's lines print them."""
     page.click("#tab-assess")
     choose_assess_example(page, "examples/sant-anna-cervino/assess.toml")
-    expect(page.locator("#assess-grid-note")).to_contain_text("SYNTHETIC")
+    expect(page.locator("#assess-grid-note")).to_contain_text("from ntc2018")
     expect(page.locator('input[name="tower.wall_thickness"]')).to_have_value("0.9")
     expect(page.locator("#assess")).to_have_attribute("data-state", "done", timeout=20_000)
     expect(page.locator("#assess")).not_to_have_class(re.compile(r"\bstale\b"))

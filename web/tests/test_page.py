@@ -229,7 +229,8 @@ def test_the_form_has_a_field_for_every_described_key(page):
     dimensionless number's symbol) beside it; a hand-checked sample."""
     described = json.loads(subprocess.run([BIN, "keys", "--json"], check=True, capture_output=True, text=True).stdout)["scenario"]
     on_form = [k for k in described if k["on_form"] and k["kind"] in ("number", "string") and k["section"]]
-    assert len(on_form) == 33, [k["key"] for k in on_form]
+    # 33, and tower.compressive_strength.
+    assert len(on_form) == 34, [k["key"] for k in on_form]
     page.locator('[id="has-initial"]').check()
 
     def unit_of(key):
@@ -254,4 +255,4 @@ def test_the_form_has_a_field_for_every_described_key(page):
     # The tower's section leads its fields; the others follow the description's order.
     names = page.locator("#form fieldset").first.locator("[name]").evaluate_all("els => els.map(e => e.name)")
     assert names == ["tower.section", "tower.width", "tower.height", "tower.mass", "tower.density", "tower.depth",
-                     "tower.wall_thickness", "tower.inertia_pivot", "tower.restitution"]
+                     "tower.wall_thickness", "tower.compressive_strength", "tower.inertia_pivot", "tower.restitution"]

@@ -127,9 +127,9 @@ def test_a_users_own_assessment_file_and_its_grid_give_the_commands_inventory(pa
     grid = mine / "hazard" / "grid.txt"
     grid.write_text((ROOT / "data" / "hazard" / "synthetic_grid.txt").read_text())
     assess = (TOWN / "assess.toml").read_text()
-    assert '"../../data/hazard/synthetic_grid.txt"' in assess
-    # Heavier than the example's (so not its rows), on the grid at its own place.
-    assess = assess.replace('"../../data/hazard/synthetic_grid.txt"', '"hazard/grid.txt"').replace("q = 2.0", "q = 1.5")
+    assert 'grid = "ntc2018"' in assess
+    # Heavier than the example's (so not its rows), on a grid file of the user's at its own place.
+    assess = assess.replace('grid = "ntc2018"', 'grid = "hazard/grid.txt"').replace("q = 2.0", "q = 1.5")
     (mine / "ASSESS.toml").write_text(assess)
     page.click("#tab-town")
     page.set_input_files("#town-towers-file", str(TOWN / "towers.csv"))

@@ -28,7 +28,8 @@ table{border-collapse:collapse;margin:.5em 0;break-inside:avoid}td,th{border:1px
 th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
 .wide{overflow-x:auto;max-width:100%}table.records{font-size:8.5pt}table.records td,table.records th{padding:1px 4px}table.records td:first-child{overflow-wrap:anywhere}@media print{.wide{overflow:visible}table{font-size:8.5pt}}.holds{color:#08693f;font-weight:bold}.fails{color:#b00020;font-weight:bold}\
 figure{margin:.8em 0;break-inside:avoid;page-break-inside:avoid}figure svg{width:100%;height:auto;display:block}figcaption{font-size:9.5pt;color:#444}\
-code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}";
+code{font-size:9.5pt}.note{font-size:9.5pt;color:#444}@page{size:A4;margin:14mm}\
+#fingerprints{font-size:8.5pt;width:100%;table-layout:fixed}#fingerprints td{overflow-wrap:anywhere}";
 
 /// The SVG of a figure with a viewBox, so that it scales to the page's width.
 pub(crate) fn scalable(svg: String, size: (u32, u32)) -> String {
